@@ -1,0 +1,16 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace kinematic_coverage {
+
+/// Thrown for input that the contract rejects (INTERFACE section 3): bad geometry,
+/// parameters out of range, an impossible request. The message names the problem
+/// precisely; boundaries (coverage_tool, nodes) catch it and report it (exit 2, ROS_ERROR).
+class InvalidInputError : public std::runtime_error {
+ public:
+  explicit InvalidInputError(const std::string& message) : std::runtime_error(message) {}
+};
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,134 @@
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kinematic_coverage {
+
+double signedArea(const Ring& ring) {
+  double twice_area = 0.0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Point2& a = ring[i];
+    const Point2& b = ring[(i + 1) % n];
+    twice_area += a.x() * b.y() - b.x() * a.y();
+  }
+  return 0.5 * twice_area;
+}
+
+double area(const PolygonWithHoles& polygon) {
+  double result = std::abs(signedArea(polygon.hull));
+  for (const Ring& hole : polygon.holes) result -= std::abs(signedArea(hole));
+  return result;
+}
+
+double cross(const Point2& a, const Point2& b, const Point2& c) {
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+Point2 closestPointOnSegment(const Point2& p, const Point2& a, const Point2& b) {
+  const Point2 ab = b - a;
+  const double length_sq = ab.squaredNorm();
+  if (length_sq <= 0.0) return a;
+  const double t = std::clamp((p - a).dot(ab) / length_sq, 0.0, 1.0);
+  return a + t * ab;
+}
+
+double distanceToSegment(const Point2& p, const Point2& a, const Point2& b) {
+  return (p - closestPointOnSegment(p, a, b)).norm();
+}
+
+double distanceToRing(const Point2& p, const Ring& ring) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    best = std::min(best, distanceToSegment(p, ring[i], ring[(i + 1) % n]));
+  }
+  return best;
+}
+
+double distanceToBoundary(const Point2& p, const PolygonWithHoles& polygon) {
+  double best = distanceToRing(p, polygon.hull);
+  for (const Ring& hole : polygon.holes) best = std::min(best, distanceToRing(p, hole));
+  return best;
+}
+
+bool insideRing(const Point2& p, const Ring& ring) {
+  bool inside = false;
+  for (std::size_t i = 0, n = ring.size(), j = n - 1; i < n; j = i++) {
+    const Point2& a = ring[i];
+    const Point2& b = ring[j];
+    if ((a.y() > p.y()) != (b.y() > p.y())) {
+      const double x_cross = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+      if (p.x() < x_cross) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+bool contains(const PolygonWithHoles& polygon, const Point2& p, double tolerance) {
+  if (tolerance > 0.0 && distanceToBoundary(p, polygon) <= tolerance) return true;
+  if (!insideRing(p, polygon.hull)) return false;
+  for (const Ring& hole : polygon.holes) {
+    if (insideRing(p, hole)) return false;
+  }
+  return true;
+}
+
+namespace {
+
+/// Parameters t in (0, 1) where the segment [a, b] meets the segment [c, d].
+void appendCrossings(const Point2& a, const Point2& b, const Point2& c, const Point2& d,
+                     std::vector<double>* ts) {
+  const Point2 r = b - a;
+  const Point2 s = d - c;
+  const double denominator = r.x() * s.y() - r.y() * s.x();
+  const Point2 ca = c - a;
+  if (std::abs(denominator) > 0.0) {
+    const double t = (ca.x() * s.y() - ca.y() * s.x()) / denominator;
+    const double u = (ca.x() * r.y() - ca.y() * r.x()) / denominator;
+    if (t > 0.0 && t < 1.0 && u >= 0.0 && u <= 1.0) ts->push_back(t);
+  }
+  // Endpoints of [c, d] on or near [a, b] (also covers the collinear case).
+  const double length_sq = r.squaredNorm();
+  if (length_sq <= 0.0) return;
+  for (const Point2& q : {c, d}) {
+    const double t = (q - a).dot(r) / length_sq;
+    if (t > 0.0 && t < 1.0) ts->push_back(t);
+  }
+}
+
+}  // namespace
+
+bool segmentInside(const PolygonWithHoles& polygon, const Point2& a, const Point2& b,
+                   double tolerance) {
+  std::vector<double> ts = {0.0, 1.0};
+  auto collect = [&](const Ring& ring) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      appendCrossings(a, b, ring[i], ring[(i + 1) % n], &ts);
+    }
+  };
+  collect(polygon.hull);
+  for (const Ring& hole : polygon.holes) collect(hole);
+  std::sort(ts.begin(), ts.end());
+  for (double t : ts) {
+    if (!contains(polygon, a + t * (b - a), tolerance)) return false;
+  }
+  for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
+    if (ts[i + 1] - ts[i] <= 0.0) continue;
+    const Point2 mid = a + 0.5 * (ts[i] + ts[i + 1]) * (b - a);
+    if (!contains(polygon, mid, tolerance)) return false;
+  }
+  return true;
+}
+
+double headingOf(const Point2& a, const Point2& b) {
+  return wrapAngle(std::atan2(b.y() - a.y(), b.x() - a.x()));
+}
+
+double wrapAngle(double angle) {
+  if (!std::isfinite(angle)) return angle;
+  double wrapped = std::remainder(angle, 2.0 * M_PI);
+  if (wrapped <= -M_PI) wrapped += 2.0 * M_PI;
+  return wrapped;
+}
+
+}  // namespace kinematic_coverage

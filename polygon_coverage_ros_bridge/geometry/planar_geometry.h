@@ -1,0 +1,49 @@
+#pragma once
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+
+namespace kinematic_coverage {
+
+/// Named tolerances for double geometry (metres); topology-deciding predicates use CGAL.
+constexpr double kLengthTolerance = 1e-9;
+
+/// Signed area of a ring: positive when counter-clockwise.
+double signedArea(const Ring& ring);
+
+/// Area of the hull minus the areas of the holes.
+double area(const PolygonWithHoles& polygon);
+
+/// The z component of (b - a) x (c - a): > 0 when a, b, c turn left.
+double cross(const Point2& a, const Point2& b, const Point2& c);
+
+/// Distance from p to the closed segment [a, b]; a degenerate segment is its point.
+double distanceToSegment(const Point2& p, const Point2& a, const Point2& b);
+
+/// The point of the closed segment [a, b] nearest to p.
+Point2 closestPointOnSegment(const Point2& p, const Point2& a, const Point2& b);
+
+/// Distance from p to the boundary of a ring.
+double distanceToRing(const Point2& p, const Ring& ring);
+
+/// Distance from p to the boundary of the polygon (hull and holes).
+double distanceToBoundary(const Point2& p, const PolygonWithHoles& polygon);
+
+/// Even-odd point-in-ring test; points on the boundary may go either way.
+bool insideRing(const Point2& p, const Ring& ring);
+
+/// True when p lies inside the hull and outside every hole, or within `tolerance`
+/// of the boundary.
+bool contains(const PolygonWithHoles& polygon, const Point2& p, double tolerance = 0.0);
+
+/// True when the closed segment [a, b] lies inside the polygon (touching the boundary
+/// allowed within `tolerance`): no proper crossing of any edge and its midpoints inside.
+bool segmentInside(const PolygonWithHoles& polygon, const Point2& a, const Point2& b,
+                   double tolerance = 1e-9);
+
+/// Heading of the vector from a to b, in (-pi, pi].
+double headingOf(const Point2& a, const Point2& b);
+
+/// Wraps an angle into (-pi, pi].
+double wrapAngle(double angle);
+
+}  // namespace kinematic_coverage

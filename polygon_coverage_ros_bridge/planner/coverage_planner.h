@@ -1,0 +1,50 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+
+namespace kinematic_coverage {
+
+/// A coverage waypoint path and what the planner learned on the way.
+struct CoveragePlan {
+  /// Waypoints; each yaw is the heading of the leg leaving it (the incoming heading at
+  /// the last one), INTERFACE section 4.
+  std::vector<Pose2> waypoints;
+  /// Index range [first_inside, last_inside] of the waypoints within the offset free
+  /// area; legs before and after it join a start or goal outside that area.
+  std::size_t first_inside = 0;
+  std::size_t last_inside = 0;
+  /// The offset free area that was planned (INTERFACE section 3).
+  PolygonWithHoles offset_free_area;
+  /// The cells of the chosen decomposition, counter-clockwise.
+  std::vector<Ring> cells;
+  double path_length_m = 0.0;
+  /// Time cost of the waypoint path: rest-to-rest trapezoidal profile per segment.
+  double time_cost_s = 0.0;
+  double planning_time_s = 0.0;
+  /// One line per warning (dropped parts of the offset area, ...).
+  std::vector<std::string> warnings;
+};
+
+/// Plans a coverage path over a cleaned free area (Thesis section 3.1, its reference [10]):
+/// wall offset, cell decomposition over candidate directions, sweep patterns per cell,
+/// and a generalized TSP over them from start to goal.
+class CoveragePlanner {
+ public:
+  explicit CoveragePlanner(PlannerParameters parameters);
+
+  /// Plans over `free_area` (cleaned: CCW hull, CW holes, no crossings).
+  /// Throws InvalidInputError for an impossible request (empty offset free area, a
+  /// start or goal whose joining leg crosses a hole, ...).
+  CoveragePlan plan(const PolygonWithHoles& free_area, const Point2& start,
+                    const Point2& goal) const;
+
+ private:
+  PlannerParameters parameters_;
+};
+
+}  // namespace kinematic_coverage

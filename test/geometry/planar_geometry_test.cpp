@@ -1,0 +1,52 @@
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace kinematic_coverage {
+namespace {
+
+PolygonWithHoles squareWithHole() {
+  return {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{4, 4}, {4, 6}, {6, 6}, {6, 4}}}};
+}
+
+TEST(PlanarGeometry, AreaOfSquareWithHole) {
+  EXPECT_DOUBLE_EQ(area(squareWithHole()), 96.0);
+  EXPECT_GT(signedArea(squareWithHole().hull), 0.0);
+  EXPECT_LT(signedArea(squareWithHole().holes[0]), 0.0);
+}
+
+TEST(PlanarGeometry, ContainsRespectsHoles) {
+  const PolygonWithHoles polygon = squareWithHole();
+  EXPECT_TRUE(contains(polygon, {1, 1}));
+  EXPECT_FALSE(contains(polygon, {5, 5}));
+  EXPECT_FALSE(contains(polygon, {11, 5}));
+  EXPECT_TRUE(contains(polygon, {10.0 + 1e-8, 5}, 1e-6));
+}
+
+TEST(PlanarGeometry, SegmentInsideDetectsHoleCrossing) {
+  const PolygonWithHoles polygon = squareWithHole();
+  EXPECT_TRUE(segmentInside(polygon, {1, 1}, {9, 1}));
+  EXPECT_FALSE(segmentInside(polygon, {1, 5}, {9, 5}));
+  // Along the hole's edge: touching is inside.
+  EXPECT_TRUE(segmentInside(polygon, {4, 1}, {4, 9}));
+  // Along the hull's boundary.
+  EXPECT_TRUE(segmentInside(polygon, {0, 0}, {10, 0}));
+  EXPECT_FALSE(segmentInside(polygon, {-1, 5}, {5, 2}));
+}
+
+TEST(PlanarGeometry, WrapAngleIntoHalfOpenInterval) {
+  EXPECT_DOUBLE_EQ(wrapAngle(-M_PI), M_PI);
+  EXPECT_DOUBLE_EQ(wrapAngle(3 * M_PI), M_PI);
+  EXPECT_NEAR(wrapAngle(2 * M_PI + 0.5), 0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(headingOf({0, 0}, {-1, 0}), M_PI);
+}
+
+TEST(PlanarGeometry, DistanceToSegmentDegenerate) {
+  EXPECT_DOUBLE_EQ(distanceToSegment({3, 4}, {0, 0}, {0, 0}), 5.0);
+  EXPECT_DOUBLE_EQ(distanceToSegment({5, 3}, {0, 0}, {10, 0}), 3.0);
+}
+
+}  // namespace
+}  // namespace kinematic_coverage

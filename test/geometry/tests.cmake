@@ -1,0 +1,3 @@
+kc_add_gtest(test_geometry
+  test/geometry/planar_geometry_test.cpp
+  LIBRARIES kc_geometry)
