@@ -1,0 +1,143 @@
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_set_2.h>
+#include <CGAL/create_offset_polygons_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+
+namespace kinematic_coverage {
+namespace {
+
+using InexactKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using InexactPolygon = CGAL::Polygon_2<InexactKernel>;
+using ExactPolygon = CGAL::Polygon_2<ExactKernel>;
+using ExactPolygonWithHoles = CGAL::Polygon_with_holes_2<ExactKernel>;
+using ExactPolygonSet = CGAL::Polygon_set_2<ExactKernel>;
+
+/// Vertices closer than this are one vertex after conversion back to doubles.
+constexpr double kDuplicateVertexTolerance = 1e-12;
+
+InexactPolygon toInexactCcw(const Ring& ring) {
+  InexactPolygon polygon;
+  for (const Point2& p : ring) polygon.push_back(InexactKernel::Point_2(p.x(), p.y()));
+  if (polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
+  return polygon;
+}
+
+ExactPolygon toExactCcw(const Ring& ring) {
+  ExactPolygon polygon;
+  for (const Point2& p : ring) polygon.push_back(ExactKernel::Point_2(p.x(), p.y()));
+  if (polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
+  return polygon;
+}
+
+Ring toRing(const ExactPolygon& polygon, bool counter_clockwise) {
+  Ring ring;
+  for (auto it = polygon.vertices_begin(); it != polygon.vertices_end(); ++it) {
+    const Point2 p(CGAL::to_double(it->x()), CGAL::to_double(it->y()));
+    if (ring.empty() || (p - ring.back()).norm() > kDuplicateVertexTolerance) ring.push_back(p);
+  }
+  while (ring.size() > 1 && (ring.front() - ring.back()).norm() <= kDuplicateVertexTolerance) {
+    ring.pop_back();
+  }
+  if ((signedArea(ring) > 0.0) != counter_clockwise) std::reverse(ring.begin(), ring.end());
+  return ring;
+}
+
+double exactArea(const ExactPolygonWithHoles& polygon) {
+  double result = std::abs(CGAL::to_double(polygon.outer_boundary().area()));
+  for (auto it = polygon.holes_begin(); it != polygon.holes_end(); ++it) {
+    result -= std::abs(CGAL::to_double(it->area()));
+  }
+  return result;
+}
+
+/// A hole grown by its exterior straight skeleton: the outline of the offset (pockets
+/// that the growth encloses are filled, they are out of reach anyway).
+ExactPolygon grownHole(const Ring& hole, double distance) {
+  const auto offsets = CGAL::create_exterior_skeleton_and_offset_polygons_2(
+      distance, toInexactCcw(hole), ExactKernel());
+  // The result holds a bounding frame and the offset outline(s); the frame is the
+  // largest, the outline the next largest.
+  std::vector<std::pair<double, ExactPolygon>> by_area;
+  for (const auto& offset : offsets) {
+    by_area.emplace_back(std::abs(CGAL::to_double(offset->area())), *offset);
+  }
+  std::sort(by_area.begin(), by_area.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  if (by_area.size() < 2) return toExactCcw(hole);
+  ExactPolygon outline = by_area[1].second;
+  if (outline.orientation() == CGAL::CLOCKWISE) outline.reverse_orientation();
+  return outline;
+}
+
+PolygonWithHoles toPolygonWithHoles(const ExactPolygonWithHoles& polygon) {
+  PolygonWithHoles result;
+  result.hull = toRing(polygon.outer_boundary(), true);
+  for (auto it = polygon.holes_begin(); it != polygon.holes_end(); ++it) {
+    Ring hole = toRing(*it, false);
+    if (hole.size() >= 3) result.holes.push_back(std::move(hole));
+  }
+  return result;
+}
+
+}  // namespace
+
+OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance) {
+  ExactPolygonSet set;
+  if (wall_distance <= 0.0) {
+    set.insert(toExactCcw(free_area.hull));
+    for (const Ring& hole : free_area.holes) set.difference(toExactCcw(hole));
+  } else {
+    const auto shrunk_hulls = CGAL::create_interior_skeleton_and_offset_polygons_2(
+        wall_distance, toInexactCcw(free_area.hull), ExactKernel());
+    for (const auto& part : shrunk_hulls) {
+      ExactPolygon polygon = *part;
+      if (polygon.size() < 3) continue;
+      if (polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
+      set.join(polygon);
+    }
+    for (const Ring& hole : free_area.holes) set.difference(grownHole(hole, wall_distance));
+  }
+
+  std::vector<ExactPolygonWithHoles> parts;
+  set.polygons_with_holes(std::back_inserter(parts));
+  parts.erase(std::remove_if(parts.begin(), parts.end(),
+                             [](const ExactPolygonWithHoles& p) { return exactArea(p) <= 0.0; }),
+              parts.end());
+  if (parts.empty()) {
+    std::ostringstream message;
+    message << "the offset free area is empty: wall_distance " << wall_distance
+            << " m leaves no point far enough from the hull and the holes";
+    throw InvalidInputError(message.str());
+  }
+  std::sort(parts.begin(), parts.end(),
+            [](const ExactPolygonWithHoles& a, const ExactPolygonWithHoles& b) {
+              return exactArea(a) > exactArea(b);
+            });
+  OffsetFreeArea result;
+  result.area = toPolygonWithHoles(parts.front());
+  for (std::size_t i = 1; i < parts.size(); ++i) {
+    const auto& outer = parts[i].outer_boundary();
+    std::ostringstream warning;
+    warning << "the wall offset splits the free area: a part of " << exactArea(parts[i])
+            << " m^2 near (" << CGAL::to_double(outer.vertex(0).x()) << ", "
+            << CGAL::to_double(outer.vertex(0).y())
+            << ") is out of reach and dropped (kept the largest part, " << exactArea(parts[0])
+            << " m^2)";
+    result.warnings.push_back(warning.str());
+  }
+  return result;
+}
+
+}  // namespace kinematic_coverage
