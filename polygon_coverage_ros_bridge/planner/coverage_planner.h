@@ -9,6 +9,13 @@
 
 namespace kinematic_coverage {
 
+/// One stage of planning, for log lines and status messages.
+struct PlanningStage {
+  std::string name;     ///< "offset", "decompose", "sweeps", "transitions", "solve", "path"
+  double duration_s = 0.0;
+  std::string summary;  ///< one line: what the stage produced
+};
+
 /// A coverage waypoint path and what the planner learned on the way.
 struct CoveragePlan {
   /// Waypoints; each yaw is the heading of the leg leaving it (the incoming heading at
@@ -28,6 +35,8 @@ struct CoveragePlan {
   double planning_time_s = 0.0;
   /// One line per warning (dropped parts of the offset area, ...).
   std::vector<std::string> warnings;
+  /// The stages in order, with their durations.
+  std::vector<PlanningStage> stages;
 };
 
 /// Plans a coverage path over a cleaned free area (Thesis section 3.1, its reference [10]):

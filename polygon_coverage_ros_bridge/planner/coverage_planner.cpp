@@ -1,0 +1,306 @@
+#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+#include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
+#include "polygon_coverage_ros_bridge/route/segment_cost.h"
+#include "polygon_coverage_ros_bridge/route/visibility_graph.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
+
+namespace kinematic_coverage {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Points closer than this (relative to the map's scale) are one waypoint.
+constexpr double kRelativeDuplicateTolerance = 1e-9;
+/// A point this close (relative) to the offset free area counts as inside it.
+constexpr double kRelativeInsideTolerance = 1e-9;
+/// Clusters up to which the GTSP is solved exactly (Issue 2: exact up to 14 clusters).
+constexpr int kExactClusterLimit = 14;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string formatPoint(const Point2& p) {
+  std::ostringstream out;
+  out << "(" << p.x() << ", " << p.y() << ")";
+  return out.str();
+}
+
+/// The point of the polygon's boundary nearest to p.
+Point2 nearestBoundaryPoint(const PolygonWithHoles& polygon, const Point2& p) {
+  Point2 best = polygon.hull.front();
+  double best_distance = std::numeric_limits<double>::infinity();
+  auto visit = [&](const Ring& ring) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      const Point2 q = closestPointOnSegment(p, ring[i], ring[(i + 1) % n]);
+      const double d = (q - p).norm();
+      if (d < best_distance) {
+        best_distance = d;
+        best = q;
+      }
+    }
+  };
+  visit(polygon.hull);
+  for (const Ring& hole : polygon.holes) visit(hole);
+  return best;
+}
+
+/// True when the segment [a, b] passes through the interior of a hole.
+bool crossesHole(const std::vector<Ring>& holes, const Point2& a, const Point2& b) {
+  for (const Ring& hole : holes) {
+    // Inside the hole's ring as a polygon of its own = inside the obstacle.
+    Ring ccw = hole;
+    if (signedArea(ccw) < 0.0) std::reverse(ccw.begin(), ccw.end());
+    const PolygonWithHoles obstacle{ccw, {}};
+    std::vector<double> ts = {0.0, 1.0};
+    for (std::size_t i = 0, n = ccw.size(); i < n; ++i) {
+      const Point2& c = ccw[i];
+      const Point2& d = ccw[(i + 1) % n];
+      const double denominator = cross({0, 0}, b - a, d - c);
+      if (denominator == 0.0) continue;
+      const double t = cross({0, 0}, c - a, d - c) / denominator;
+      const double u = cross({0, 0}, c - a, b - a) / denominator;
+      if (t > 0.0 && t < 1.0 && u >= 0.0 && u <= 1.0) ts.push_back(t);
+    }
+    std::sort(ts.begin(), ts.end());
+    for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
+      const Point2 mid = a + 0.5 * (ts[i] + ts[i + 1]) * (b - a);
+      if (insideRing(mid, ccw) && distanceToRing(mid, ccw) > 1e-9) return true;
+    }
+  }
+  return false;
+}
+
+/// Where a start or goal enters the offset free area: itself when inside, otherwise the
+/// nearest point of the area, joined by a straight leg that must not cross a hole.
+Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& offset_area,
+                  const Point2& p, const std::string& what, double tolerance) {
+  if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
+    throw InvalidInputError(what + " has a non-finite coordinate");
+  }
+  for (std::size_t i = 0; i < free_area.holes.size(); ++i) {
+    if (insideRing(p, free_area.holes[i]) && distanceToRing(p, free_area.holes[i]) > tolerance) {
+      throw InvalidInputError(what + " " + formatPoint(p) + " lies inside hole " +
+                              std::to_string(i));
+    }
+  }
+  if (contains(offset_area, p, tolerance)) return p;
+  const Point2 entry = nearestBoundaryPoint(offset_area, p);
+  if (crossesHole(free_area.holes, p, entry)) {
+    throw InvalidInputError(what + " " + formatPoint(p) +
+                            " is outside the offset free area and its straight leg to the "
+                            "nearest point " +
+                            formatPoint(entry) + " crosses a hole");
+  }
+  return entry;
+}
+
+/// Drops repeated waypoints and waypoints where the path goes straight on, except the
+/// protected ones (entry and exit of the offset free area).
+std::vector<Point2> simplifiedPath(const std::vector<Point2>& path, const std::vector<bool>& keep,
+                                   double tolerance) {
+  std::vector<Point2> points;
+  std::vector<bool> kept;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (!points.empty() && (path[i] - points.back()).norm() <= tolerance) {
+      if (keep[i]) kept.back() = true;
+      continue;
+    }
+    points.push_back(path[i]);
+    kept.push_back(keep[i]);
+  }
+  std::vector<Point2> result;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!result.empty() && i + 1 < points.size() && !kept[i]) {
+      const Point2 in = points[i] - result.back();
+      const Point2 out = points[i + 1] - points[i];
+      const bool straight_on = std::abs(cross({0, 0}, in, out)) <= tolerance * in.norm() &&
+                               in.dot(out) > 0.0;
+      if (straight_on) continue;
+    }
+    result.push_back(points[i]);
+  }
+  return result;
+}
+
+}  // namespace
+
+CoveragePlanner::CoveragePlanner(PlannerParameters parameters)
+    : parameters_(std::move(parameters)) {}
+
+CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Point2& start,
+                                   const Point2& goal) const {
+  const Clock::time_point planning_start = Clock::now();
+  CoveragePlan plan;
+  auto stage = [&](const std::string& name, Clock::time_point since, std::string summary) {
+    plan.stages.push_back({name, secondsSince(since), std::move(summary)});
+  };
+
+  double scale = 1.0;
+  for (const Point2& p : free_area.hull) scale = std::max(scale, p.cwiseAbs().maxCoeff());
+  const double tolerance = kRelativeInsideTolerance * scale;
+
+  // Wall offset (INTERFACE section 3).
+  Clock::time_point t = Clock::now();
+  OffsetFreeArea offset = computeOffsetFreeArea(free_area, parameters_.wall_distance);
+  plan.offset_free_area = std::move(offset.area);
+  plan.warnings = std::move(offset.warnings);
+  const PolygonWithHoles& area = plan.offset_free_area;
+  const Point2 start_inside = entryPoint(free_area, area, start, "start", tolerance);
+  const Point2 goal_inside = entryPoint(free_area, area, goal, "goal", tolerance);
+  {
+    std::ostringstream summary;
+    summary << "offset free area " << kinematic_coverage::area(area) << " m^2 with "
+            << area.holes.size() << " holes";
+    stage("offset", t, summary.str());
+  }
+
+  // Cell decomposition over candidate directions.
+  t = Clock::now();
+  const DecompositionType type = parameters_.decomposition_type == "trapezoidal"
+                                     ? DecompositionType::kTrapezoidal
+                                     : DecompositionType::kBoustrophedon;
+  const Decomposition decomposition = computeBestDecomposition(area, type);
+  for (const Cell& cell : decomposition.cells) plan.cells.push_back(cell.polygon);
+  {
+    std::ostringstream summary;
+    summary << decomposition.cells.size() << " " << parameters_.decomposition_type
+            << " cells, best of " << decomposition.directions_tried << " directions";
+    stage("decompose", t, summary.str());
+  }
+
+  // Sweep patterns per cell and direction.
+  t = Clock::now();
+  const SegmentCost segment_cost(parameters_);
+  const VisibilityGraph graph(area, segment_cost);
+  const SweepPatternGenerator generator(FrustumSensor::fromParameters(parameters_));
+  const TransitionPath transition = [&](const Point2& a, const Point2& b) {
+    return graph.shortestPath(a, b);
+  };
+  std::vector<SweepPattern> patterns;
+  std::vector<std::vector<int>> clusters = {{0}, {1}};  // start, goal
+  for (const Cell& cell : decomposition.cells) {
+    std::vector<int> cluster;
+    for (double direction : cell.sweep_directions) {
+      for (SweepPattern& pattern : generator.patterns(cell.polygon, direction, transition)) {
+        cluster.push_back(static_cast<int>(patterns.size()) + 2);
+        patterns.push_back(std::move(pattern));
+      }
+    }
+    clusters.push_back(std::move(cluster));
+  }
+  {
+    std::ostringstream summary;
+    summary << patterns.size() << " sweep patterns";
+    stage("sweeps", t, summary.str());
+  }
+
+  // Transition costs between every pattern end and every pattern start.
+  t = Clock::now();
+  std::vector<Point2> sources = {start_inside};
+  std::vector<Point2> targets = {goal_inside};
+  for (const SweepPattern& pattern : patterns) {
+    sources.push_back(pattern.end());
+    targets.push_back(pattern.start());
+  }
+  const std::vector<double> transition_costs = graph.costMatrix(sources, targets);
+  const std::size_t n = patterns.size() + 2;
+  GtspInstance instance;
+  instance.node_count = static_cast<int>(n);
+  instance.clusters = clusters;
+  instance.start_cluster = 0;
+  instance.goal_cluster = 1;
+  instance.costs.assign(n * n, 0.0);
+  std::vector<double> pattern_costs;
+  for (const SweepPattern& pattern : patterns) pattern_costs.push_back(segment_cost.pathCost(pattern.path));
+  // Node 0 (start) is source row 0; node 1 (goal) is target column 0; pattern k is
+  // node k + 2, source row k + 1 and target column k + 1.
+  auto sourceRow = [](std::size_t node) { return node == 0 ? 0 : node - 1; };
+  for (std::size_t from = 0; from < n; ++from) {
+    if (from == 1) continue;  // nothing leaves the goal
+    for (std::size_t to = 1; to < n; ++to) {
+      if (from == to) continue;
+      const std::size_t column = to == 1 ? 0 : to - 1;
+      const double entering = to == 1 ? 0.0 : pattern_costs[to - 2];
+      instance.costs[from * n + to] =
+          transition_costs[sourceRow(from) * targets.size() + column] + entering;
+    }
+  }
+  {
+    std::ostringstream summary;
+    summary << sources.size() * targets.size() << " transition costs";
+    stage("transitions", t, summary.str());
+  }
+
+  // Generalized TSP over the patterns, from start to goal.
+  t = Clock::now();
+  GtspOptions options;
+  options.exact_cluster_limit = kExactClusterLimit;
+  const GtspSolution solution = solveGtsp(instance, options);
+  {
+    std::ostringstream summary;
+    summary << "visiting order of " << clusters.size() - 2 << " cells, cost " << solution.cost;
+    stage("solve", t, summary.str());
+  }
+
+  // The waypoint path.
+  t = Clock::now();
+  std::vector<Point2> path = {start};
+  std::vector<bool> keep = {true};
+  auto append = [&](const std::vector<Point2>& points, bool keep_first) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      path.push_back(points[i]);
+      keep.push_back(i == 0 && keep_first);
+    }
+  };
+  append({start_inside}, true);
+  Point2 position = start_inside;
+  for (int node : solution.nodes) {
+    if (node < 2) continue;
+    const SweepPattern& pattern = patterns[static_cast<std::size_t>(node - 2)];
+    append(graph.shortestPath(position, pattern.start()), false);
+    append(pattern.path, false);
+    position = pattern.end();
+  }
+  append(graph.shortestPath(position, goal_inside), false);
+  keep.back() = true;
+  append({goal}, true);
+  const std::vector<Point2> waypoints =
+      simplifiedPath(path, keep, kRelativeDuplicateTolerance * scale);
+  plan.first_inside = (waypoints.size() > 1 && (start - start_inside).norm() > tolerance) ? 1 : 0;
+  plan.last_inside = waypoints.size() - 1;
+  if (waypoints.size() > 1 && (goal - goal_inside).norm() > tolerance) plan.last_inside -= 1;
+  for (std::size_t i = 0; i < waypoints.size(); ++i) {
+    const double yaw = i + 1 < waypoints.size() ? headingOf(waypoints[i], waypoints[i + 1])
+                       : i > 0                  ? headingOf(waypoints[i - 1], waypoints[i])
+                                                : 0.0;
+    plan.waypoints.push_back({waypoints[i].x(), waypoints[i].y(), yaw});
+  }
+  plan.path_length_m = pathLength(waypoints);
+  PlannerParameters time_parameters = parameters_;
+  time_parameters.cost_function = "time";
+  plan.time_cost_s = SegmentCost(time_parameters).pathCost(waypoints);
+  {
+    std::ostringstream summary;
+    summary << plan.waypoints.size() << " waypoints, " << plan.path_length_m << " m, time cost "
+            << plan.time_cost_s << " s";
+    stage("path", t, summary.str());
+  }
+  plan.planning_time_s = secondsSince(planning_start);
+  return plan;
+}
+
+}  // namespace kinematic_coverage

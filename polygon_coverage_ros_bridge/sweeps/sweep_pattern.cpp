@@ -1,0 +1,132 @@
+#include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+
+namespace kinematic_coverage {
+namespace {
+
+/// Lanes are kept this far (relative to the map's scale) inside the cell's extreme
+/// positions, so that a lane never degenerates onto a side parallel to it.
+constexpr double kRelativeLaneInset = 1e-9;
+/// A lane within this (relative) distance of an existing one is the same lane.
+constexpr double kRelativeLaneMerge = 1e-6;
+
+/// The interval [lo, hi] of the vertical line at x inside a ring (sweep frame).
+std::pair<double, double> verticalInterval(const Ring& ring, double x) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Point2& a = ring[i];
+    const Point2& b = ring[(i + 1) % n];
+    const double x_lo = std::min(a.x(), b.x());
+    const double x_hi = std::max(a.x(), b.x());
+    if (x < x_lo || x > x_hi) continue;
+    if (x_hi == x_lo) {
+      lo = std::min({lo, a.y(), b.y()});
+      hi = std::max({hi, a.y(), b.y()});
+      continue;
+    }
+    const double t = (x - a.x()) / (b.x() - a.x());
+    const double y = a.y() + t * (b.y() - a.y());
+    lo = std::min(lo, y);
+    hi = std::max(hi, y);
+  }
+  return {lo, hi};
+}
+
+}  // namespace
+
+std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& cell,
+                                                                    double direction) const {
+  Ring frame;
+  double scale = 1.0;
+  for (const Point2& p : cell) {
+    frame.push_back(toSweepFrame(p, direction));
+    scale = std::max(scale, p.cwiseAbs().maxCoeff());
+  }
+  double x_min = std::numeric_limits<double>::infinity();
+  double x_max = -x_min;
+  for (const Point2& p : frame) {
+    x_min = std::min(x_min, p.x());
+    x_max = std::max(x_max, p.x());
+  }
+  const double inset = kRelativeLaneInset * scale;
+  const double spacing = sensor_.sweepDistance();
+  const double half_width = 0.5 * sensor_.width();
+  const double half_length = 0.5 * sensor_.length();
+  const double margin = std::max(inset, std::min(0.5 * spacing, half_width - half_length));
+
+  std::vector<double> positions;
+  const double span = x_max - x_min - 2.0 * margin;
+  if (span <= 0.0) {
+    positions.push_back(0.5 * (x_min + x_max));
+  } else {
+    const int gaps = std::max(1, static_cast<int>(std::ceil(span / spacing - 1e-9)));
+    for (int k = 0; k <= gaps; ++k) positions.push_back(x_min + margin + span * k / gaps);
+  }
+
+  auto intervals = [&]() {
+    std::vector<std::pair<double, double>> result;
+    for (double x : positions) result.push_back(verticalInterval(frame, x));
+    return result;
+  };
+  // Extra lanes through corners that no lane's swept footprint reaches.
+  std::vector<std::pair<double, double>> spans = intervals();
+  for (const Point2& corner : frame) {
+    bool seen = false;
+    for (std::size_t k = 0; k < positions.size() && !seen; ++k) {
+      seen = std::abs(corner.x() - positions[k]) <= half_width &&
+             corner.y() >= spans[k].first - half_length &&
+             corner.y() <= spans[k].second + half_length;
+    }
+    if (seen) continue;
+    const double x = std::clamp(corner.x(), x_min + inset, x_max - inset);
+    const bool duplicate = std::any_of(positions.begin(), positions.end(), [&](double p) {
+      return std::abs(p - x) <= kRelativeLaneMerge * scale;
+    });
+    if (duplicate) continue;
+    positions.insert(std::upper_bound(positions.begin(), positions.end(), x), x);
+    spans = intervals();
+  }
+
+  std::vector<std::pair<Point2, Point2>> result;
+  for (std::size_t k = 0; k < positions.size(); ++k) {
+    result.emplace_back(fromSweepFrame({positions[k], spans[k].first}, direction),
+                        fromSweepFrame({positions[k], spans[k].second}, direction));
+  }
+  return result;
+}
+
+std::vector<SweepPattern> SweepPatternGenerator::patterns(const Ring& cell, double direction,
+                                                          const TransitionPath& transition) const {
+  const auto cell_lanes = lanes(cell, direction);
+  const PolygonWithHoles cell_area{cell, {}};
+  std::vector<SweepPattern> result;
+  for (bool reverse_order : {false, true}) {
+    for (bool first_up : {true, false}) {
+      SweepPattern pattern;
+      pattern.direction = direction;
+      bool up = first_up;
+      for (std::size_t i = 0; i < cell_lanes.size(); ++i) {
+        const auto& lane = cell_lanes[reverse_order ? cell_lanes.size() - 1 - i : i];
+        const Point2& from = up ? lane.first : lane.second;
+        const Point2& to = up ? lane.second : lane.first;
+        if (!pattern.path.empty() && !segmentInside(cell_area, pattern.path.back(), from)) {
+          const std::vector<Point2> join = transition(pattern.path.back(), from);
+          if (join.size() > 2) pattern.path.insert(pattern.path.end(), join.begin() + 1, join.end() - 1);
+        }
+        pattern.path.push_back(from);
+        pattern.path.push_back(to);
+        up = !up;
+      }
+      result.push_back(std::move(pattern));
+    }
+  }
+  return result;
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+
+namespace kinematic_coverage {
+
+/// One way to sweep a cell: lanes parallel to `direction`, visited in order, joined at
+/// alternating ends (boustrophedon).
+struct SweepPattern {
+  std::vector<Point2> path;  ///< lane ends and the bends of the joins between lanes
+  double direction = 0.0;
+  const Point2& start() const { return path.front(); }
+  const Point2& end() const { return path.back(); }
+};
+
+/// A path between two points through the area being planned (both ends included).
+using TransitionPath = std::function<std::vector<Point2>(const Point2&, const Point2&)>;
+
+/// Places the lanes of a cell and builds its four sweep patterns per direction (both
+/// lane orders, both first-lane directions).
+///
+/// Lanes run parallel to the direction, at most one sweep distance (1 - overlap) W
+/// apart; the outermost lanes stay within min(s/2, W/2 - L/2) of the cell's sides, so
+/// that the footprint also reaches half a footprint length beyond a wall. Where a
+/// corner of the cell would stay unseen by every lane's swept footprint, an extra lane
+/// is placed through it.
+class SweepPatternGenerator {
+ public:
+  explicit SweepPatternGenerator(const FrustumSensor& sensor) : sensor_(sensor) {}
+
+  /// The lanes of `cell` (counter-clockwise, monotone for `direction`), each as its two
+  /// ends, in order across the direction; the first end has the smaller coordinate along it.
+  std::vector<std::pair<Point2, Point2>> lanes(const Ring& cell, double direction) const;
+
+  /// The four patterns of the cell for one direction. `transition` joins two lane ends
+  /// when the straight join would leave the cell.
+  std::vector<SweepPattern> patterns(const Ring& cell, double direction,
+                                     const TransitionPath& transition) const;
+
+ private:
+  FrustumSensor sensor_;
+};
+
+}  // namespace kinematic_coverage

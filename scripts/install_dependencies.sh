@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages that building, testing and running kinematic_coverage
+# need. Idempotent and quiet when everything is installed already.
+set -euo pipefail
+export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
+
+packages=(
+  g++ make cmake catkin ccache
+  libroscpp-dev librostest-dev python3-rostest python3-roslaunch rosout python3-rostopic
+  ros-message-generation ros-message-runtime
+  libstd-msgs-dev ros-std-msgs python3-std-msgs libstd-srvs-dev ros-std-srvs python3-std-srvs
+  libgeometry-msgs-dev ros-geometry-msgs python3-geometry-msgs
+  libnav-msgs-dev ros-nav-msgs libvisualization-msgs-dev ros-visualization-msgs
+  libtf2-ros-dev libtf2-geometry-msgs-dev tf2-tools rosbash
+  libcgal-dev libeigen3-dev libyaml-cpp-dev libgtest-dev libbenchmark-dev libcairo2-dev
+  librviz-dev rviz pluginlib-dev qtbase5-dev
+  xvfb xauth xdotool x11-utils
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg -s "$package" >/dev/null 2>&1; then missing+=("$package"); fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+echo "Installing ${#missing[@]} missing packages: ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+  "${missing[@]}" >/dev/null
+echo "Packages installed."

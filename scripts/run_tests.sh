@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Runs every test: installs what is missing, builds in Release, builds the test
+# targets and runs ctest (under a virtual display, for the GUI tests).
+set -euo pipefail
+export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build_dir=${BUILD_DIR:-$root/build}
+"$root/scripts/install_dependencies.sh"
+echo "== build"
+BUILD_DIR=$build_dir "$root/scripts/build.sh" 2>&1 | grep -E 'error|warning:|Built target' | grep -v 'Built target' || true
+BUILD_DIR=$build_dir "$root/scripts/build.sh" --target tests >/dev/null
+echo "== test"
+export ROS_HOSTNAME=localhost ROS_HOME="$build_dir/ros_home" ROSCONSOLE_STDOUT_LINE_BUFFERED=1
+mkdir -p "$ROS_HOME"
+cd "$build_dir"
+xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j"${JOBS:-2}"

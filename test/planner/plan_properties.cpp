@@ -1,0 +1,41 @@
+#include "test/planner/plan_properties.h"
+
+#include <cmath>
+
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
+
+namespace kinematic_coverage {
+
+void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan,
+                     const PlannerParameters& parameters, const Point2& start,
+                     const Point2& goal) {
+  const auto& waypoints = plan.waypoints;
+  ASSERT_GE(waypoints.size(), 2u);
+  EXPECT_NEAR((waypoints.front().position() - start).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((waypoints.back().position() - goal).norm(), 0.0, 1e-9);
+  ASSERT_LE(plan.first_inside, plan.last_inside);
+  ASSERT_LT(plan.last_inside, waypoints.size());
+  double length = 0.0;
+  for (std::size_t i = 0; i + 1 < waypoints.size(); ++i) {
+    const Point2 a = waypoints[i].position();
+    const Point2 b = waypoints[i + 1].position();
+    length += (b - a).norm();
+    EXPECT_GT((b - a).norm(), 0.0) << "repeated waypoint " << i;
+    EXPECT_NEAR(std::remainder(waypoints[i].yaw - std::atan2(b.y() - a.y(), b.x() - a.x()),
+                               2 * M_PI),
+                0.0, 1e-9);
+    if (i >= plan.first_inside && i + 1 <= plan.last_inside) {
+      EXPECT_TRUE(segmentInside(plan.offset_free_area, a, b, kLegTolerance))
+          << "leg " << i << " from " << a.transpose() << " to " << b.transpose()
+          << " leaves the offset free area";
+    }
+  }
+  EXPECT_NEAR(plan.path_length_m, length, 1e-6 * std::max(1.0, length));
+  EXPECT_GE(plan.time_cost_s, plan.path_length_m / parameters.v_max - 1e-9);
+  const double covered = waypointPathReachableCoveragePercent(
+      free_area, plan.offset_free_area, FrustumSensor::fromParameters(parameters), waypoints);
+  EXPECT_GE(covered, 99.0);
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,4 @@
+kc_add_gtest(test_planner
+  test/planner/coverage_planner_test.cpp
+  test/planner/plan_properties.cpp
+  LIBRARIES kc_planner kc_coverage)

@@ -1,0 +1,114 @@
+#include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
+#include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "test/support/random_polygons.h"
+
+namespace kinematic_coverage {
+namespace {
+
+std::vector<Point2> straight(const Point2& a, const Point2& b) { return {a, b}; }
+
+/// Lanes lie in the cell, run parallel to the direction, and neighbouring lanes are at
+/// most one sweep distance apart.
+void expectValidLanes(const Ring& cell, double direction, const FrustumSensor& sensor) {
+  const auto lanes = SweepPatternGenerator(sensor).lanes(cell, direction);
+  ASSERT_FALSE(lanes.empty());
+  const PolygonWithHoles area{cell, {}};
+  const Point2 along = directionVector(direction);
+  const Point2 across(along.y(), -along.x());  // the order of the lanes
+  for (std::size_t k = 0; k < lanes.size(); ++k) {
+    const auto& [a, b] = lanes[k];
+    EXPECT_TRUE(segmentInside(area, a, b, 1e-7));
+    EXPECT_NEAR(std::abs(cross({0, 0}, along, b - a)), 0.0, 1e-7);
+    EXPECT_GE((b - a).dot(along), -1e-9);
+    if (k > 0) {
+      const double gap = (a - lanes[k - 1].first).dot(across);
+      EXPECT_GT(gap, 0.0);
+      EXPECT_LE(gap, sensor.sweepDistance() + 1e-9);
+    }
+  }
+}
+
+TEST(SweepPattern, RectangleLaneCountAndMargins) {
+  const Ring rectangle = {{0, 0}, {20, 0}, {20, 10}, {0, 10}};
+  const FrustumSensor sensor(4.0, 1.0, 0.25);  // s = 3, margin = min(1.5, 2 - 0.5) = 1.5
+  const auto lanes = SweepPatternGenerator(sensor).lanes(rectangle, 0.0);
+  // Lanes along x stacked across y from 1.5 to 8.5: span 7 -> ceil(7 / 3) = 3 gaps.
+  ASSERT_EQ(lanes.size(), 4u);
+  EXPECT_NEAR(std::min(lanes.front().first.y(), lanes.back().first.y()), 1.5, 1e-9);
+  EXPECT_NEAR(std::max(lanes.front().first.y(), lanes.back().first.y()), 8.5, 1e-9);
+  for (const auto& lane : lanes) {
+    EXPECT_NEAR(lane.first.x(), 0.0, 1e-9);
+    EXPECT_NEAR(lane.second.x(), 20.0, 1e-9);
+  }
+  expectValidLanes(rectangle, 0.0, sensor);
+}
+
+TEST(SweepPattern, NarrowCellGetsOneCentredLane) {
+  const Ring sliver = {{0, 0}, {20, 0}, {20, 1}, {0, 1}};
+  const auto lanes = SweepPatternGenerator(FrustumSensor(4.0, 1.0, 0.4)).lanes(sliver, 0.0);
+  ASSERT_EQ(lanes.size(), 1u);
+  EXPECT_NEAR(lanes[0].first.y(), 0.5, 1e-9);
+}
+
+TEST(SweepPattern, ExtraLaneThroughUnseenCorner) {
+  // A deep V at the bottom between two lanes: its tip is seen only by an extra lane.
+  const Ring v = {{0, 0}, {3, -20}, {6, 0}, {6, 10}, {0, 10}};
+  const FrustumSensor sensor(4.0, 1.0, 0.0);
+  const auto lanes = SweepPatternGenerator(sensor).lanes(v, M_PI / 2);
+  bool reaches_tip = false;
+  for (const auto& lane : lanes) reaches_tip = reaches_tip || lane.first.y() < -19.0;
+  EXPECT_TRUE(reaches_tip);
+  expectValidLanes(v, M_PI / 2, sensor);
+}
+
+TEST(SweepPattern, FourPatternsJoinLanesAtAlternatingEnds) {
+  const Ring rectangle = {{0, 0}, {20, 0}, {20, 10}, {0, 10}};
+  const SweepPatternGenerator generator(FrustumSensor(4.0, 1.0, 0.25));
+  const auto patterns = generator.patterns(rectangle, 0.0, straight);
+  ASSERT_EQ(patterns.size(), 4u);
+  for (const SweepPattern& pattern : patterns) {
+    ASSERT_EQ(pattern.path.size(), 8u);
+    for (std::size_t i = 0; i + 1 < pattern.path.size(); i += 2) {
+      // Lanes alternate direction along x.
+      EXPECT_NEAR(std::abs(pattern.path[i + 1].x() - pattern.path[i].x()), 20.0, 1e-9);
+      if (i + 2 < pattern.path.size()) {
+        EXPECT_NEAR(pattern.path[i + 2].x(), pattern.path[i + 1].x(), 1e-9);
+      }
+    }
+  }
+  // The four patterns start at four different corners.
+  for (std::size_t i = 0; i < patterns.size(); ++i) {
+    for (std::size_t j = i + 1; j < patterns.size(); ++j) {
+      EXPECT_GT((patterns[i].start() - patterns[j].start()).norm(), 1.0);
+    }
+  }
+}
+
+TEST(SweepPattern, RandomCellsHaveValidLanes) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> width(2.0, 13.0);
+  std::uniform_real_distribution<double> overlap(0.0, 0.6);
+  for (int trial = 0; trial < 100; ++trial) {
+    const PolygonWithHoles map = testing::randomMap(rng, 120.0, 6, 2.0);
+    const FrustumSensor sensor(width(rng), 1.0, overlap(rng));
+    const Decomposition decomposition =
+        computeBestDecomposition(map, DecompositionType::kBoustrophedon);
+    for (const Cell& cell : decomposition.cells) {
+      for (double direction : cell.sweep_directions) {
+        SCOPED_TRACE(::testing::Message() << "trial " << trial << " direction " << direction);
+        expectValidLanes(cell.polygon, direction, sensor);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace kinematic_coverage
