@@ -186,7 +186,9 @@ CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Poin
   t = Clock::now();
   const SegmentCost segment_cost(parameters_);
   const VisibilityGraph graph(area, segment_cost);
-  const SweepPatternGenerator generator(FrustumSensor::fromParameters(parameters_));
+  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
+  const SweepPatternGenerator generator(
+      sensor, SweepPatternGenerator::laneEndInset(sensor, parameters_.wall_distance));
   const TransitionPath transition = [&](const Point2& a, const Point2& b) {
     return graph.shortestPath(a, b);
   };

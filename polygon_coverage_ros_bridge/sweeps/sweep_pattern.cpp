@@ -40,6 +40,10 @@ std::pair<double, double> verticalInterval(const Ring& ring, double x) {
 
 }  // namespace
 
+double SweepPatternGenerator::laneEndInset(const FrustumSensor& sensor, double wall_distance) {
+  return std::max(0.0, 0.5 * sensor.length() - wall_distance);
+}
+
 std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& cell,
                                                                     double direction) const {
   Ring frame;
@@ -93,10 +97,15 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& 
     spans = intervals();
   }
 
+  // Lane ends pulled in by the inset, never past the lane's middle. The corner check
+  // above uses the full lanes: the inset only gives up what the footprint's onward
+  // half-length still sees.
   std::vector<std::pair<Point2, Point2>> result;
   for (std::size_t k = 0; k < positions.size(); ++k) {
-    result.emplace_back(fromSweepFrame({positions[k], spans[k].first}, direction),
-                        fromSweepFrame({positions[k], spans[k].second}, direction));
+    const auto [lo, hi] = spans[k];
+    const double inset = std::min(lane_end_inset_, 0.5 * (hi - lo));
+    result.emplace_back(fromSweepFrame({positions[k], lo + inset}, direction),
+                        fromSweepFrame({positions[k], hi - inset}, direction));
   }
   return result;
 }

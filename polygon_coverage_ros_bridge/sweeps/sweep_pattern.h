@@ -27,10 +27,17 @@ using TransitionPath = std::function<std::vector<Point2>(const Point2&, const Po
 /// apart; the outermost lanes stay within min(s/2, W/2 - L/2) of the cell's sides, so
 /// that the footprint also reaches half a footprint length beyond a wall. Where a
 /// corner of the cell would stay unseen by every lane's swept footprint, an extra lane
-/// is placed through it.
+/// is placed through it. Lane ends stop `lane_end_inset` short of the cell's boundary:
+/// where the walls are closer than half a footprint length (wall_distance < L/2), the
+/// footprint still reaches the whole reachable band from max(0, L/2 - wall_distance)
+/// inside.
 class SweepPatternGenerator {
  public:
-  explicit SweepPatternGenerator(const FrustumSensor& sensor) : sensor_(sensor) {}
+  explicit SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset = 0.0)
+      : sensor_(sensor), lane_end_inset_(lane_end_inset) {}
+
+  /// The inset that keeps the reachable band seen (see the class comment).
+  static double laneEndInset(const FrustumSensor& sensor, double wall_distance);
 
   /// The lanes of `cell` (counter-clockwise, monotone for `direction`), each as its two
   /// ends, in order across the direction; the first end has the smaller coordinate along it.
@@ -43,6 +50,7 @@ class SweepPatternGenerator {
 
  private:
   FrustumSensor sensor_;
+  double lane_end_inset_;
 };
 
 }  // namespace kinematic_coverage

@@ -34,7 +34,8 @@ void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan
   EXPECT_NEAR(plan.path_length_m, length, 1e-6 * std::max(1.0, length));
   EXPECT_GE(plan.time_cost_s, plan.path_length_m / parameters.v_max - 1e-9);
   const double covered = waypointPathReachableCoveragePercent(
-      free_area, plan.offset_free_area, FrustumSensor::fromParameters(parameters), waypoints);
+      free_area, plan.offset_free_area, FrustumSensor::fromParameters(parameters), waypoints,
+      RasterResolution{0.0, 1e-3, 1'000'000});
   EXPECT_GE(covered, 99.0);
 }
 

@@ -1,0 +1,133 @@
+// Side by side with the peer planner (ethz-asl/polygon_coverage_planning) on its example
+// polygons: plans each mission of shared/benchmarks/pcp_polygons with the same settings
+// and prints our figures next to the peer's reference figures from that folder's README.
+//
+//   planner_peer_benchmark [POLYGONS_DIR] [--runs N]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
+
+namespace {
+
+using kinematic_coverage::CoveragePlan;
+
+/// One row of the peer's table in the README.
+struct PeerFigures {
+  int cells = 0;
+  int waypoints = 0;
+  double path_length_m = 0.0;
+  double time_cost_s = 0.0;
+  double planning_time_s = 0.0;
+};
+
+/// Reads the rows "| name [(...)] | cells | waypoints | length | time cost | time |".
+std::map<std::string, PeerFigures> readPeerTable(const std::string& readme) {
+  std::map<std::string, PeerFigures> table;
+  std::ifstream in(readme);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.size() < 2 || line[0] != '|') continue;
+    std::vector<std::string> fields;
+    std::stringstream stream(line.substr(1));
+    std::string field;
+    while (std::getline(stream, field, '|')) fields.push_back(field);
+    if (fields.size() < 6) continue;
+    std::stringstream name_stream(fields[0]);
+    std::string name;
+    name_stream >> name;
+    PeerFigures figures;
+    try {
+      figures.cells = std::stoi(fields[1]);
+      figures.waypoints = std::stoi(fields[2]);
+      figures.path_length_m = std::stod(fields[3]);
+      figures.time_cost_s = std::stod(fields[4]);
+      figures.planning_time_s = std::stod(fields[5]);
+    } catch (const std::exception&) {
+      continue;  // the header and separator rows
+    }
+    table[name] = figures;
+  }
+  return table;
+}
+
+/// Validation, cleaning and planning, as `coverage_tool plan` does them.
+CoveragePlan planMission(const kinematic_coverage::Mission& mission,
+                         kinematic_coverage::PolygonWithHoles* free_area) {
+  const kinematic_coverage::PolygonValidator validator;
+  validator.validate(mission.polygon);
+  *free_area = kinematic_coverage::PolygonCleaner().clean(mission.polygon).free_area;
+  return kinematic_coverage::CoveragePlanner(mission.parameters)
+      .plan(*free_area, mission.start, mission.goal);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string directory = KC_PEER_POLYGONS_DIR;
+  int runs = 3;
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (argument == "--runs" && i + 1 < argc) {
+      runs = std::max(1, std::atoi(argv[++i]));
+    } else {
+      directory = argument;
+    }
+  }
+  const auto peer = readPeerTable(directory + "/README.md");
+  std::vector<std::string> missions;
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+    if (entry.path().extension() == ".yaml") missions.push_back(entry.path().string());
+  }
+  std::sort(missions.begin(), missions.end());
+
+  std::printf(
+      "| polygon | cells (peer) | waypoints (peer) | path length m (peer) | time cost s (peer) "
+      "| time cost ratio | planning time s (peer) | reachable area seen %% |\n"
+      "|---|---|---|---|---|---|---|---|\n");
+  for (const std::string& path : missions) {
+    const std::string name = std::filesystem::path(path).stem().string();
+    try {
+      const auto mission = kinematic_coverage::MissionFileReader().read(path);
+      CoveragePlan plan;
+      kinematic_coverage::PolygonWithHoles free_area;
+      std::vector<double> times;
+      for (int run = 0; run < runs; ++run) {
+        const auto start = std::chrono::steady_clock::now();
+        plan = planMission(mission, &free_area);
+        times.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      }
+      std::sort(times.begin(), times.end());
+      const double median_time = times[times.size() / 2];
+      const auto it = peer.find(name);
+      const PeerFigures reference = it != peer.end() ? it->second : PeerFigures{};
+      const double seen = kinematic_coverage::waypointPathReachableCoveragePercent(
+          free_area, plan.offset_free_area,
+          kinematic_coverage::FrustumSensor::fromParameters(mission.parameters), plan.waypoints);
+      std::printf(
+          "| %s | %zu (%d) | %zu (%d) | %.2f (%.2f) | %.2f (%.2f) | %.3f | %.3f (%.2f) | %.2f |\n",
+                  name.c_str(), plan.cells.size(), reference.cells, plan.waypoints.size(),
+                  reference.waypoints, plan.path_length_m, reference.path_length_m,
+                  plan.time_cost_s, reference.time_cost_s,
+                  reference.time_cost_s > 0 ? plan.time_cost_s / reference.time_cost_s : 0.0,
+                  median_time, reference.planning_time_s, seen);
+      std::fflush(stdout);
+    } catch (const std::exception& error) {
+      std::printf("| %s | failed: %s |\n", name.c_str(), error.what());
+    }
+  }
+  return 0;
+}

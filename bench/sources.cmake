@@ -1,0 +1,3 @@
+# Benchmark programs: each prints a table; figures and commands in docs/BENCHMARKS.md.
+include(bench/gtsp/sources.cmake OPTIONAL)
+include(bench/planner/sources.cmake OPTIONAL)

@@ -1,0 +1,342 @@
+#include "polygon_coverage_ros_bridge/route/boundary_grid.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+
+namespace kinematic_coverage {
+namespace {
+
+/// Tolerance as a fraction of the map's extent (the brief's ~1e-9 relative).
+constexpr double kRelativeTolerance = 1e-9;
+/// Largest angle within which a segment counts as running along an edge's ray.
+constexpr double kMaxAngleTolerance = 1e-6;
+/// Grid cells per edge, and the most cells along one axis.
+constexpr double kCellsPerEdge = 2.0;
+constexpr int kMaxCellsPerAxis = 512;
+
+double crossOf(const Point2& u, const Point2& v) { return u.x() * v.y() - u.y() * v.x(); }
+
+/// The ring without repeated consecutive vertices, validated and oriented.
+Ring cleanedRing(const Ring& ring, const std::string& name, bool counter_clockwise,
+                 double tolerance) {
+  Ring result;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    if (!ring[i].allFinite()) {
+      throw InvalidInputError(name + " vertex " + std::to_string(i) +
+                              " has a non-finite coordinate");
+    }
+    if (result.empty() || (ring[i] - result.back()).norm() > tolerance) result.push_back(ring[i]);
+  }
+  while (result.size() > 1 && (result.front() - result.back()).norm() <= tolerance) {
+    result.pop_back();
+  }
+  const double signed_area = result.size() < 3 ? 0.0 : signedArea(result);
+  if (result.size() < 3 || signed_area == 0.0) {
+    throw InvalidInputError(name + " has fewer than 3 distinct vertices or zero area");
+  }
+  if ((signed_area > 0.0) != counter_clockwise) std::reverse(result.begin(), result.end());
+  return result;
+}
+
+}  // namespace
+
+BoundaryGrid::BoundaryGrid(const PolygonWithHoles& polygon) {
+  double extent = 0.0;
+  if (!polygon.hull.empty()) {
+    Eigen::AlignedBox2d box;
+    for (const Point2& p : polygon.hull) {
+      if (p.allFinite()) box.extend(p);
+    }
+    if (!box.isEmpty()) extent = box.sizes().maxCoeff();
+  }
+  tolerance_ = kRelativeTolerance * std::max(extent, 1.0);
+  polygon_.hull = cleanedRing(polygon.hull, "hull", true, tolerance_);
+  for (std::size_t h = 0; h < polygon.holes.size(); ++h) {
+    polygon_.holes.push_back(
+        cleanedRing(polygon.holes[h], "hole " + std::to_string(h), false, tolerance_));
+  }
+  buildClusters();
+  buildGrid();
+  addTouchingEdges();
+}
+
+void BoundaryGrid::buildClusters() {
+  // Every ring vertex and its edge to the next vertex; the free area lies to the left.
+  std::vector<Point2> vertices;
+  std::vector<int> next;
+  std::vector<int> previous;
+  auto addRing = [&](const Ring& ring) {
+    const int first = static_cast<int>(vertices.size());
+    const int n = static_cast<int>(ring.size());
+    for (int i = 0; i < n; ++i) {
+      vertices.push_back(ring[i]);
+      next.push_back(first + (i + 1) % n);
+      previous.push_back(first + (i + n - 1) % n);
+    }
+  };
+  addRing(polygon_.hull);
+  for (const Ring& hole : polygon_.holes) addRing(hole);
+
+  // Cluster coinciding vertices (pinch points): sweep in x, join within tolerance.
+  const int count = static_cast<int>(vertices.size());
+  std::vector<int> order(count);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return vertices[a].x() < vertices[b].x(); });
+  std::vector<int> cluster_of(count, -1);
+  for (int i = 0; i < count; ++i) {
+    const int v = order[i];
+    if (cluster_of[v] >= 0) continue;
+    cluster_of[v] = static_cast<int>(clusters_.size());
+    clusters_.push_back({vertices[v], {}, {}, false});
+    for (int j = i + 1; j < count && vertices[order[j]].x() - vertices[v].x() <= tolerance_; ++j) {
+      if (cluster_of[order[j]] < 0 && (vertices[order[j]] - vertices[v]).norm() <= tolerance_) {
+        cluster_of[order[j]] = cluster_of[v];
+      }
+    }
+  }
+  for (int v = 0; v < count; ++v) {
+    edge_start_.push_back(vertices[v]);
+    edge_end_.push_back(vertices[next[v]]);
+    start_cluster_.push_back(cluster_of[v]);
+    end_cluster_.push_back(cluster_of[next[v]]);
+  }
+
+  // Rays of the corners: the outgoing edge has the free area counter-clockwise of it,
+  // the incoming edge (seen from the vertex) clockwise of it.
+  std::vector<int> corners(clusters_.size(), 0);
+  for (int v = 0; v < count; ++v) {
+    Cluster& cluster = clusters_[cluster_of[v]];
+    const Point2& here = vertices[v];
+    const Point2 to_next = vertices[next[v]] - here;
+    const Point2 to_previous = vertices[previous[v]] - here;
+    cluster.ray_angles.push_back(std::atan2(to_next.y(), to_next.x()));
+    cluster.ray_outgoing.push_back(1);
+    cluster.ray_angles.push_back(std::atan2(to_previous.y(), to_previous.x()));
+    cluster.ray_outgoing.push_back(0);
+    // Reflex for the free area: a right turn by more than the tolerance.
+    const double chord = (vertices[next[v]] - vertices[previous[v]]).norm();
+    const double turn = crossOf(-to_previous, to_next);
+    if (turn < 0.0 && -turn > tolerance_ * chord) cluster.bend = true;
+    ++corners[cluster_of[v]];
+  }
+  for (std::size_t k = 0; k < clusters_.size(); ++k) {
+    if (corners[k] > 1) clusters_[k].bend = true;
+  }
+}
+
+void BoundaryGrid::buildGrid() {
+  Eigen::AlignedBox2d box;
+  for (const Point2& p : edge_start_) box.extend(p);
+  const Point2 margin = Point2::Constant(2.0 * tolerance_);
+  origin_ = box.min() - margin;
+  const Point2 size = box.sizes() + 2.0 * margin;
+  const double cells = kCellsPerEdge * static_cast<double>(edge_start_.size());
+  const double side = std::sqrt(size.x() * size.y() / cells);
+  columns_ = std::clamp(static_cast<int>(std::ceil(size.x() / side)), 1, kMaxCellsPerAxis);
+  rows_ = std::clamp(static_cast<int>(std::ceil(size.y() / side)), 1, kMaxCellsPerAxis);
+  cell_width_ = size.x() / columns_;
+  cell_height_ = size.y() / rows_;
+  inverse_cell_width_ = 1.0 / cell_width_;
+  inverse_cell_height_ = 1.0 / cell_height_;
+
+  // Each edge goes into every cell its box, grown by the tolerance, overlaps.
+  const int edge_count = static_cast<int>(edge_start_.size());
+  std::vector<int> counts(static_cast<std::size_t>(columns_ * rows_) + 1, 0);
+  auto forEachCell = [&](int e, auto&& use) {
+    const Point2 low = edge_start_[e].cwiseMin(edge_end_[e]) - Point2::Constant(tolerance_);
+    const Point2 high = edge_start_[e].cwiseMax(edge_end_[e]) + Point2::Constant(tolerance_);
+    for (int r = row(low.y()); r <= row(high.y()); ++r) {
+      for (int c = column(low.x()); c <= column(high.x()); ++c) use(r * columns_ + c);
+    }
+  };
+  for (int e = 0; e < edge_count; ++e) forEachCell(e, [&](int cell) { ++counts[cell + 1]; });
+  std::partial_sum(counts.begin(), counts.end(), counts.begin());
+  cell_begin_ = counts;
+  cell_edges_.assign(counts.back(), 0);
+  for (int e = 0; e < edge_count; ++e)
+    forEachCell(e, [&](int cell) { cell_edges_[counts[cell]++] = e; });
+}
+
+void BoundaryGrid::addTouchingEdges() {
+  // A vertex lying on another edge's interior (a ring touching an edge): that edge's two
+  // rays join the vertex's cluster, which becomes a possible bend.
+  for (int k = 0; k < static_cast<int>(clusters_.size()); ++k) {
+    Cluster& cluster = clusters_[k];
+    const Point2 p = cluster.position;
+    const int cell = row(p.y()) * columns_ + column(p.x());
+    for (int i = cell_begin_[cell]; i < cell_begin_[cell + 1]; ++i) {
+      const int e = cell_edges_[i];
+      if (k == start_cluster_[e] || k == end_cluster_[e]) continue;
+      if (distanceToSegment(p, edge_start_[e], edge_end_[e]) > tolerance_) continue;
+      const Point2 forward = edge_end_[e] - p;
+      const Point2 backward = edge_start_[e] - p;
+      cluster.ray_angles.push_back(std::atan2(forward.y(), forward.x()));
+      cluster.ray_outgoing.push_back(1);
+      cluster.ray_angles.push_back(std::atan2(backward.y(), backward.x()));
+      cluster.ray_outgoing.push_back(0);
+      cluster.bend = true;
+    }
+  }
+}
+
+int BoundaryGrid::column(double x) const {
+  const double c = (x - origin_.x()) * inverse_cell_width_;
+  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(columns_) - 0.5));
+}
+
+int BoundaryGrid::row(double y) const {
+  const double r = (y - origin_.y()) * inverse_cell_height_;
+  return static_cast<int>(std::clamp(r, 0.0, static_cast<double>(rows_) - 0.5));
+}
+
+template <typename Visit>
+bool BoundaryGrid::visitEdgesAlong(const Point2& a, const Point2& b, Visit&& visit) const {
+  // Row by row, the columns the segment spans within the row's band.
+  const double y_low = std::min(a.y(), b.y());
+  const double y_high = std::max(a.y(), b.y());
+  const double x_low = std::min(a.x(), b.x());
+  const double x_high = std::max(a.x(), b.x());
+  const double dy = b.y() - a.y();
+  const double slope = dy != 0.0 ? (b.x() - a.x()) / dy : 0.0;
+  for (int r = row(y_low), last_row = row(y_high); r <= last_row; ++r) {
+    double from = x_low;
+    double to = x_high;
+    if (dy != 0.0) {
+      const double band_low = std::max(y_low, origin_.y() + r * cell_height_);
+      const double band_high = std::min(y_high, origin_.y() + (r + 1) * cell_height_);
+      const double x1 = a.x() + (band_low - a.y()) * slope;
+      const double x2 = a.x() + (band_high - a.y()) * slope;
+      from = std::clamp(std::min(x1, x2), x_low, x_high);
+      to = std::clamp(std::max(x1, x2), x_low, x_high);
+    }
+    for (int c = column(from), last_column = column(to); c <= last_column; ++c) {
+      const int cell = r * columns_ + c;
+      for (int i = cell_begin_[cell]; i < cell_begin_[cell + 1]; ++i) {
+        if (!visit(cell_edges_[i])) return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool BoundaryGrid::contains(const Point2& p) const {
+  return p.allFinite() && kinematic_coverage::contains(polygon_, p, tolerance_);
+}
+
+BoundaryGrid::Contact BoundaryGrid::contactOf(const Point2& p) const {
+  Contact contact;
+  if (!p.allFinite()) return contact;
+  const int cell = row(p.y()) * columns_ + column(p.x());
+  for (int i = cell_begin_[cell]; i < cell_begin_[cell + 1]; ++i) {
+    const int e = cell_edges_[i];
+    if ((p - edge_start_[e]).norm() <= tolerance_) return {start_cluster_[e], {}};
+    if ((p - edge_end_[e]).norm() <= tolerance_) return {end_cluster_[e], {}};
+    if (distanceToSegment(p, edge_start_[e], edge_end_[e]) <= tolerance_) {
+      contact.edges.push_back(e);
+    }
+  }
+  return contact;
+}
+
+bool BoundaryGrid::directionFree(int cluster, const Point2& direction,
+                                 double angle_tolerance) const {
+  // The ray nearest clockwise of the direction tells the side: free counter-clockwise of
+  // an outgoing edge, clockwise of an incoming one. Along a ray is on the boundary.
+  const Cluster& c = clusters_[cluster];
+  const double angle = std::atan2(direction.y(), direction.x());
+  double nearest = 2.0 * M_PI;
+  bool free = true;
+  for (std::size_t i = 0; i < c.ray_angles.size(); ++i) {
+    double delta = std::fmod(angle - c.ray_angles[i], 2.0 * M_PI);
+    if (delta < 0.0) delta += 2.0 * M_PI;
+    if (delta <= angle_tolerance || delta >= 2.0 * M_PI - angle_tolerance) return true;
+    if (delta < nearest) {
+      nearest = delta;
+      free = c.ray_outgoing[i] != 0;
+    }
+  }
+  return free;
+}
+
+bool BoundaryGrid::endAllows(const Contact& contact, const Point2& direction,
+                             double angle_tolerance) const {
+  if (contact.cluster >= 0) return directionFree(contact.cluster, direction, angle_tolerance);
+  for (int e : contact.edges) {
+    const Point2 along = edge_end_[e] - edge_start_[e];
+    // The far end may lie right of the edge's line by at most the tolerance.
+    if (crossOf(along, direction) < -tolerance_ * along.norm()) return false;
+  }
+  return true;
+}
+
+bool BoundaryGrid::touches(const Contact& contact, int edge) const {
+  if (contact.cluster >= 0) {
+    return contact.cluster == start_cluster_[edge] || contact.cluster == end_cluster_[edge];
+  }
+  return std::find(contact.edges.begin(), contact.edges.end(), edge) != contact.edges.end();
+}
+
+bool BoundaryGrid::segmentInside(const Point2& a, const Point2& b) const {
+  return segmentInside(a, contactOf(a), b, contactOf(b));
+}
+
+bool BoundaryGrid::segmentInside(const Point2& a, const Contact& a_contact, const Point2& b,
+                                 const Contact& b_contact) const {
+  const Point2 d = b - a;
+  const double length_sq = d.squaredNorm();
+  const double length = std::sqrt(length_sq);
+  if (!(length > tolerance_)) return length <= tolerance_;
+  // The segment may deviate from an edge's ray by the tolerance over its length.
+  const double angle_tolerance = std::min(tolerance_ / length, kMaxAngleTolerance);
+  if (!endAllows(a_contact, d, angle_tolerance) || !endAllows(b_contact, -d, angle_tolerance)) {
+    return false;
+  }
+  const double side_tolerance = tolerance_ * length;  // cross products scale with |d|
+  return visitEdgesAlong(a, b, [&](int e) {
+    const Point2& s = edge_start_[e];
+    const Point2& t = edge_end_[e];
+    const double side_s = crossOf(d, s - a);
+    const double side_t = crossOf(d, t - a);
+    if ((side_s > side_tolerance && side_t > side_tolerance) ||
+        (side_s < -side_tolerance && side_t < -side_tolerance)) {
+      return true;
+    }
+    // A vertex on the open segment: both directions must be free there.
+    if (std::abs(side_s) <= side_tolerance) {
+      const double along = (s - a).dot(d);
+      if (along > 0.0 && along < length_sq && (s - a).norm() > tolerance_ &&
+          (s - b).norm() > tolerance_) {
+        const int k = start_cluster_[e];
+        if (!directionFree(k, d, angle_tolerance) || !directionFree(k, -d, angle_tolerance)) {
+          return false;
+        }
+      }
+    }
+    // An edge crossing the segment's line: a proper crossing leaves the area, except
+    // through an end, which that end's contact judged.
+    const bool straddles = (side_s > side_tolerance && side_t < -side_tolerance) ||
+                           (side_s < -side_tolerance && side_t > side_tolerance);
+    if (!straddles) return true;
+    const double side_a = crossOf(t - s, a - s);
+    const double side_b = crossOf(t - s, b - s);
+    if (!((side_a > 0.0 && side_b < 0.0) || (side_a < 0.0 && side_b > 0.0))) return true;
+    if (touches(a_contact, e) || touches(b_contact, e)) return true;
+    return distanceToSegment(a, s, t) <= tolerance_ || distanceToSegment(b, s, t) <= tolerance_;
+  });
+}
+
+std::vector<int> BoundaryGrid::bendClusters() const {
+  std::vector<int> result;
+  for (std::size_t k = 0; k < clusters_.size(); ++k) {
+    if (clusters_[k].bend) result.push_back(static_cast<int>(k));
+  }
+  return result;
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,71 @@
+#include "polygon_coverage_ros_bridge/route/segment_cost.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+
+namespace kinematic_coverage {
+
+SegmentCost::SegmentCost(const PlannerParameters& parameters)
+    : kind_(Kind::kDistance), v_max_(parameters.v_max), a_max_(parameters.a_max) {
+  if (parameters.cost_function == "distance") {
+    kind_ = Kind::kDistance;
+  } else if (parameters.cost_function == "time") {
+    kind_ = Kind::kTime;
+    for (const auto& [name, value] : {std::pair<const char*, double>{"v_max", v_max_},
+                                      std::pair<const char*, double>{"a_max", a_max_}}) {
+      if (!std::isfinite(value) || value <= 0.0) {
+        std::ostringstream message;
+        message << "parameter " << name << " must be a positive number for cost_function "
+                << "'time', got " << value;
+        throw InvalidInputError(message.str());
+      }
+    }
+  } else if (parameters.cost_function == "waypoints") {
+    kind_ = Kind::kWaypoints;
+  } else {
+    throw InvalidInputError(
+        "parameter cost_function must be 'distance', 'time' or 'waypoints', got '" +
+        parameters.cost_function + "'");
+  }
+}
+
+double SegmentCost::ofLength(double length) const {
+  if (!std::isfinite(length) || length < 0.0) {
+    std::ostringstream message;
+    message << "segment length must be a finite number >= 0, got " << length;
+    throw InvalidInputError(message.str());
+  }
+  switch (kind_) {
+    case Kind::kDistance:
+      return length;
+    case Kind::kTime: {
+      // Rest to rest: accelerate with a_max, cruise at v_max when the segment is long
+      // enough to reach it (length >= v^2/a), else a triangular profile.
+      const double cruise_length = v_max_ * v_max_ / a_max_;
+      if (length >= cruise_length) return length / v_max_ + v_max_ / a_max_;
+      return 2.0 * std::sqrt(length / a_max_);
+    }
+    case Kind::kWaypoints:
+      return length <= kLengthTolerance ? 0.0 : 1.0;
+  }
+  return length;
+}
+
+double SegmentCost::of(const Point2& a, const Point2& b) const { return ofLength((b - a).norm()); }
+
+double SegmentCost::pathCost(const std::vector<Point2>& path) const {
+  double total = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i) total += of(path[i - 1], path[i]);
+  return total;
+}
+
+double pathLength(const std::vector<Point2>& path) {
+  double total = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i) total += (path[i] - path[i - 1]).norm();
+  return total;
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+
+namespace kinematic_coverage {
+
+/// The cost of driving one straight segment under `cost_function` (INTERFACE section 5),
+/// the edge weight of the planner's transitions and of its generalized TSP.
+///
+/// "distance": the length. "time": rest-to-rest with a trapezoidal velocity profile
+/// (v_max, a_max), so a path costs the sum over its segments, stopping at every bend.
+/// "waypoints": one per segment. A zero-length segment costs 0 in every mode.
+/// Every mode is a non-decreasing, subadditive function of the length, so a straight
+/// segment never costs more than any detour between its ends.
+class SegmentCost {
+ public:
+  /// Throws InvalidInputError for an unknown cost_function, or for v_max or a_max not
+  /// positive and finite when cost_function is "time".
+  explicit SegmentCost(const PlannerParameters& parameters);
+
+  /// The cost of a straight segment of `length` metres (>= 0). Throws InvalidInputError
+  /// for a negative or non-finite length.
+  double ofLength(double length) const;
+
+  /// The cost of the straight segment from a to b.
+  double of(const Point2& a, const Point2& b) const;
+
+  /// The sum of the costs of the path's segments (0 for fewer than two points).
+  double pathCost(const std::vector<Point2>& path) const;
+
+ private:
+  enum class Kind { kDistance, kTime, kWaypoints };
+  Kind kind_;
+  double v_max_;
+  double a_max_;
+};
+
+/// The length of a polyline, metres (0 for fewer than two points).
+double pathLength(const std::vector<Point2>& path);
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,6 @@
+kc_add_stage_library(kc_route
+  SOURCES
+    polygon_coverage_ros_bridge/route/segment_cost.cpp
+    polygon_coverage_ros_bridge/route/boundary_grid.cpp
+    polygon_coverage_ros_bridge/route/visibility_graph.cpp
+  DEPENDS kc_geometry)

@@ -1,0 +1,281 @@
+#include "polygon_coverage_ros_bridge/route/visibility_graph.h"
+
+#include <limits>
+#include <map>
+#include <sstream>
+#include <utility>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+
+namespace kinematic_coverage {
+namespace {
+
+constexpr double kUnreachable = std::numeric_limits<double>::infinity();
+
+std::string describe(const Point2& p) {
+  std::ostringstream text;
+  text.precision(10);
+  text << "(" << p.x() << ", " << p.y() << ")";
+  return text.str();
+}
+
+}  // namespace
+
+VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost& segment_cost)
+    : grid_(area), segment_cost_(segment_cost) {
+  for (int cluster : grid_.bendClusters()) {
+    nodes_.push_back(grid_.clusterPosition(cluster));
+    node_contacts_.push_back({cluster, {}});
+  }
+  const std::size_t n = nodes_.size();
+  node_costs_.assign(n * n, kUnreachable);
+  neighbours_.assign(n, {});
+  for (std::size_t u = 0; u < n; ++u) {
+    node_costs_[u * n + u] = 0.0;
+    for (std::size_t w = u + 1; w < n; ++w) {
+      if (!grid_.segmentInside(nodes_[u], node_contacts_[u], nodes_[w], node_contacts_[w])) {
+        continue;
+      }
+      const double c = segment_cost_.of(nodes_[u], nodes_[w]);
+      node_costs_[u * n + w] = node_costs_[w * n + u] = c;
+      neighbours_[u].push_back({static_cast<int>(w), c});
+      neighbours_[w].push_back({static_cast<int>(u), c});
+    }
+  }
+  // Floyd-Warshall over the per-segment costs, a row at a time (vectorized).
+  Eigen::ArrayXd via_row(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    via_row = Eigen::Map<const Eigen::ArrayXd>(&node_costs_[k * n], n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double to_via = node_costs_[i * n + k];
+      if (i == k || to_via == kUnreachable) continue;
+      Eigen::Map<Eigen::ArrayXd> row(&node_costs_[i * n], n);
+      row = row.min(via_row + to_via);
+    }
+  }
+}
+
+std::vector<Point2> VisibilityGraph::nodePath(int from, int to) const {
+  // Follow the neighbour that continues a cheapest route; each step strictly lowers the
+  // remaining cost, and a route never has more than nodeCount() nodes.
+  const std::size_t n = nodes_.size();
+  std::vector<Point2> path = {nodes_[from]};
+  for (int u = from; u != to && path.size() <= n;) {
+    int best = -1;
+    double best_cost = kUnreachable;
+    for (const auto& [w, c] : neighbours_[u]) {
+      const double through = c + node_costs_[static_cast<std::size_t>(w) * n + to];
+      if (through < best_cost) best_cost = through, best = w;
+    }
+    if (best < 0) break;
+    u = best;
+    path.push_back(nodes_[u]);
+  }
+  return path;
+}
+
+VisibilityGraph::QueryPoint VisibilityGraph::locate(const Point2& p) const {
+  if (!grid_.contains(p)) {
+    throw InvalidInputError("route point " + describe(p) + " lies outside the area");
+  }
+  QueryPoint point;
+  point.position = p;
+  point.contact = grid_.contactOf(p);
+  return point;
+}
+
+void VisibilityGraph::attachNodes(QueryPoint* point, bool with_node_costs) const {
+  point->seen_nodes.clear();
+  point->seen_costs.clear();
+  for (std::size_t k = 0; k < nodes_.size(); ++k) {
+    if (grid_.segmentInside(point->position, point->contact, nodes_[k], node_contacts_[k])) {
+      point->seen_nodes.push_back(static_cast<int>(k));
+      point->seen_costs.push_back(segment_cost_.of(point->position, nodes_[k]));
+    }
+  }
+  point->node_costs.clear();
+  if (!with_node_costs) return;
+  const std::size_t n = nodes_.size();
+  point->node_costs.assign(n, kUnreachable);
+  for (std::size_t i = 0; i < point->seen_nodes.size(); ++i) {
+    const double* row = &node_costs_[static_cast<std::size_t>(point->seen_nodes[i]) * n];
+    const double to_node = point->seen_costs[i];
+    for (std::size_t w = 0; w < n; ++w) {
+      point->node_costs[w] = std::min(point->node_costs[w], to_node + row[w]);
+    }
+  }
+}
+
+bool VisibilityGraph::straightInside(const QueryPoint& a, const QueryPoint& b) const {
+  return grid_.segmentInside(a.position, a.contact, b.position, b.contact);
+}
+
+VisibilityGraph::Route VisibilityGraph::bestRoute(const QueryPoint& a, const QueryPoint& b) const {
+  if (a.position == b.position) return {0.0, true, -1, -1};
+  const std::size_t n = nodes_.size();
+  Route via{kUnreachable, false, -1, -1};
+  if (!a.node_costs.empty()) {
+    for (std::size_t i = 0; i < b.seen_nodes.size(); ++i) {
+      const double c = a.node_costs[b.seen_nodes[i]] + b.seen_costs[i];
+      if (c < via.cost) via = {c, false, -1, b.seen_nodes[i]};
+    }
+  } else if (!b.node_costs.empty()) {
+    // Costs are symmetric: b's cost to node u is u's cost to b.
+    for (std::size_t i = 0; i < a.seen_nodes.size(); ++i) {
+      const double c = a.seen_costs[i] + b.node_costs[a.seen_nodes[i]];
+      if (c < via.cost) via = {c, false, a.seen_nodes[i], -1};
+    }
+  } else {
+    for (std::size_t i = 0; i < a.seen_nodes.size(); ++i) {
+      const double* row = &node_costs_[static_cast<std::size_t>(a.seen_nodes[i]) * n];
+      for (std::size_t j = 0; j < b.seen_nodes.size(); ++j) {
+        const double c = a.seen_costs[i] + row[b.seen_nodes[j]] + b.seen_costs[j];
+        if (c < via.cost) via = {c, false, a.seen_nodes[i], b.seen_nodes[j]};
+      }
+    }
+  }
+  // No detour costs less than the straight segment (SegmentCost is subadditive), so a
+  // detour that is not dearer needs no visibility test.
+  const double straight = segment_cost_.of(a.position, b.position);
+  if (via.cost <= straight) return via;
+  if (straightInside(a, b)) return {straight, true, -1, -1};
+  return via;
+}
+
+std::vector<Point2> VisibilityGraph::routePoints(const QueryPoint& a, const QueryPoint& b,
+                                                 const Route& route) const {
+  if (route.straight) {
+    if (a.position == b.position) return {a.position};
+    return {a.position, b.position};
+  }
+  if (route.cost == kUnreachable) {
+    throw InvalidInputError("no route inside the area from " + describe(a.position) + " to " +
+                            describe(b.position));
+  }
+  const std::size_t n = nodes_.size();
+  int first = route.first;
+  int last = route.last;
+  double best = kUnreachable;
+  if (first < 0) {
+    for (std::size_t i = 0; i < a.seen_nodes.size(); ++i) {
+      const double c = a.seen_costs[i] + node_costs_[a.seen_nodes[i] * n + last];
+      if (c < best) best = c, first = a.seen_nodes[i];
+    }
+  } else if (last < 0) {
+    for (std::size_t j = 0; j < b.seen_nodes.size(); ++j) {
+      const double c = node_costs_[first * n + b.seen_nodes[j]] + b.seen_costs[j];
+      if (c < best) best = c, last = b.seen_nodes[j];
+    }
+  }
+  std::vector<Point2> path = {a.position};
+  auto append = [&path](const Point2& p) {
+    if (p != path.back()) path.push_back(p);
+  };
+  for (const Point2& p : nodePath(first, last)) append(p);
+  append(b.position);
+  return path;
+}
+
+std::vector<Point2> VisibilityGraph::pathBetween(const QueryPoint& a, const QueryPoint& b) const {
+  return routePoints(a, b, bestRoute(a, b));
+}
+
+bool VisibilityGraph::visible(const Point2& a, const Point2& b) const {
+  return straightInside(locate(a), locate(b));
+}
+
+std::vector<Point2> VisibilityGraph::shortestPath(const Point2& a, const Point2& b) const {
+  QueryPoint from = locate(a);
+  QueryPoint to = locate(b);
+  if (a == b) return {a};
+  if (straightInside(from, to)) return {a, b};
+  attachNodes(&from, false);
+  attachNodes(&to, false);
+  return pathBetween(from, to);
+}
+
+double VisibilityGraph::cost(const Point2& a, const Point2& b) const {
+  QueryPoint from = locate(a);
+  QueryPoint to = locate(b);
+  if (a == b) return 0.0;
+  if (straightInside(from, to)) return segment_cost_.of(a, b);
+  attachNodes(&from, false);
+  attachNodes(&to, false);
+  return bestRoute(from, to).cost;
+}
+
+std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sources,
+                                                const std::vector<Point2>& targets) const {
+  // Each distinct point is located once; sources also get their cost to every node.
+  std::map<std::pair<double, double>, std::size_t> index_of;
+  std::vector<QueryPoint> points;
+  std::vector<bool> is_source;
+  auto indexOf = [&](const Point2& p, bool source) {
+    const auto [it, inserted] = index_of.emplace(std::make_pair(p.x(), p.y()), points.size());
+    if (inserted) {
+      points.push_back(locate(p));
+      is_source.push_back(source);
+    } else if (source) {
+      is_source[it->second] = true;
+    }
+    return it->second;
+  };
+  std::vector<std::size_t> source_points;
+  std::vector<std::size_t> target_points;
+  for (const Point2& p : sources) source_points.push_back(indexOf(p, true));
+  for (const Point2& p : targets) target_points.push_back(indexOf(p, false));
+  for (std::size_t i = 0; i < points.size(); ++i) attachNodes(&points[i], is_source[i]);
+
+  // Costs between distinct points only, then spread over the requested rows and columns.
+  auto slots = [&](const std::vector<std::size_t>& uses, std::vector<std::size_t>* distinct) {
+    std::vector<std::size_t> slot(points.size(), points.size());
+    for (std::size_t p : uses) {
+      if (slot[p] == points.size()) {
+        slot[p] = distinct->size();
+        distinct->push_back(p);
+      }
+    }
+    return slot;
+  };
+  std::vector<std::size_t> distinct_sources;
+  std::vector<std::size_t> distinct_targets;
+  const std::vector<std::size_t> source_slot = slots(source_points, &distinct_sources);
+  const std::vector<std::size_t> target_slot = slots(target_points, &distinct_targets);
+  // Routes are symmetric: a pair already computed the other way round is reused.
+  const std::size_t columns = distinct_targets.size();
+  std::vector<double> distinct_costs;
+  distinct_costs.reserve(distinct_sources.size() * columns);
+  for (std::size_t row = 0; row < distinct_sources.size(); ++row) {
+    const std::size_t s = distinct_sources[row];
+    for (std::size_t t : distinct_targets) {
+      const bool reversed_known = target_slot[s] < columns && source_slot[t] < row;
+      distinct_costs.push_back(reversed_known
+                                   ? distinct_costs[source_slot[t] * columns + target_slot[s]]
+                                   : bestRoute(points[s], points[t]).cost);
+    }
+  }
+  std::vector<double> result;
+  result.reserve(sources.size() * targets.size());
+  for (std::size_t s : source_points) {
+    const double* row = &distinct_costs[source_slot[s] * distinct_targets.size()];
+    for (std::size_t t : target_points) result.push_back(row[target_slot[t]]);
+  }
+  return result;
+}
+
+std::size_t VisibilityGraph::addQueryPoint(const Point2& p) {
+  QueryPoint point = locate(p);
+  attachNodes(&point, true);
+  query_points_.push_back(std::move(point));
+  return query_points_.size() - 1;
+}
+
+double VisibilityGraph::queryCost(std::size_t i, std::size_t j) const {
+  return bestRoute(query_points_.at(i), query_points_.at(j)).cost;
+}
+
+std::vector<Point2> VisibilityGraph::queryPath(std::size_t i, std::size_t j) const {
+  return pathBetween(query_points_.at(i), query_points_.at(j));
+}
+
+}  // namespace kinematic_coverage

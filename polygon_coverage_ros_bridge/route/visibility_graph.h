@@ -1,0 +1,108 @@
+#pragma once
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/route/boundary_grid.h"
+#include "polygon_coverage_ros_bridge/route/segment_cost.h"
+
+namespace kinematic_coverage {
+
+/// Cheapest routes between points of a polygon with holes (the offset free area), for
+/// the transitions between sweep patterns (issue 2, "shortest paths in the offset free
+/// area (visibility graph)"; Thesis section 3.1, its reference [10]).
+///
+/// Nodes are the vertices a route may bend at (reflex corners, pinch points); edges join
+/// mutually visible nodes, weighted by SegmentCost, so a route costs the sum of its
+/// segments' costs; all-pairs node costs are precomputed (Floyd-Warshall). A query
+/// point's route goes straight when the segment stays inside, else through the cheapest
+/// pair of nodes it and the other end see. Boundary points and the nodes themselves are
+/// valid query points. Points outside the polygon (beyond BoundaryGrid::tolerance())
+/// throw InvalidInputError.
+///
+/// For many queries, register points once (addQueryPoint: each point's visible nodes and
+/// its cost to every node are computed once), then queryCost / queryPath; costMatrix
+/// does that for two point lists.
+class VisibilityGraph {
+ public:
+  /// Builds the graph over `area` (hull and holes in either orientation; may have pinch
+  /// points). Throws InvalidInputError for a ring BoundaryGrid rejects.
+  VisibilityGraph(const PolygonWithHoles& area, const SegmentCost& segment_cost);
+
+  /// The number of nodes and their positions.
+  std::size_t nodeCount() const { return nodes_.size(); }
+  const Point2& node(std::size_t k) const { return nodes_[k]; }
+
+  /// The precomputed cheapest cost from node u to node w (infinity when unreachable).
+  double nodeCost(std::size_t u, std::size_t w) const { return node_costs_[u * nodes_.size() + w]; }
+
+  /// The area's boundary test, for callers that check segments the same way.
+  const BoundaryGrid& boundary() const { return grid_; }
+
+  /// True when the straight segment from a to b stays inside the area.
+  bool visible(const Point2& a, const Point2& b) const;
+
+  /// The cheapest route from a to b, both included ({a} when a == b); every point inside
+  /// the area. Throws InvalidInputError when no route exists.
+  std::vector<Point2> shortestPath(const Point2& a, const Point2& b) const;
+
+  /// The cost of shortestPath(a, b) (infinity when no route exists).
+  double cost(const Point2& a, const Point2& b) const;
+
+  /// Costs from every source to every target, row-major (sources.size() rows of
+  /// targets.size()); each equals cost(source, target).
+  std::vector<double> costMatrix(const std::vector<Point2>& sources,
+                                 const std::vector<Point2>& targets) const;
+
+  /// Registers a query point (for queryCost and queryPath) and returns its index.
+  std::size_t addQueryPoint(const Point2& p);
+
+  /// The number of registered query points.
+  std::size_t queryPointCount() const { return query_points_.size(); }
+
+  /// cost() between registered points i and j.
+  double queryCost(std::size_t i, std::size_t j) const;
+
+  /// shortestPath() between registered points i and j.
+  std::vector<Point2> queryPath(std::size_t i, std::size_t j) const;
+
+ private:
+  /// A located query point: its boundary contact, the nodes it sees with the segment
+  /// cost to each, and (when wanted) its cheapest cost to every node.
+  struct QueryPoint {
+    Point2 position;
+    BoundaryGrid::Contact contact;
+    std::vector<int> seen_nodes;
+    std::vector<double> seen_costs;
+    std::vector<double> node_costs;
+  };
+
+  /// The cheapest way between two query points: straight, or from `first` to `last` node.
+  struct Route {
+    double cost = 0.0;
+    bool straight = true;
+    int first = -1;
+    int last = -1;
+  };
+
+  QueryPoint locate(const Point2& p) const;
+  void attachNodes(QueryPoint* point, bool with_node_costs) const;
+  bool straightInside(const QueryPoint& a, const QueryPoint& b) const;
+  Route bestRoute(const QueryPoint& a, const QueryPoint& b) const;
+  std::vector<Point2> routePoints(const QueryPoint& a, const QueryPoint& b,
+                                  const Route& route) const;
+  std::vector<Point2> nodePath(int from, int to) const;
+  std::vector<Point2> pathBetween(const QueryPoint& a, const QueryPoint& b) const;
+
+  BoundaryGrid grid_;
+  SegmentCost segment_cost_;
+  std::vector<Point2> nodes_;
+  std::vector<BoundaryGrid::Contact> node_contacts_;
+  std::vector<double> node_costs_;  ///< nodeCount() x nodeCount(), row-major
+  std::vector<std::vector<std::pair<int, double>>> neighbours_;  ///< visible nodes, costs
+  std::vector<QueryPoint> query_points_;
+};
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,229 @@
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "test/support/random_polygons.h"
+#include "trajectory_generation_tools/coverage/reachable_area.h"
+
+namespace kinematic_coverage {
+namespace {
+
+/// The axis-parallel rectangle [x0, x1] x [y0, y1]; counter-clockwise, or clockwise for a hole.
+Ring rectangle(double x0, double y0, double x1, double y1, bool clockwise = false) {
+  Ring ring{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  if (clockwise) std::reverse(ring.begin(), ring.end());
+  return ring;
+}
+
+/// Boustrophedon waypoints over [x0, x1] with lanes from y0 every `spacing` up to y1, and
+/// a last lane at y1 itself.
+std::vector<Pose2> lawnmower(double x0, double x1, double y0, double y1, double spacing) {
+  std::vector<double> lanes;
+  for (double y = y0; y < y1 - 1e-9; y += spacing) lanes.push_back(y);
+  lanes.push_back(y1);
+  std::vector<Pose2> waypoints;
+  for (std::size_t k = 0; k < lanes.size(); ++k) {
+    const bool forward = k % 2 == 0;
+    waypoints.push_back({forward ? x0 : x1, lanes[k], 0.0});
+    waypoints.push_back({forward ? x1 : x0, lanes[k], 0.0});
+  }
+  return waypoints;
+}
+
+TEST(CoverageEvaluator, LawnmowerWithOverlapCoversTheReachableArea) {
+  // 30 m square, 1 m wall distance, the thesis's 40 % overlap, footprint 4 m x 1.6 m.
+  const PolygonWithHoles free_area{rectangle(0, 0, 30, 30), {}};
+  const PolygonWithHoles offset_area{rectangle(1, 1, 29, 29), {}};
+  const FrustumSensor sensor(4.0, 1.6, 0.4);
+  const CoverageEvaluator evaluator(free_area, offset_area, sensor);
+  const std::vector<Pose2> waypoints = lawnmower(1, 29, 1, 29, sensor.sweepDistance());
+  const SeenArea seen = evaluator.seeWaypointPath(waypoints);
+  const CoverageReport report = evaluator.report(seen);
+  EXPECT_GE(report.reachable_coverage_percent, 99.9);
+  // Only cells at the rim of the reachable area may be missed (raster rounding).
+  for (const Point2& centre : seen.unseenCentres(evaluator.reachableArea(), 100000)) {
+    const double to_rim = std::min({centre.x() - 0.2, 29.8 - centre.x()});
+    EXPECT_LE(to_rim, evaluator.raster().cellSize()) << centre.transpose();
+  }
+  // The free area's side strips beyond the footprint's reach stay partly unseen.
+  EXPECT_LT(report.coverage_percent, 100.0);
+  EXPECT_GT(report.coverage_percent, 98.5);
+  EXPECT_DOUBLE_EQ(report.coverage_loss_percent, 100.0 - report.coverage_percent);
+  EXPECT_DOUBLE_EQ(waypointPathReachableCoveragePercent(free_area, offset_area, sensor, waypoints),
+                   report.reachable_coverage_percent);
+}
+
+TEST(CoverageEvaluator, LineSensorLawnmowerCoversTheOffsetArea) {
+  const PolygonWithHoles free_area{rectangle(0, 0, 30, 30), {}};
+  const PolygonWithHoles offset_area{rectangle(1, 1, 29, 29), {}};
+  const FrustumSensor sensor(4.0, 0.0, 0.0);
+  const double coverage = waypointPathReachableCoveragePercent(
+      free_area, offset_area, sensor, lawnmower(1, 29, 1, 29, sensor.sweepDistance()));
+  EXPECT_GE(coverage, 99.9);
+  // Lanes twice as far apart leave every other strip unseen.
+  const double sparse = waypointPathReachableCoveragePercent(
+      free_area, offset_area, sensor, lawnmower(1, 29, 1, 29, 2.0 * sensor.sweepDistance()));
+  EXPECT_LT(sparse, 80.0);
+}
+
+TEST(CoverageEvaluator, SquareWithHoleCountsOnlyTheFreeArea) {
+  PolygonWithHoles free_area{rectangle(0, 0, 20, 20), {rectangle(8, 8, 12, 12, true)}};
+  PolygonWithHoles offset_area{rectangle(1, 1, 19, 19), {rectangle(7, 7, 13, 13, true)}};
+  const FrustumSensor sensor(2.0, 1.0, 0.0);
+  const CoverageEvaluator evaluator(free_area, offset_area, sensor);
+  EXPECT_NEAR(evaluator.raster().area(evaluator.freeArea()), 384.0, 0.384);
+  // Sweeping just the hole's square sees nothing of the free area but its rim.
+  const CoverageReport hole_only =
+      evaluator.report(evaluator.seeTrajectory({{8.5, 10.0, 0.0}, {11.5, 10.0, 0.0}}));
+  EXPECT_NEAR(hole_only.coverage_percent, 0.0, 1e-12);
+  // Sweeping the lower 2 m strip sees 40 of 384 m^2.
+  const CoverageReport strip =
+      evaluator.report(evaluator.seeTrajectory({{0.5, 1.0, 0.0}, {19.5, 1.0, 0.0}}));
+  EXPECT_NEAR(strip.coverage_percent, 100.0 * 40.0 / 384.0, 0.1);
+}
+
+TEST(CoverageEvaluator, DuplicateWaypointsAndZeroLengthLegsChangeNothing) {
+  const PolygonWithHoles free_area{rectangle(0, 0, 30, 30), {}};
+  const PolygonWithHoles offset_area{rectangle(1, 1, 29, 29), {}};
+  const FrustumSensor sensor(4.0, 1.6, 0.4);
+  const CoverageEvaluator evaluator(free_area, offset_area, sensor);
+  const std::vector<Pose2> clean = lawnmower(1, 29, 1, 29, sensor.sweepDistance());
+  std::vector<Pose2> repeated;
+  for (const Pose2& waypoint : clean) {
+    repeated.push_back(waypoint);
+    repeated.push_back({waypoint.x, waypoint.y, waypoint.yaw + 1.0});
+    repeated.push_back({waypoint.x + 1e-12, waypoint.y, waypoint.yaw});
+  }
+  const SeenArea from_clean = evaluator.seeWaypointPath(clean);
+  const SeenArea from_repeated = evaluator.seeWaypointPath(repeated);
+  EXPECT_EQ(from_clean.heatmap().visits, from_repeated.heatmap().visits);
+  // A single waypoint, repeated: its footprint with its own yaw.
+  const SeenArea still = evaluator.seeWaypointPath({{15, 15, 0.5}, {15, 15, 0.5}, {15, 15, 2.0}});
+  EXPECT_NEAR(evaluator.raster().area(still.seenMask()), 4.0 * 1.6, 0.05);
+  // No waypoint: nothing seen.
+  EXPECT_DOUBLE_EQ(evaluator.report(evaluator.seeWaypointPath({})).coverage_percent, 0.0);
+}
+
+TEST(CoverageEvaluator, WaypointPathPosesTurnInPlaceTheShorterWay) {
+  const std::vector<Pose2> poses =
+      waypointPathPoses({{0, 0, 0}, {10, 0, 0}, {10, 0, 0}, {10, -5, 0}}, 0.2);
+  // Leg heading 0, rotation to -pi/2 clockwise in ceil((pi/2) / 0.2) = 8 steps, leg.
+  ASSERT_EQ(poses.size(), 2u + 8u + 1u);
+  EXPECT_DOUBLE_EQ(poses[0].yaw, 0.0);
+  EXPECT_DOUBLE_EQ(poses[1].yaw, 0.0);
+  for (std::size_t k = 2; k < 10; ++k) {
+    EXPECT_LT(poses[k].yaw, poses[k - 1].yaw);
+    EXPECT_NEAR(poses[k - 1].yaw - poses[k].yaw, M_PI / 16, 1e-12);
+  }
+  EXPECT_NEAR(poses[9].yaw, -M_PI / 2, 1e-12);
+  EXPECT_NEAR(poses[10].x, 10.0, 1e-12);
+  EXPECT_NEAR(poses[10].y, -5.0, 1e-12);
+  EXPECT_THROW(waypointPathPoses({{0, 0, 0}}, 0.0), InvalidInputError);
+  EXPECT_THROW(waypointPathPoses({{0, 0, 0}, {std::nan(""), 0, 0}}), InvalidInputError);
+}
+
+TEST(CoverageEvaluator, RejectsInvalidInput) {
+  const PolygonWithHoles free_area{rectangle(0, 0, 30, 30), {}};
+  const PolygonWithHoles offset_area{rectangle(1, 1, 29, 29), {}};
+  const FrustumSensor sensor(4.0, 1.6, 0.4);
+  EXPECT_THROW(CoverageEvaluator(free_area, offset_area, FrustumSensor(0.0, 1.0, 0.0)),
+               InvalidInputError);
+  EXPECT_THROW(CoverageEvaluator(free_area, offset_area, FrustumSensor(1.0, -1.0, 0.0)),
+               InvalidInputError);
+  EXPECT_THROW(CoverageEvaluator(free_area, {rectangle(5, 5, 5.001, 5.001), {}}, sensor),
+               InvalidInputError);
+  EXPECT_THROW(CoverageEvaluator({rectangle(0, 0, 0, 30), {}}, offset_area, sensor),
+               InvalidInputError);
+  const CoverageEvaluator evaluator(free_area, offset_area, sensor);
+  const CoverageEvaluator other(free_area, offset_area, sensor, {0.5, 1e-3, 4'000'000});
+  EXPECT_THROW(evaluator.report(other.seeTrajectory({{5, 5, 0}})), InvalidInputError);
+}
+
+TEST(CoverageEvaluator, RandomMapsSweptOverTheirBoxAreFullyCovered) {
+  // Maps like the planner's tests (hulls 50 to 200 m, up to 15 holes, footprints 2 to
+  // 12.9 m): lanes over the whole bounding box see all of the reachable area.
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> size(50.0, 200.0);
+  std::uniform_real_distribution<double> width(2.0, 12.9);
+  double slowest_s = 0.0;
+  double total_s = 0.0;
+  int evaluated = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const PolygonWithHoles map = testing::randomMap(rng, size(rng), 15, 2.0);
+    const FrustumSensor sensor(width(rng), 1.6, 0.4);
+    OffsetFreeArea offset;
+    try {
+      offset = computeOffsetFreeArea(map, 1.0);
+    } catch (const InvalidInputError&) {
+      continue;
+    }
+    Point2 low = map.hull.front();
+    Point2 high = map.hull.front();
+    for (const Point2& p : map.hull) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    std::vector<Pose2> waypoints =
+        lawnmower(low.x(), high.x(), low.y(), high.y(), sensor.sweepDistance());
+    // Duplicates and zero-length legs on the way.
+    waypoints.insert(waypoints.begin() + 3, waypoints[2]);
+    waypoints.push_back(waypoints.back());
+    const auto start = std::chrono::steady_clock::now();
+    const double coverage =
+        waypointPathReachableCoveragePercent(map, offset.area, sensor, waypoints);
+    const double elapsed_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    slowest_s = std::max(slowest_s, elapsed_s);
+    total_s += elapsed_s;
+    EXPECT_GE(coverage, 99.99) << "trial " << trial;
+    ++evaluated;
+  }
+  EXPECT_GE(evaluated, 15);
+  std::printf("%d random maps: evaluation %.3f s on average, %.3f s at most\n", evaluated,
+              total_s / evaluated, slowest_s);
+}
+
+TEST(CoverageEvaluator, LargeMapIsFast) {
+  // A 200 m x 200 m map with 16 square holes, footprint 2 m x 1.6 m, 40 % overlap:
+  // 167 lanes; the time to rasterize the map, sweep the path and count.
+  PolygonWithHoles free_area{rectangle(0, 0, 200, 200), {}};
+  PolygonWithHoles offset_area{rectangle(1, 1, 199, 199), {}};
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      const double x = 30.0 + 45.0 * i;
+      const double y = 30.0 + 45.0 * j;
+      free_area.holes.push_back(rectangle(x, y, x + 10, y + 10, true));
+      offset_area.holes.push_back(rectangle(x - 1, y - 1, x + 11, y + 11, true));
+    }
+  }
+  const FrustumSensor sensor(2.0, 1.6, 0.4);
+  const std::vector<Pose2> waypoints = lawnmower(1, 199, 1, 199, sensor.sweepDistance());
+  for (const std::size_t max_cells : {std::size_t{4'000'000}, std::size_t{1'000'000}}) {
+    const auto start = std::chrono::steady_clock::now();
+    const CoverageEvaluator evaluator(free_area, offset_area, sensor, {0.0, 1e-3, max_cells});
+    const auto prepared = std::chrono::steady_clock::now();
+    const CoverageReport report = evaluator.report(evaluator.seeWaypointPath(waypoints));
+    const auto end = std::chrono::steady_clock::now();
+    const double prepare_s = std::chrono::duration<double>(prepared - start).count();
+    const double sweep_s = std::chrono::duration<double>(end - prepared).count();
+    std::printf("200 m map, %zu cells of %.3f m: masks %.3f s, sweep and count %.3f s\n",
+                evaluator.raster().cellCount(), evaluator.raster().cellSize(), prepare_s, sweep_s);
+    // The lanes pass over the holes too, so the whole reachable area is seen.
+    EXPECT_GE(report.reachable_coverage_percent, 99.9);
+    EXPECT_NEAR(evaluator.raster().area(evaluator.freeArea()), 40000.0 - 1600.0, 38.4);
+    EXPECT_LT(prepare_s + sweep_s, 2.0);
+  }
+}
+
+}  // namespace
+}  // namespace kinematic_coverage

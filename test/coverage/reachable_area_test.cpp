@@ -1,0 +1,124 @@
+#include "trajectory_generation_tools/coverage/reachable_area.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+
+namespace kinematic_coverage {
+namespace {
+
+/// A square of side `side` centred on `centre`, turned by `angle`, counter-clockwise.
+Ring turnedSquare(const Point2& centre, double side, double angle) {
+  const Point2 u(std::cos(angle), std::sin(angle));
+  const Point2 v(-u.y(), u.x());
+  const double h = 0.5 * side;
+  return {centre - h * u - h * v, centre + h * u - h * v, centre + h * u + h * v,
+          centre - h * u + h * v};
+}
+
+TEST(ReachableArea, DilationMatchesBruteForce) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const CoverageRaster raster({-1.0, 2.0}, 0.3, 70, 55);
+  for (int trial = 0; trial < 20; ++trial) {
+    CellMask mask(raster.cellCount(), 0);
+    const double density = 0.002 + 0.05 * unit(rng);
+    for (auto& cell : mask) cell = unit(rng) < density ? 1 : 0;
+    const double radius = 4.0 * unit(rng);
+    const CellMask grown = dilateMask(raster, mask, radius);
+    std::vector<Point2> set_centres;
+    for (std::size_t j = 0; j < mask.size(); ++j) {
+      if (mask[j] != 0) set_centres.push_back(raster.cellCentre(j));
+    }
+    const double reach = radius + 0.5 * raster.cellSize();
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Point2& centre : set_centres) {
+        nearest = std::min(nearest, (raster.cellCentre(i) - centre).norm());
+      }
+      if (nearest <= reach - 1e-9) EXPECT_EQ(grown[i], 1) << "trial " << trial << " cell " << i;
+      if (nearest > reach + 1e-9) EXPECT_EQ(grown[i], 0) << "trial " << trial << " cell " << i;
+    }
+  }
+}
+
+TEST(ReachableArea, LongReachMatchesBruteForce) {
+  // A reach of hundreds of cells (wider distance storage).
+  const CoverageRaster raster({0.0, 0.0}, 0.01, 300, 290);
+  CellMask mask(raster.cellCount(), 0);
+  const std::vector<std::size_t> seeds{raster.index(10, 20), raster.index(280, 150),
+                                       raster.index(140, 299)};
+  for (const std::size_t i : seeds) mask[i] = 1;
+  const double radius = 2.7;
+  const CellMask grown = dilateMask(raster, mask, radius);
+  const double reach = radius + 0.5 * raster.cellSize();
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const std::size_t j : seeds) {
+      nearest = std::min(nearest, (raster.cellCentre(i) - raster.cellCentre(j)).norm());
+    }
+    if (std::abs(nearest - reach) > 1e-9) {
+      ASSERT_EQ(grown[i], nearest < reach ? 1 : 0) << "cell " << i;
+    }
+  }
+}
+
+TEST(ReachableArea, SquareOffsetByOneMetreWithFrustumFootprint) {
+  // Free square of 20 m, offset free area 18 m, footprint length 1.6 m: the offset square
+  // grown by 0.8 m, a rounded square, still inside the free square.
+  for (const double angle : {0.0, 0.37}) {
+    const PolygonWithHoles free_area{turnedSquare({3.0, -2.0}, 20.0, angle), {}};
+    const PolygonWithHoles offset_area{turnedSquare({3.0, -2.0}, 18.0, angle), {}};
+    const CoverageRaster raster = CoverageRaster::covering(free_area, {0.01, 1e-3, 10'000'000});
+    const CellMask reachable =
+        reachableArea(raster, raster.rasterize(free_area), raster.rasterize(offset_area), 1.6);
+    const double expected = 18.0 * 18.0 + 4.0 * 18.0 * 0.8 + M_PI * 0.8 * 0.8;
+    EXPECT_NEAR(raster.area(reachable), expected, 1e-3 * expected) << "angle " << angle;
+  }
+}
+
+TEST(ReachableArea, ReachIsCutByTheFreeArea) {
+  // Offset by 0.5 m with a 3 m footprint: the grown square would leave the free square.
+  const PolygonWithHoles free_area{turnedSquare({0.0, 0.0}, 10.0, 0.2), {}};
+  const PolygonWithHoles offset_area{turnedSquare({0.0, 0.0}, 9.0, 0.2), {}};
+  const CoverageRaster raster = CoverageRaster::covering(free_area, {0.01, 1e-3, 4'000'000});
+  const CellMask free_mask = raster.rasterize(free_area);
+  const CellMask reachable = reachableArea(raster, free_mask, raster.rasterize(offset_area), 3.0);
+  EXPECT_EQ(reachable, free_mask);
+}
+
+TEST(ReachableArea, LineSensorReachesTheOffsetAreaOnly) {
+  const PolygonWithHoles free_area{turnedSquare({0.0, 0.0}, 20.0, 0.5), {}};
+  const PolygonWithHoles offset_area{turnedSquare({0.0, 0.0}, 18.0, 0.5), {}};
+  const CoverageRaster raster = CoverageRaster::covering(free_area);
+  const CellMask offset_mask = raster.rasterize(offset_area);
+  EXPECT_EQ(reachableArea(raster, raster.rasterize(free_area), offset_mask, 0.0), offset_mask);
+  EXPECT_NEAR(raster.area(offset_mask), 324.0, 0.324);
+}
+
+TEST(ReachableArea, RejectsInvalidInput) {
+  const CoverageRaster raster({0.0, 0.0}, 1.0, 10, 10);
+  const CellMask mask(raster.cellCount(), 1);
+  EXPECT_THROW(dilateMask(raster, mask, -1.0), InvalidInputError);
+  EXPECT_THROW(dilateMask(raster, mask, std::numeric_limits<double>::infinity()),
+               InvalidInputError);
+  EXPECT_THROW(dilateMask(raster, CellMask(5, 1), 1.0), InvalidInputError);
+  EXPECT_THROW(reachableArea(raster, mask, CellMask(5, 1), 1.0), InvalidInputError);
+  EXPECT_THROW(reachableArea(raster, mask, mask, std::numeric_limits<double>::quiet_NaN()),
+               InvalidInputError);
+  // An empty mask stays empty; a huge radius fills the grid.
+  EXPECT_EQ(dilateMask(raster, CellMask(raster.cellCount(), 0), 5.0),
+            CellMask(raster.cellCount(), 0));
+  CellMask one(raster.cellCount(), 0);
+  one[raster.index(3, 4)] = 1;
+  EXPECT_EQ(dilateMask(raster, one, 1e12), mask);
+}
+
+}  // namespace
+}  // namespace kinematic_coverage

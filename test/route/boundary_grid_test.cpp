@@ -1,0 +1,193 @@
+#include "polygon_coverage_ros_bridge/route/boundary_grid.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <random>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "test/support/random_polygons.h"
+
+namespace kinematic_coverage {
+namespace {
+
+PolygonWithHoles squareWithHole() {
+  return {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{4, 4}, {4, 6}, {6, 6}, {6, 4}}}};
+}
+
+/// Two square holes touching at the pinch point (5, 5).
+PolygonWithHoles holesTouchingAtVertex() {
+  return {{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+          {{{2, 2}, {2, 5}, {5, 5}, {5, 2}}, {{5, 5}, {5, 8}, {8, 8}, {8, 5}}}};
+}
+
+/// A hull visiting (5, 5) twice: two square lobes joined at a corner.
+PolygonWithHoles hullPinchedAtVertex() {
+  return {{{0, 0}, {5, 0}, {5, 5}, {10, 5}, {10, 10}, {5, 10}, {5, 5}, {0, 5}}, {}};
+}
+
+/// A triangular hole whose apex (5, 0) lies on the hull's bottom edge.
+PolygonWithHoles holeTouchingHullEdge() {
+  return {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{5, 0}, {3, 4}, {7, 4}}}};
+}
+
+TEST(BoundaryGrid, SegmentsAgainstOneHole) {
+  const BoundaryGrid grid(squareWithHole());
+  EXPECT_TRUE(grid.segmentInside({1, 1}, {9, 1}));
+  EXPECT_FALSE(grid.segmentInside({1, 5}, {9, 5}));
+  EXPECT_FALSE(grid.segmentInside({1, 3}, {9, 7}));
+  // Along the hole's edge and beyond its vertices; along the hull's edge.
+  EXPECT_TRUE(grid.segmentInside({4, 1}, {4, 9}));
+  EXPECT_TRUE(grid.segmentInside({0, 0}, {10, 0}));
+  EXPECT_TRUE(grid.segmentInside({0, 0}, {0, 10}));
+  // Touching the hole at one corner only (from outside it) is inside.
+  EXPECT_TRUE(grid.segmentInside({2, 6}, {6, 2}));
+  EXPECT_TRUE(grid.segmentInside({3, 5}, {5, 3}));
+  EXPECT_TRUE(grid.segmentInside({3, 5}, {5, 7}));
+  EXPECT_TRUE(grid.segmentInside({2, 4}, {6, 8}));
+  EXPECT_TRUE(grid.segmentInside({2, 8}, {4, 6}));  // ends at a corner
+  EXPECT_TRUE(grid.segmentInside({2, 4}, {4, 2}));
+  // Through two opposite corners, or just past one, crosses the hole.
+  EXPECT_FALSE(grid.segmentInside({2, 8}, {8, 2}));
+  EXPECT_FALSE(grid.segmentInside({1, 1}, {9, 9}));
+  EXPECT_FALSE(grid.segmentInside({1, 7}, {9, 3}));
+  EXPECT_FALSE(grid.segmentInside({3, 5.001}, {5, 3.001}));
+}
+
+TEST(BoundaryGrid, BoundaryEndsGoInOnlyOnTheFreeSide) {
+  const BoundaryGrid grid(squareWithHole());
+  // From a point on the hole's left edge: outwards is free, inwards is not.
+  EXPECT_TRUE(grid.segmentInside({4, 5}, {1, 5}));
+  EXPECT_FALSE(grid.segmentInside({4, 5}, {5, 5.5}));
+  EXPECT_FALSE(grid.segmentInside({4, 5}, {6, 5}));  // both ends on the hole
+  EXPECT_TRUE(grid.segmentInside({4, 5}, {4, 6}));   // along its edge
+  // From a corner of the hole.
+  EXPECT_TRUE(grid.segmentInside({4, 4}, {1, 1}));
+  EXPECT_TRUE(grid.segmentInside({4, 4}, {9, 4}));
+  EXPECT_FALSE(grid.segmentInside({4, 4}, {6, 6}));
+  // Hull corner to hull corner across the hole, and along the hull.
+  EXPECT_FALSE(grid.segmentInside({0, 0}, {10, 10}));
+  EXPECT_TRUE(grid.segmentInside({0, 0}, {10, 0}));
+  // Boundary points a rounding error off the boundary behave like boundary points.
+  EXPECT_TRUE(grid.segmentInside({4.0 - 1e-13, 5}, {1, 9}));
+  EXPECT_TRUE(grid.segmentInside({10.0 + 1e-13, 5}, {1, 9}));
+}
+
+TEST(BoundaryGrid, ContainsAndContacts) {
+  const BoundaryGrid grid(squareWithHole());
+  EXPECT_TRUE(grid.contains({1, 1}));
+  EXPECT_TRUE(grid.contains({4, 5}));
+  EXPECT_FALSE(grid.contains({5, 5}));
+  EXPECT_FALSE(grid.contains({-1, 5}));
+  EXPECT_FALSE(grid.contains({std::numeric_limits<double>::quiet_NaN(), 5}));
+  EXPECT_EQ(grid.contactOf({1, 1}).cluster, -1);
+  EXPECT_TRUE(grid.contactOf({1, 1}).edges.empty());
+  EXPECT_EQ(grid.contactOf({4, 5}).edges.size(), 1u);
+  const BoundaryGrid::Contact corner = grid.contactOf({6, 6});
+  ASSERT_GE(corner.cluster, 0);
+  EXPECT_EQ(grid.clusterPosition(corner.cluster), Point2(6, 6));
+  // The hole's four corners are the only bends (the hull is convex).
+  EXPECT_EQ(grid.bendClusters().size(), 4u);
+}
+
+TEST(BoundaryGrid, PinchBetweenTwoHoles) {
+  const BoundaryGrid grid(holesTouchingAtVertex());
+  // Through the pinch from free quadrant to free quadrant: inside.
+  EXPECT_TRUE(grid.segmentInside({2, 8}, {8, 2}));
+  EXPECT_TRUE(grid.segmentInside({1, 9}, {9, 1}));
+  // Through the pinch from hole to hole, and beside it through a hole.
+  EXPECT_FALSE(grid.segmentInside({1, 1}, {9, 9}));
+  EXPECT_FALSE(grid.segmentInside({3, 8}, {8, 3}));
+  // From the pinch point itself.
+  EXPECT_TRUE(grid.segmentInside({5, 5}, {9, 1}));
+  EXPECT_TRUE(grid.segmentInside({5, 5}, {1, 9}));
+  EXPECT_FALSE(grid.segmentInside({5, 5}, {9, 9}));
+  EXPECT_FALSE(grid.segmentInside({5, 5}, {1, 1}));
+  // Along the holes' edges through the pinch.
+  EXPECT_TRUE(grid.segmentInside({5, 1}, {5, 9}));
+  EXPECT_TRUE(grid.segmentInside({1, 5}, {9, 5}));
+  const std::vector<int> bends = grid.bendClusters();
+  EXPECT_TRUE(std::any_of(bends.begin(), bends.end(),
+                          [&](int k) { return grid.clusterPosition(k) == Point2(5, 5); }));
+}
+
+TEST(BoundaryGrid, PinchOfTheHull) {
+  const BoundaryGrid grid(hullPinchedAtVertex());
+  EXPECT_TRUE(grid.segmentInside({1, 1}, {9, 9}));
+  EXPECT_TRUE(grid.segmentInside({5, 5}, {9, 6}));
+  EXPECT_TRUE(grid.segmentInside({4, 1}, {5, 5}));
+  EXPECT_FALSE(grid.segmentInside({1, 4}, {6, 9}));
+  EXPECT_FALSE(grid.segmentInside({4, 1}, {9, 6}));  // passes (5, 2): outside
+  EXPECT_FALSE(grid.contains({2, 8}));
+  const std::vector<int> bends = grid.bendClusters();
+  ASSERT_EQ(bends.size(), 1u);
+  EXPECT_EQ(grid.clusterPosition(bends[0]), Point2(5, 5));
+}
+
+TEST(BoundaryGrid, HoleTouchingTheHullEdge) {
+  const BoundaryGrid grid(holeTouchingHullEdge());
+  EXPECT_FALSE(grid.segmentInside({1, 1}, {9, 1}));
+  EXPECT_TRUE(grid.segmentInside({1, 1}, {5, 0}));
+  EXPECT_TRUE(grid.segmentInside({5, 0}, {9, 1}));
+  EXPECT_FALSE(grid.segmentInside({5, 0}, {5, 2}));
+  // Along the hull edge through the touching point: on the boundary, inside.
+  EXPECT_TRUE(grid.segmentInside({1, 0}, {9, 0}));
+  const std::vector<int> bends = grid.bendClusters();
+  EXPECT_TRUE(std::any_of(bends.begin(), bends.end(),
+                          [&](int k) { return grid.clusterPosition(k) == Point2(5, 0); }));
+}
+
+TEST(BoundaryGrid, OrientationAndRepeatedVerticesAreNormalized) {
+  PolygonWithHoles polygon = squareWithHole();
+  std::reverse(polygon.hull.begin(), polygon.hull.end());
+  std::reverse(polygon.holes[0].begin(), polygon.holes[0].end());
+  polygon.hull.insert(polygon.hull.begin() + 1, polygon.hull[1]);
+  const BoundaryGrid grid(polygon);
+  EXPECT_GT(signedArea(grid.polygon().hull), 0.0);
+  EXPECT_LT(signedArea(grid.polygon().holes[0]), 0.0);
+  EXPECT_EQ(grid.polygon().hull.size(), 4u);
+  EXPECT_FALSE(grid.segmentInside({1, 5}, {9, 5}));
+  EXPECT_TRUE(grid.segmentInside({1, 1}, {9, 1}));
+}
+
+TEST(BoundaryGrid, RejectsDegenerateRings) {
+  EXPECT_THROW(BoundaryGrid({{{0, 0}, {1, 0}}, {}}), InvalidInputError);
+  EXPECT_THROW(BoundaryGrid({{{0, 0}, {1, 0}, {2, 0}}, {}}), InvalidInputError);
+  EXPECT_THROW(BoundaryGrid({{{0, 0}, {1, 0}, {0, std::numeric_limits<double>::infinity()}}, {}}),
+               InvalidInputError);
+  EXPECT_THROW(BoundaryGrid({{{0, 0}, {10, 0}, {10, 10}}, {{{1, 1}, {1, 1}, {2, 2}}}}),
+               InvalidInputError);
+}
+
+TEST(BoundaryGrid, AgreesWithPlanarGeometryOnRandomSegments) {
+  std::mt19937 rng(11);
+  int disagreements = 0;
+  int blocked = 0;
+  int total = 0;
+  for (int map_index = 0; map_index < 30; ++map_index) {
+    const PolygonWithHoles map = testing::randomMap(rng, 100.0, 15, 1.0);
+    const BoundaryGrid grid(map);
+    std::uniform_real_distribution<double> coordinate(-50.0, 50.0);
+    std::vector<Point2> points;
+    while (points.size() < 60) {
+      const Point2 p(coordinate(rng), coordinate(rng));
+      if (contains(map, p)) points.push_back(p);
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      for (std::size_t j = i + 1; j < points.size(); ++j) {
+        const bool ours = grid.segmentInside(points[i], points[j]);
+        const bool reference = segmentInside(map, points[i], points[j], 0.0);
+        disagreements += ours != reference;
+        blocked += !ours;
+        ++total;
+      }
+    }
+  }
+  EXPECT_EQ(disagreements, 0);
+  EXPECT_GT(blocked, total / 10);
+}
+
+}  // namespace
+}  // namespace kinematic_coverage

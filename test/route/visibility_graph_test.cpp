@@ -1,0 +1,302 @@
+#include "polygon_coverage_ros_bridge/route/visibility_graph.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <ctime>
+#include <iostream>
+#include <memory>
+#include <random>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "test/route/route_test_maps.h"
+#include "test/support/random_polygons.h"
+
+namespace kinematic_coverage {
+namespace {
+
+SegmentCost costOf(const std::string& cost_function) {
+  PlannerParameters parameters;
+  parameters.cost_function = cost_function;
+  return SegmentCost(parameters);
+}
+
+PolygonWithHoles squareWithHole() {
+  return {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{4, 4}, {4, 6}, {6, 6}, {6, 4}}}};
+}
+
+void expectPathInside(const PolygonWithHoles& area, const std::vector<Point2>& path) {
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    EXPECT_TRUE(segmentInside(area, path[i - 1], path[i], 1e-6))
+        << "leg " << i << " from " << path[i - 1].transpose() << " to " << path[i].transpose();
+  }
+}
+
+TEST(VisibilityGraph, AroundOneSquareHoleIsAnalytic) {
+  const PolygonWithHoles area = squareWithHole();
+  const VisibilityGraph graph(area, costOf("distance"));
+  EXPECT_EQ(graph.nodeCount(), 4u);
+  const std::vector<Point2> path = graph.shortestPath({2, 5}, {8, 5});
+  ASSERT_EQ(path.size(), 4u);
+  EXPECT_EQ(path.front(), Point2(2, 5));
+  EXPECT_EQ(path.back(), Point2(8, 5));
+  EXPECT_NEAR(std::abs(path[1].y() - 5.0), 1.0, 1e-12);
+  EXPECT_NEAR(pathLength(path), 2.0 + 2.0 * std::sqrt(5.0), 1e-12);
+  EXPECT_NEAR(graph.cost({2, 5}, {8, 5}), 2.0 + 2.0 * std::sqrt(5.0), 1e-12);
+  expectPathInside(area, path);
+  // Visible ends go straight.
+  EXPECT_EQ(graph.shortestPath({1, 1}, {9, 2}).size(), 2u);
+}
+
+TEST(VisibilityGraph, TimeCostStopsAtEveryBend) {
+  const VisibilityGraph graph(squareWithHole(), costOf("time"));
+  const SegmentCost time = costOf("time");
+  const std::vector<Point2> path = graph.shortestPath({2, 5}, {8, 5});
+  EXPECT_NEAR(graph.cost({2, 5}, {8, 5}), time.pathCost(path), 1e-9);
+  EXPECT_NEAR(graph.cost({2, 5}, {8, 5}), 2.0 * time.ofLength(std::sqrt(5.0)) + time.ofLength(2.0),
+              1e-9);
+}
+
+TEST(VisibilityGraph, InAUShapedPolygon) {
+  const PolygonWithHoles area{
+      {{0, 0}, {10, 0}, {10, 10}, {7, 10}, {7, 3}, {3, 3}, {3, 10}, {0, 10}}, {}};
+  const VisibilityGraph graph(area, costOf("distance"));
+  EXPECT_EQ(graph.nodeCount(), 2u);
+  const std::vector<Point2> path = graph.shortestPath({1.5, 9}, {8.5, 9});
+  const std::vector<Point2> expected = {{1.5, 9}, {3, 3}, {7, 3}, {8.5, 9}};
+  ASSERT_EQ(path.size(), expected.size());
+  for (std::size_t i = 0; i < path.size(); ++i)
+    EXPECT_NEAR((path[i] - expected[i]).norm(), 0, 1e-12);
+  EXPECT_NEAR(graph.cost({1.5, 9}, {8.5, 9}), 4.0 + 2.0 * std::hypot(1.5, 6.0), 1e-12);
+  // From the reflex vertices themselves, and along the inner walls.
+  EXPECT_NEAR(graph.cost({3, 3}, {8.5, 9}), 4.0 + std::hypot(1.5, 6.0), 1e-12);
+  EXPECT_NEAR(graph.cost({3, 10}, {7, 10}), 7.0 + 4.0 + 7.0, 1e-12);
+  expectPathInside(area, graph.shortestPath({3, 10}, {7, 10}));
+}
+
+TEST(VisibilityGraph, ThroughAPinchBetweenTwoHoles) {
+  const PolygonWithHoles area{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                              {{{2, 2}, {2, 5}, {5, 5}, {5, 2}}, {{5, 5}, {5, 8}, {8, 8}, {8, 5}}}};
+  const VisibilityGraph graph(area, costOf("distance"));
+  EXPECT_EQ(graph.shortestPath({2, 8}, {8, 2}).size(), 2u);
+  // From below-left of the pinch to up-left: around the left hole or through the pinch.
+  const double through_pinch = std::hypot(4.0, 1.0) + std::hypot(1.0, 3.0);
+  EXPECT_NEAR(graph.cost({1, 4}, {4, 8}), std::hypot(3.0, 4.0), 1e-12);  // straight
+  EXPECT_NEAR(graph.cost({9, 4}, {6, 2}), std::hypot(3.0, 2.0), 1e-12);
+  EXPECT_NEAR(graph.cost({1, 6}, {6, 2}), through_pinch, 1e-12);
+  expectPathInside(area, graph.shortestPath({1, 6}, {6, 2}));
+}
+
+TEST(VisibilityGraph, ThroughAPinchOfTheHull) {
+  const PolygonWithHoles area{{{0, 0}, {5, 0}, {5, 5}, {10, 5}, {10, 10}, {5, 10}, {5, 5}, {0, 5}},
+                              {}};
+  const VisibilityGraph graph(area, costOf("distance"));
+  const std::vector<Point2> path = graph.shortestPath({1, 4}, {6, 9});
+  ASSERT_EQ(path.size(), 3u);
+  EXPECT_EQ(path[1], Point2(5, 5));
+  EXPECT_NEAR(pathLength(path), 2.0 * std::sqrt(17.0), 1e-12);
+  EXPECT_EQ(graph.shortestPath({1, 1}, {9, 9}).size(), 2u);
+}
+
+TEST(VisibilityGraph, ThroughAHoleTouchingTheHull) {
+  const PolygonWithHoles area{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{5, 0}, {3, 4}, {7, 4}}}};
+  const VisibilityGraph graph(area, costOf("distance"));
+  const std::vector<Point2> path = graph.shortestPath({1, 1}, {9, 1});
+  ASSERT_EQ(path.size(), 3u);
+  EXPECT_EQ(path[1], Point2(5, 0));
+  EXPECT_NEAR(pathLength(path), 2.0 * std::sqrt(17.0), 1e-12);
+  // High enough, going over the hole is shorter.
+  EXPECT_NEAR(graph.cost({1, 4}, {9, 4}), 8.0, 1e-12);
+}
+
+TEST(VisibilityGraph, BoundaryPointsAndNodesAreQueryPoints) {
+  const PolygonWithHoles area = squareWithHole();
+  const VisibilityGraph graph(area, costOf("distance"));
+  EXPECT_NEAR(graph.cost({4, 5}, {6, 5}), 4.0, 1e-12);
+  EXPECT_NEAR(graph.cost({4, 4}, {6, 6}), 4.0, 1e-12);
+  EXPECT_NEAR(graph.cost({4, 4}, {6, 4}), 2.0, 1e-12);
+  EXPECT_NEAR(graph.cost({0, 5}, {10, 5}), 2.0 * std::hypot(4.0, 1.0) + 2.0, 1e-12);
+  expectPathInside(area, graph.shortestPath({4, 5}, {6, 5}));
+  expectPathInside(area, graph.shortestPath({4, 4}, {6, 6}));
+  // A point a rounding error outside the boundary counts as on it.
+  EXPECT_NEAR(graph.cost({4.0 - 1e-14, 5}, {6.0 + 1e-14, 5}), 4.0, 1e-9);
+}
+
+TEST(VisibilityGraph, DegenerateQueries) {
+  const VisibilityGraph graph(squareWithHole(), costOf("waypoints"));
+  EXPECT_EQ(graph.shortestPath({1, 1}, {1, 1}), std::vector<Point2>{Point2(1, 1)});
+  EXPECT_EQ(graph.cost({1, 1}, {1, 1}), 0.0);
+  EXPECT_EQ(graph.cost({1, 5}, {9, 5}), 3.0);
+  EXPECT_THROW(graph.shortestPath({5, 5}, {1, 1}), InvalidInputError);
+  EXPECT_THROW(graph.cost({1, 1}, {11, 1}), InvalidInputError);
+  EXPECT_THROW(graph.costMatrix({{1, 1}}, {{1, 1}, {-3, 1}}), InvalidInputError);
+  try {
+    graph.cost({1, 1}, {11, 2});
+  } catch (const InvalidInputError& error) {
+    EXPECT_NE(std::string(error.what()).find("(11, 2)"), std::string::npos) << error.what();
+  }
+  EXPECT_THROW(graph.cost({std::nan(""), 1}, {1, 1}), InvalidInputError);
+  EXPECT_TRUE(graph.costMatrix({}, {{1, 1}}).empty());
+}
+
+TEST(VisibilityGraph, ConvexAreaHasNoNodes) {
+  const PolygonWithHoles triangle{{{0, 0}, {4, 0}, {0, 3}}, {}};
+  const VisibilityGraph graph(triangle, costOf("distance"));
+  EXPECT_EQ(graph.nodeCount(), 0u);
+  EXPECT_NEAR(graph.cost({0, 0}, {4, 0}), 4.0, 1e-12);
+  EXPECT_NEAR(graph.cost({4, 0}, {0, 3}), 5.0, 1e-12);
+  const std::vector<double> matrix = graph.costMatrix({{0, 0}, {1, 1}}, {{4, 0}, {1, 1}});
+  ASSERT_EQ(matrix.size(), 4u);
+  EXPECT_NEAR(matrix[0], 4.0, 1e-12);
+  EXPECT_NEAR(matrix[3], 0.0, 1e-12);
+}
+
+TEST(VisibilityGraph, RejectsDegenerateArea) {
+  EXPECT_THROW(VisibilityGraph(PolygonWithHoles{{{0, 0}, {1, 1}}, {}}, costOf("distance")),
+               InvalidInputError);
+}
+
+/// Properties on one random map, for one cost function.
+/// Checks the routes between query points on `area`; returns how many needed a detour.
+int checkRandomMap(const PolygonWithHoles& area, const std::string& cost_function,
+                   std::mt19937& rng, bool compare_with_brute_force) {
+  const SegmentCost segment_cost = costOf(cost_function);
+  VisibilityGraph graph(area, segment_cost);
+  const std::vector<Point2> points = testing::queryPoints(rng, area, 14, 8, 4);
+  std::unique_ptr<testing::BruteForceRouter> brute_force;
+  if (compare_with_brute_force) {
+    brute_force = std::make_unique<testing::BruteForceRouter>(area, points, 1e-9);
+  }
+  std::vector<std::size_t> ids;
+  for (const Point2& p : points) ids.push_back(graph.addQueryPoint(p));
+  const std::vector<double> matrix = graph.costMatrix(points, points);
+  const double scale = 1e-9 * 200.0;
+  int detours = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const Point2& a = points[i];
+      const Point2& b = points[j];
+      const std::vector<Point2> path = graph.shortestPath(a, b);
+      const double cost = graph.cost(a, b);
+      if (path.empty()) {
+        ADD_FAILURE() << "empty path";
+        continue;
+      }
+      detours += path.size() > 2;
+      EXPECT_EQ(path.front(), a);
+      EXPECT_EQ(path.back(), b);
+      expectPathInside(area, path);
+      EXPECT_NEAR(segment_cost.pathCost(path), cost, scale * (1 + cost)) << cost_function;
+      EXPECT_NEAR(matrix[i * points.size() + j], cost, scale * (1 + cost)) << cost_function;
+      EXPECT_NEAR(graph.queryCost(ids[i], ids[j]), cost, scale * (1 + cost)) << cost_function;
+      EXPECT_NEAR(segment_cost.pathCost(graph.queryPath(ids[i], ids[j])), cost, scale * (1 + cost));
+      EXPECT_NEAR(graph.cost(b, a), cost, scale * (1 + cost)) << cost_function;
+      const double straight = segment_cost.of(a, b);
+      EXPECT_GE(cost, straight - scale * (1 + cost));
+      if (graph.visible(a, b)) EXPECT_NEAR(cost, straight, scale * (1 + cost));
+      if (brute_force != nullptr && i < j) {
+        EXPECT_NEAR(cost, brute_force->distance(i, j), 1e-6 * (1 + cost))
+            << a.transpose() << " to " << b.transpose();
+      }
+    }
+  }
+  return detours;
+}
+
+TEST(VisibilityGraph, RandomStarMapsHaveConsistentInsideRoutes) {
+  std::mt19937 rng(2024);
+  int detours = 0;
+  for (int map_index = 0; map_index < 12; ++map_index) {
+    const PolygonWithHoles area = testing::randomMap(rng, 100.0, 15, 1.0);
+    SCOPED_TRACE("star map " + std::to_string(map_index));
+    detours += checkRandomMap(area, "distance", rng, true);
+    detours += checkRandomMap(area, map_index % 2 == 0 ? "time" : "waypoints", rng, false);
+  }
+  EXPECT_GT(detours, 500);
+}
+
+TEST(VisibilityGraph, RandomConvexHoleMapsHaveConsistentInsideRoutes) {
+  std::mt19937 rng(99);
+  int detours = 0;
+  for (int map_index = 0; map_index < 12; ++map_index) {
+    const PolygonWithHoles area = testing::convexHolesMap(rng, 100.0, 15, 3, 7, 0.5);
+    SCOPED_TRACE("convex-hole map " + std::to_string(map_index));
+    detours += checkRandomMap(area, "distance", rng, true);
+    detours += checkRandomMap(area, map_index % 2 == 0 ? "waypoints" : "time", rng, false);
+  }
+  EXPECT_GT(detours, 500);
+}
+
+TEST(VisibilityGraph, CheckerboardOfHolesTouchingAtCorners) {
+  // Square holes touching diagonally: every inner corner is a pinch point that routes
+  // may pass through; compared with brute force over all vertices.
+  PolygonWithHoles area;
+  area.hull = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  for (int i = 2; i < 8; ++i) {
+    for (int j = 2; j < 8; ++j) {
+      if ((i + j) % 2 != 0) continue;
+      area.holes.push_back(
+          {{double(i), double(j)}, {double(i), j + 1.0}, {i + 1.0, j + 1.0}, {i + 1.0, double(j)}});
+    }
+  }
+  std::mt19937 rng(3);
+  int detours = 0;
+  for (int round = 0; round < 3; ++round) {
+    detours += checkRandomMap(area, "distance", rng, true);
+    detours += checkRandomMap(area, "waypoints", rng, false);
+  }
+  EXPECT_GT(detours, 100);
+  const VisibilityGraph graph(area, costOf("distance"));
+  // Straight along a diagonal of pinch points, from free square to free square.
+  EXPECT_EQ(graph.shortestPath({2.5, 3.5}, {6.5, 7.5}).size(), 2u);
+  EXPECT_NEAR(graph.cost({2.5, 3.5}, {6.5, 7.5}), 4.0 * std::sqrt(2.0), 1e-12);
+}
+
+TEST(VisibilityGraph, TimingOfTheTransitionMatrix) {
+  // The planner's load: ~800 sweep patterns on a 100 m map with 15 holes of 4-7
+  // vertices, so ~1600 distinct points and ~640 000 costs. Printed, not asserted.
+  std::mt19937 rng(5);
+  const PolygonWithHoles area = testing::convexHolesMap(rng, 100.0, 15, 4, 7, 1.0);
+  ASSERT_EQ(area.holes.size(), 15u);
+  const std::vector<Point2> points = testing::queryPoints(rng, area, 800, 800, 0);
+  const std::vector<Point2> sources(points.begin(), points.begin() + 800);
+  const std::vector<Point2> targets(points.begin() + 800, points.end());
+  // Processor time, so that other processes on the machine do not count.
+  const std::clock_t t0 = std::clock();
+  const VisibilityGraph graph(area, costOf("time"));
+  const std::clock_t t1 = std::clock();
+  const std::vector<double> matrix = graph.costMatrix(sources, targets);
+  const std::clock_t t2 = std::clock();
+  const std::vector<double> square = graph.costMatrix(sources, sources);
+  const std::clock_t t3 = std::clock();
+  for (int i = 0; i < 2000; ++i) graph.shortestPath(sources[i % 800], sources[(i * 7 + 3) % 800]);
+  const std::clock_t t4 = std::clock();
+  auto ms = [](std::clock_t from, std::clock_t to) {
+    return 1e3 * static_cast<double>(to - from) / CLOCKS_PER_SEC;
+  };
+  std::cout << "[ timing ] " << graph.nodeCount() << " nodes, graph " << ms(t0, t1) << " ms; "
+            << matrix.size() << " costs between " << sources.size() + targets.size() << " points "
+            << ms(t1, t2) << " ms; " << square.size() << " costs among " << sources.size()
+            << " points " << ms(t2, t3) << " ms; 2000 single shortestPath queries " << ms(t3, t4)
+            << " ms (processor time)" << std::endl;
+  EXPECT_EQ(matrix.size(), 640000u);
+  for (double c : matrix) ASSERT_TRUE(std::isfinite(c));
+}
+
+TEST(VisibilityGraph, TimingOfALargeHull) {
+  // A lake-like star hull with 2000 vertices: about half of them are reflex nodes.
+  std::mt19937 rng(8);
+  PolygonWithHoles area;
+  area.hull = testing::randomStarRing(rng, {0, 0}, 180.0, 200.0, 2000);
+  const std::clock_t t0 = std::clock();
+  const VisibilityGraph graph(area, costOf("time"));
+  const std::clock_t t1 = std::clock();
+  std::cout << "[ timing ] " << area.hull.size() << "-vertex hull, " << graph.nodeCount()
+            << " nodes, graph " << 1e3 * static_cast<double>(t1 - t0) / CLOCKS_PER_SEC
+            << " ms (processor time)" << std::endl;
+  EXPECT_GT(graph.nodeCount(), 100u);
+}
+
+}  // namespace
+}  // namespace kinematic_coverage

@@ -1,0 +1,80 @@
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "trajectory_generation_tools/coverage/reachable_area.h"
+
+namespace kinematic_coverage {
+namespace {
+
+const FrustumSensor& requireValid(const FrustumSensor& sensor) {
+  if (!(sensor.width() > 0.0) || !std::isfinite(sensor.width()) || !(sensor.length() >= 0.0) ||
+      !std::isfinite(sensor.length())) {
+    std::ostringstream message;
+    message << "coverage: footprint " << sensor.width() << " m x " << sensor.length()
+            << " m must have a finite width > 0 and a finite length >= 0";
+    throw InvalidInputError(message.str());
+  }
+  return sensor;
+}
+
+}  // namespace
+
+CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
+                                     const PolygonWithHoles& offset_free_area,
+                                     const FrustumSensor& sensor,
+                                     const RasterResolution& resolution)
+    : sensor_(requireValid(sensor)),
+      raster_(CoverageRaster::covering(free_area, resolution)),
+      free_area_(raster_.rasterize(free_area)),
+      offset_free_area_(raster_.rasterize(offset_free_area)) {
+  if (CoverageRaster::countCells(offset_free_area_) == 0) {
+    std::ostringstream message;
+    message << "coverage: the offset free area covers no cell of the " << raster_.cellSize()
+            << " m raster";
+    throw InvalidInputError(message.str());
+  }
+  reachable_area_ =
+      kinematic_coverage::reachableArea(raster_, free_area_, offset_free_area_, sensor_.length());
+}
+
+SeenArea CoverageEvaluator::seeTrajectory(const std::vector<Pose2>& poses) const {
+  SeenArea seen(raster_);
+  seen.addTrajectory(poses, sensor_);
+  return seen;
+}
+
+SeenArea CoverageEvaluator::seeWaypointPath(const std::vector<Pose2>& waypoints,
+                                            double rotation_step) const {
+  SeenArea seen(raster_);
+  seen.addWaypointPath(waypoints, sensor_, rotation_step);
+  return seen;
+}
+
+CoverageReport CoverageEvaluator::report(const SeenArea& seen) const {
+  if (seen.raster().cellCount() != raster_.cellCount() ||
+      seen.raster().cellSize() != raster_.cellSize() ||
+      seen.raster().origin() != raster_.origin()) {
+    throw InvalidInputError("coverage: the seen area was made on another raster");
+  }
+  CoverageReport result;
+  result.coverage_percent = seen.coveragePercent(free_area_);
+  result.coverage_loss_percent = 100.0 - result.coverage_percent;
+  result.reachable_coverage_percent = seen.coveragePercent(reachable_area_);
+  return result;
+}
+
+double waypointPathReachableCoveragePercent(const PolygonWithHoles& free_area,
+                                            const PolygonWithHoles& offset_free_area,
+                                            const FrustumSensor& sensor,
+                                            const std::vector<Pose2>& waypoints,
+                                            const RasterResolution& resolution,
+                                            double rotation_step) {
+  const CoverageEvaluator evaluator(free_area, offset_free_area, sensor, resolution);
+  return evaluator.seeWaypointPath(waypoints, rotation_step)
+      .coveragePercent(evaluator.reachableArea());
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,68 @@
+#pragma once
+
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "trajectory_generation_tools/coverage/coverage_raster.h"
+#include "trajectory_generation_tools/coverage/seen_area.h"
+#include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
+
+namespace kinematic_coverage {
+
+/// The coverage figures of one trajectory (INTERFACE sections 3 and 6).
+struct CoverageReport {
+  /// Seen share of the free area, percent.
+  double coverage_percent = 0.0;
+  /// 100 - coverage_percent: the share of the free area never seen (thesis's "coverage loss").
+  double coverage_loss_percent = 0.0;
+  /// Seen share of the reachable area, percent ("covers X %" in requirements).
+  double reachable_coverage_percent = 0.0;
+};
+
+/// Evaluates what a sensor sees of a map: rasterizes the free area, the offset free area
+/// and the reachable area once, then measures trajectories or waypoint paths on them.
+class CoverageEvaluator {
+ public:
+  /// Prepares the masks on a raster chosen for the free area at `resolution`.
+  /// Throws InvalidInputError for degenerate or non-finite areas, a sensor whose width is
+  /// not > 0 or whose length is not >= 0, or an offset free area that covers no cell.
+  CoverageEvaluator(const PolygonWithHoles& free_area, const PolygonWithHoles& offset_free_area,
+                    const FrustumSensor& sensor, const RasterResolution& resolution = {});
+
+  const CoverageRaster& raster() const { return raster_; }
+  const CellMask& freeArea() const { return free_area_; }
+  const CellMask& offsetFreeArea() const { return offset_free_area_; }
+  const CellMask& reachableArea() const { return reachable_area_; }
+
+  /// What the sensor sees along a sampled trajectory (INTERFACE section 6).
+  SeenArea seeTrajectory(const std::vector<Pose2>& poses) const;
+
+  /// What the sensor sees along a waypoint path driven as straight legs with in-place
+  /// rotations between them (see SeenArea::addWaypointPath).
+  SeenArea seeWaypointPath(const std::vector<Pose2>& waypoints,
+                           double rotation_step = kDefaultRotationStep) const;
+
+  /// The coverage figures of a seen area made on this evaluator's raster.
+  CoverageReport report(const SeenArea& seen) const;
+
+ private:
+  FrustumSensor sensor_;
+  CoverageRaster raster_;
+  CellMask free_area_;
+  CellMask offset_free_area_;
+  CellMask reachable_area_;
+};
+
+/// Seen share of the reachable area, in percent, of the footprints swept along a waypoint
+/// path (straight legs, in-place rotations swept in steps of `rotation_step`); the check of
+/// the planner's tests that a plan "covers X %". Robust to duplicate waypoints and
+/// zero-length legs. Throws InvalidInputError as CoverageEvaluator and waypointPathPoses do.
+double waypointPathReachableCoveragePercent(const PolygonWithHoles& free_area,
+                                            const PolygonWithHoles& offset_free_area,
+                                            const FrustumSensor& sensor,
+                                            const std::vector<Pose2>& waypoints,
+                                            const RasterResolution& resolution = {},
+                                            double rotation_step = kDefaultRotationStep);
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,247 @@
+#include "trajectory_generation_tools/coverage/coverage_raster.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+
+namespace kinematic_coverage {
+namespace {
+
+/// Largest coordinate magnitude (metres) accepted, far beyond any map, so that no
+/// difference of coordinates overflows.
+constexpr double kMaxCoordinate = 1e15;
+
+/// Smallest cell budget: any region fits a grid of 3 x 3 cells (one cell plus the margin
+/// each side), so that growing the cell size always ends.
+constexpr std::size_t kMinCells = 9;
+
+/// Factor by which an automatic cell size grows until its grid fits the cell budget.
+constexpr double kCellSizeGrowth = 1.01;
+
+void requireFinite(const Ring& ring, const char* what) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    if (!(std::abs(ring[i].x()) <= kMaxCoordinate) || !(std::abs(ring[i].y()) <= kMaxCoordinate)) {
+      std::ostringstream message;
+      message << "coverage raster: " << what << " vertex " << i
+              << " has a non-finite coordinate or one beyond " << kMaxCoordinate << " m";
+      throw InvalidInputError(message.str());
+    }
+  }
+}
+
+void requireFinite(const PolygonWithHoles& polygon) {
+  requireFinite(polygon.hull, "hull");
+  for (const Ring& hole : polygon.holes) requireFinite(hole, "hole");
+}
+
+/// Orders an edge's ends by y (then x), so that crossings do not depend on edge direction.
+bool lowerFirst(const Point2& p, const Point2& q) {
+  return p.y() < q.y() || (p.y() == q.y() && p.x() < q.x());
+}
+
+/// x where the edge from `a` up to `b` (a.y <= y < b.y) crosses the line at height y;
+/// interpolated by the edge's share below y, which stays in [0, 1] whatever the slope.
+double crossingAt(const Point2& a, const Point2& b, double y) {
+  return a.x() + (y - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+}
+
+double perimeter(const Ring& ring) {
+  double length = 0.0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i)
+    length += (ring[(i + 1) % n] - ring[i]).norm();
+  return length;
+}
+
+/// Cells per axis of a grid of `cell_size` over `extent` plus one cell each side, as a
+/// double so that absurd sizes are caught before any integer conversion.
+double cellsAlong(double extent, double cell_size) { return std::ceil(extent / cell_size) + 2.0; }
+
+}  // namespace
+
+CoverageRaster::CoverageRaster(const Point2& origin, double cell_size, int columns, int rows)
+    : origin_(origin), cell_size_(cell_size), columns_(columns), rows_(rows) {
+  if (!std::isfinite(origin.x()) || !std::isfinite(origin.y())) {
+    throw InvalidInputError("coverage raster: the origin has a non-finite coordinate");
+  }
+  if (!(cell_size > 0.0) || !std::isfinite(cell_size)) {
+    std::ostringstream message;
+    message << "coverage raster: cell size " << cell_size << " must be finite and > 0";
+    throw InvalidInputError(message.str());
+  }
+  if (columns <= 0 || rows <= 0) {
+    std::ostringstream message;
+    message << "coverage raster: a grid of " << columns << " x " << rows << " cells is empty";
+    throw InvalidInputError(message.str());
+  }
+}
+
+CoverageRaster CoverageRaster::covering(const PolygonWithHoles& region,
+                                        const RasterResolution& resolution) {
+  requireFinite(region);
+  if (region.hull.size() < 3) {
+    throw InvalidInputError("coverage raster: the region's hull has fewer than 3 vertices");
+  }
+  const double region_area = kinematic_coverage::area(region);
+  if (!(region_area > 0.0)) {
+    throw InvalidInputError("coverage raster: the region has no area");
+  }
+  if (resolution.max_cells < kMinCells) {
+    std::ostringstream message;
+    message << "coverage raster: max_cells " << resolution.max_cells << " must be at least "
+            << kMinCells;
+    throw InvalidInputError(message.str());
+  }
+  Point2 low = region.hull.front();
+  Point2 high = region.hull.front();
+  for (const Point2& p : region.hull) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  const Point2 extent = high - low;
+  const double budget = static_cast<double>(resolution.max_cells);
+  const auto cells = [&](double h) {
+    return cellsAlong(extent.x(), h) * cellsAlong(extent.y(), h);
+  };
+
+  double cell_size = resolution.cell_size;
+  if (cell_size != 0.0) {
+    if (!(cell_size > 0.0) || !std::isfinite(cell_size)) {
+      std::ostringstream message;
+      message << "coverage raster: cell size " << cell_size << " must be finite and > 0";
+      throw InvalidInputError(message.str());
+    }
+    if (cells(cell_size) > budget) {
+      std::ostringstream message;
+      message << "coverage raster: cell size " << cell_size << " m needs " << cells(cell_size)
+              << " cells, more than max_cells = " << resolution.max_cells;
+      throw InvalidInputError(message.str());
+    }
+  } else {
+    if (!(resolution.relative_accuracy > 0.0) || !std::isfinite(resolution.relative_accuracy)) {
+      std::ostringstream message;
+      message << "coverage raster: relative accuracy " << resolution.relative_accuracy
+              << " must be finite and > 0";
+      throw InvalidInputError(message.str());
+    }
+    double boundary_length = perimeter(region.hull);
+    for (const Ring& hole : region.holes) boundary_length += perimeter(hole);
+    cell_size = 2.0 * resolution.relative_accuracy * region_area / boundary_length;
+    const double budget_cell_size = std::sqrt(extent.x() * extent.y() / budget);
+    cell_size = std::max(cell_size, budget_cell_size);
+    while (cells(cell_size) > budget) cell_size *= kCellSizeGrowth;
+  }
+  const double columns = cellsAlong(extent.x(), cell_size);
+  const double rows = cellsAlong(extent.y(), cell_size);
+  if (columns > INT_MAX || rows > INT_MAX) {
+    throw InvalidInputError("coverage raster: the grid has too many rows or columns");
+  }
+  return CoverageRaster(low - Point2(cell_size, cell_size), cell_size, static_cast<int>(columns),
+                        static_cast<int>(rows));
+}
+
+Point2 CoverageRaster::cellCentre(std::size_t index) const {
+  const std::size_t columns = static_cast<std::size_t>(columns_);
+  const double column = static_cast<double>(index % columns);
+  const double row = static_cast<double>(index / columns);
+  return origin_ + cell_size_ * Point2(column + 0.5, row + 0.5);
+}
+
+int CoverageRaster::firstRowAtOrAbove(double y) const {
+  const double row = std::ceil((y - origin_.y()) / cell_size_ - 0.5);
+  if (!(row > 0.0)) return 0;  // also NaN
+  return static_cast<int>(std::min(row, static_cast<double>(rows_)));
+}
+
+int CoverageRaster::firstColumnAtOrRightOf(double x) const {
+  const double column = std::ceil((x - origin_.x()) / cell_size_ - 0.5);
+  if (!(column > 0.0)) return 0;  // also NaN
+  return static_cast<int>(std::min(column, static_cast<double>(columns_)));
+}
+
+CellMask CoverageRaster::rasterize(const PolygonWithHoles& polygon) const {
+  requireFinite(polygon);
+  std::vector<const Ring*> rings{&polygon.hull};
+  for (const Ring& hole : polygon.holes) rings.push_back(&hole);
+
+  // Edge table: each edge adds its crossing x to every row whose centre y lies in
+  // [min y, max y) of the edge; first count per row, then fill a flat array.
+  std::vector<std::size_t> row_start(static_cast<std::size_t>(rows_) + 1, 0);
+  const auto forEachCrossing = [&](const auto& visit) {
+    for (const Ring* ring : rings) {
+      for (std::size_t i = 0, n = ring->size(); i < n; ++i) {
+        // From the lower end, so that an edge shared by two rings crosses rows alike.
+        const Point2& a = std::min((*ring)[i], (*ring)[(i + 1) % n], lowerFirst);
+        const Point2& b = std::max((*ring)[i], (*ring)[(i + 1) % n], lowerFirst);
+        if (a.y() == b.y()) continue;
+        const int first = firstRowAtOrAbove(a.y());
+        const int last = firstRowAtOrAbove(b.y());
+        for (int row = first; row < last; ++row) visit(row, crossingAt(a, b, rowCentre(row)));
+      }
+    }
+  };
+  forEachCrossing([&](int row, double) { ++row_start[static_cast<std::size_t>(row) + 1]; });
+  for (std::size_t row = 0; row < static_cast<std::size_t>(rows_); ++row) {
+    row_start[row + 1] += row_start[row];
+  }
+  std::vector<double> crossings(row_start.back());
+  std::vector<std::size_t> fill(row_start.begin(), row_start.end() - 1);
+  forEachCrossing([&](int row, double x) { crossings[fill[static_cast<std::size_t>(row)]++] = x; });
+
+  CellMask mask(cellCount(), 0);
+  for (int row = 0; row < rows_; ++row) {
+    const auto begin = crossings.begin() + static_cast<std::ptrdiff_t>(row_start[row]);
+    const auto end = crossings.begin() + static_cast<std::ptrdiff_t>(row_start[row + 1]);
+    std::sort(begin, end);
+    for (auto it = begin; it + 1 < end; it += 2) {
+      const int first = firstColumnAtOrRightOf(*it);
+      const int last = firstColumnAtOrRightOf(*(it + 1));
+      if (first < last) {
+        std::fill(mask.begin() + static_cast<std::ptrdiff_t>(index(row, first)),
+                  mask.begin() + static_cast<std::ptrdiff_t>(index(row, last)), 1);
+      }
+    }
+  }
+  return mask;
+}
+
+void CoverageRaster::appendConvexSpans(const Ring& convex, std::vector<CellSpan>& spans) const {
+  if (convex.size() < 3) return;
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  for (const Point2& p : convex) {
+    low = std::min(low, p.y());
+    high = std::max(high, p.y());
+  }
+  if (!std::isfinite(low) || !std::isfinite(high)) return;
+  const int first_row = firstRowAtOrAbove(low);
+  const int end_row = firstRowAtOrAbove(high);
+  for (int row = first_row; row < end_row; ++row) {
+    const double y = rowCentre(row);
+    double left = std::numeric_limits<double>::infinity();
+    double right = -left;
+    for (std::size_t i = 0, n = convex.size(); i < n; ++i) {
+      const Point2& a = std::min(convex[i], convex[(i + 1) % n], lowerFirst);
+      const Point2& b = std::max(convex[i], convex[(i + 1) % n], lowerFirst);
+      if ((a.y() <= y) == (b.y() <= y)) continue;
+      const double x = crossingAt(a, b, y);
+      left = std::min(left, x);
+      right = std::max(right, x);
+    }
+    if (!(left < right)) continue;
+    const int begin = firstColumnAtOrRightOf(left);
+    const int end = firstColumnAtOrRightOf(right);
+    if (begin < end) spans.push_back({row, begin, end});
+  }
+}
+
+std::size_t CoverageRaster::countCells(const CellMask& mask) {
+  return static_cast<std::size_t>(
+      std::count_if(mask.begin(), mask.end(), [](std::uint8_t value) { return value != 0; }));
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,21 @@
+#pragma once
+
+#include "trajectory_generation_tools/coverage/coverage_raster.h"
+
+namespace kinematic_coverage {
+
+/// The cells within `radius` of the area that the set cells of `mask` stand for: a cell
+/// is set when its centre lies within radius + cell_size / 2 of a set cell's centre (the
+/// half cell measures from the set cells' edges, so that the grown area is unbiased).
+/// Uses the Felzenszwalb-Huttenlocher Euclidean distance transform (linear time in the
+/// cells, independent of the radius). Radius 0 returns the mask unchanged.
+/// Throws InvalidInputError for a negative or non-finite radius or a mask of the wrong size.
+CellMask dilateMask(const CoverageRaster& raster, const CellMask& mask, double radius);
+
+/// The reachable area (INTERFACE section 3): the free cells within half a footprint
+/// length of the offset free area; with a line sensor (length 0) the offset free area.
+/// Throws InvalidInputError for a negative or non-finite length or masks of the wrong size.
+CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,
+                       const CellMask& offset_free_area, double footprint_length);
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,92 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "trajectory_generation_tools/coverage/coverage_raster.h"
+#include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
+
+namespace kinematic_coverage {
+
+/// The heatmap of INTERFACE section 6 as a grid, for plots: `visits[index]` is how many
+/// separate times the sensor saw the cell, saturating at 65535 (row-major from `origin`,
+/// the grid's minimum corner, with square cells of `cell_size`).
+struct Heatmap {
+  Point2 origin = Point2::Zero();
+  double cell_size = 0.0;
+  int columns = 0;
+  int rows = 0;
+  std::vector<std::uint16_t> visits;
+};
+
+/// The area that a sensor sees along trajectories, on a CoverageRaster (INTERFACE
+/// section 6; the thesis's coverage and heatmaps, Fig. 4.2 and 4.6): the union of the
+/// footprints at the poses and, for each two consecutive poses at different positions
+/// (farther apart than kSamePositionTolerance), the convex hull of their footprints. Each pair of
+/// consecutive poses is one step; a cell seen in consecutive steps is one visit, so the heatmap
+/// does not depend on how densely a trajectory is sampled.
+class SeenArea {
+ public:
+  /// Nothing seen yet on `raster`.
+  explicit SeenArea(const CoverageRaster& raster);
+
+  /// Adds what `sensor` sees along `poses` (one pose: its footprint). Separate calls are
+  /// separate passes: a cell seen at the end of one and the start of the next counts twice.
+  /// Throws InvalidInputError for a non-finite pose (nothing is added then).
+  void addTrajectory(const std::vector<Pose2>& poses, const FrustumSensor& sensor);
+
+  /// Adds what `sensor` sees along a waypoint path driven as straight legs with in-place
+  /// rotations between them (waypointPathPoses): each leg sweeps the convex hull of its end
+  /// footprints, and each rotation step of at most `rotation_step` sweeps its two
+  /// footprints and the circular sectors that the footprint's corners sweep about the
+  /// centre, which is exactly the area a rotating convex footprint passes over (up to the
+  /// chords of arcs a few hundredths of a radian long). One pass, as addTrajectory.
+  /// Throws InvalidInputError as waypointPathPoses does (nothing is added then).
+  void addWaypointPath(const std::vector<Pose2>& waypoints, const FrustumSensor& sensor,
+                       double rotation_step = kDefaultRotationStep);
+
+  const CoverageRaster& raster() const { return raster_; }
+
+  /// How many separate times the cell with row-major index `index` was seen (saturating).
+  std::uint16_t visits(std::size_t index) const { return visits_[index]; }
+
+  /// True when the cell was seen at least once.
+  bool seen(std::size_t index) const { return visits_[index] > 0; }
+
+  /// The seen cells as a mask.
+  CellMask seenMask() const;
+
+  /// Seen share of the cells of `region`, in percent (INTERFACE section 6's
+  /// coverage_percent when `region` is the free area). Throws InvalidInputError when the
+  /// region has no cell or the wrong size.
+  double coveragePercent(const CellMask& region) const;
+
+  /// Centres of up to `max_count` cells of `region` never seen, in row-major order, for
+  /// diagnosing coverage gaps.
+  std::vector<Point2> unseenCentres(const CellMask& region, std::size_t max_count) const;
+
+  /// The heatmap grid (a copy, for plots and files).
+  Heatmap heatmap() const;
+
+ private:
+  /// addTrajectory; with `sweep_rotations`, consecutive poses at the same position also
+  /// see the sectors swept by the footprint's corners turning between their headings.
+  void addPoses(const std::vector<Pose2>& poses, const FrustumSensor& sensor, bool sweep_rotations);
+
+  /// Marks the cells of `spans` as seen in the current step, whose parity (0 or 1) is
+  /// `parity`: a cell not seen in the step before starts a new visit.
+  void markStep(const std::vector<CellSpan>& spans, std::size_t parity);
+
+  CoverageRaster raster_;
+  /// Per cell, bit p is set when the pass's latest step of parity p saw it.
+  std::vector<std::uint8_t> recent_steps_;
+  /// The cells whose bit p is set, so that a step can clear the bits of the step two before.
+  std::array<std::vector<std::size_t>, 2> recent_cells_;
+  std::vector<std::uint16_t> visits_;
+};
+
+}  // namespace kinematic_coverage
