@@ -1,6 +1,89 @@
-#include <iostream>
+// coverage_tool: the ROS-free command line of the package (INTERFACE section 7).
+// Exit status: 0 success; 2 invalid input or an impossible request, with one line on
+// stderr naming it; 1 an internal error (a bug). Every exception is caught here.
 
-int main() {
-  std::cerr << "coverage_tool: not built yet\n";
-  return 1;
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/gtsp/gtsp_command.h"
+#include "polygon_coverage_ros_bridge/mission/plan_command.h"
+
+namespace kinematic_coverage {
+namespace {
+
+constexpr int kExitSuccess = 0;
+constexpr int kExitInternalError = 1;
+constexpr int kExitInvalidInput = 2;
+
+const char* const kUsage =
+    "usage: coverage_tool COMMAND [ARGS...]\n"
+    "commands:\n"
+    "  plan MISSION.yaml --out DIR [--set name=value ...]\n"
+    "      plan a coverage path: DIR/waypoints.csv, DIR/metrics.json\n"
+    "  evaluate MISSION.yaml --trajectory FILE.csv --out DIR\n"
+    "      coverage of a trajectory (not available yet: issue 5)\n"
+    "  replan MISSION.yaml --updated UPDATED.yaml --visited FILE.csv --out DIR\n"
+    "      replan the remaining area after obstacles moved (not available yet: issue 8)\n"
+    "  simulate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value ...]\n"
+    "      a robot model follows a trajectory (not available yet: issue 9)\n"
+    "  gtsp INSTANCE.gtsp [--seed N] [--time-limit S]\n"
+    "      solve a GTSPLIB instance; prints one JSON line\n"
+    "Run coverage_tool COMMAND --help for a command's options.\n"
+    "Exit status: 0 success, 2 invalid input (one line on stderr), 1 internal error.\n";
+
+/// The message on one line: a line break inside would split the one-line report.
+std::string oneLine(std::string message) {
+  for (char& c : message) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return message;
+}
+
+int runCommand(const std::vector<std::string>& args) {
+  if (args.empty()) {
+    throw InvalidInputError("no command given (see coverage_tool --help)");
+  }
+  const std::string& command = args.front();
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::cout << kUsage;
+    return kExitSuccess;
+  }
+  if (command == "plan") {
+    PlanCommand().run(rest, std::cout, std::cerr);
+    return kExitSuccess;
+  }
+  if (command == "gtsp") return runGtspCommand(rest, std::cout, std::cerr);
+  if (command == "evaluate") {
+    throw InvalidInputError("not available yet: coverage_tool evaluate arrives with issue 5");
+  }
+  if (command == "replan") {
+    throw InvalidInputError("not available yet: coverage_tool replan arrives with issue 8");
+  }
+  if (command == "simulate") {
+    throw InvalidInputError("not available yet: coverage_tool simulate arrives with issue 9");
+  }
+  throw InvalidInputError("unknown command '" + command + "' (see coverage_tool --help)");
+}
+
+}  // namespace
+}  // namespace kinematic_coverage
+
+int main(int argc, char** argv) {
+  using namespace kinematic_coverage;
+  try {
+    return runCommand(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const InvalidInputError& error) {
+    std::cerr << "error: " << oneLine(error.what()) << std::endl;
+    return kExitInvalidInput;
+  } catch (const std::exception& error) {
+    std::cerr << "internal error: " << oneLine(error.what()) << std::endl;
+    return kExitInternalError;
+  } catch (...) {
+    std::cerr << "internal error: unknown exception" << std::endl;
+    return kExitInternalError;
+  }
 }

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <string>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+
+namespace kinematic_coverage {
+
+/// A coverage mission as a mission file describes it (INTERFACE section 7): the raw area
+/// (not yet validated or cleaned), where the robot starts and ends, and the parameters.
+struct Mission {
+  std::string frame_id = "map";  ///< frame of every coordinate, carried to every output
+  PolygonWithHoles polygon;      ///< raw hull and holes, as in the file
+  Point2 start = Point2::Zero();
+  Point2 goal = Point2::Zero();
+  PlannerParameters parameters;  ///< defaults, then the file's keys, then the overrides
+};
+
+}  // namespace kinematic_coverage

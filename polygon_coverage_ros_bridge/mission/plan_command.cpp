@@ -1,0 +1,155 @@
+#include "polygon_coverage_ros_bridge/mission/plan_command.h"
+
+#include <chrono>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/json_object.h"
+#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
+#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+#include "polygon_coverage_ros_bridge/validation/point_format.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+
+namespace kinematic_coverage {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string seconds(double value) {
+  std::ostringstream out;
+  out.precision(3);
+  out << std::fixed << value << " s";
+  return out.str();
+}
+
+struct PlanArguments {
+  std::string mission_path;
+  std::string out_dir;
+  std::vector<std::string> overrides;
+  bool help = false;
+};
+
+PlanArguments parseArguments(const std::vector<std::string>& args) {
+  PlanArguments parsed;
+  bool has_out = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) {
+        throw InvalidInputError("coverage_tool plan: " + arg + " needs a value");
+      }
+      return args[++i];
+    };
+    if (arg == "--help" || arg == "-h") {
+      parsed.help = true;
+    } else if (arg == "--out") {
+      parsed.out_dir = value();
+      has_out = true;
+    } else if (arg == "--set") {
+      parsed.overrides.push_back(value());
+    } else if (arg.size() > 1 && arg[0] == '-') {
+      throw InvalidInputError("coverage_tool plan: unknown option '" + arg +
+                              "' (see coverage_tool plan --help)");
+    } else if (parsed.mission_path.empty()) {
+      parsed.mission_path = arg;
+    } else {
+      throw InvalidInputError("coverage_tool plan: one mission file expected, got '" +
+                              parsed.mission_path + "' and '" + arg + "'");
+    }
+  }
+  if (parsed.help) return parsed;
+  if (parsed.mission_path.empty()) {
+    throw InvalidInputError(
+        "coverage_tool plan: no mission file given (see coverage_tool plan --help)");
+  }
+  if (!has_out || parsed.out_dir.empty()) {
+    throw InvalidInputError("coverage_tool plan: --out DIR is required");
+  }
+  return parsed;
+}
+
+void createDirectory(const std::string& dir) {
+  std::error_code code;
+  std::filesystem::create_directories(dir, code);
+  if (code || !std::filesystem::is_directory(dir)) {
+    throw InvalidInputError("cannot create the output directory " + dir +
+                            (code ? ": " + code.message() : ""));
+  }
+}
+
+}  // namespace
+
+std::string PlanCommand::usage() {
+  return "usage: coverage_tool plan MISSION.yaml --out DIR [--set name=value ...]\n"
+         "  Plans a coverage path over the mission's polygon and writes DIR/waypoints.csv\n"
+         "  (x,y,yaw) and DIR/metrics.json. --set overrides a parameter of\n"
+         "  config/default.yaml (the value is read as YAML), after the mission file.\n";
+}
+
+void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
+                      std::ostream& err) const {
+  const PlanArguments arguments = parseArguments(args);
+  if (arguments.help) {
+    out << usage();
+    return;
+  }
+  std::ostringstream log;
+  Clock::time_point stage_start = Clock::now();
+  const Mission mission = MissionFileReader().read(arguments.mission_path, arguments.overrides);
+  log << "load: " << arguments.mission_path << ": hull of " << mission.polygon.hull.size()
+      << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id
+      << " (" << seconds(secondsSince(stage_start)) << ")\n";
+
+  const Clock::time_point planning_start = Clock::now();
+  stage_start = planning_start;
+  const PolygonValidator validator;
+  validator.validate(mission.polygon);
+  validator.validateEndpoint("start", mission.start, mission.polygon);
+  validator.validateEndpoint("goal", mission.goal, mission.polygon);
+  log << "validate: polygon, start and goal valid (" << seconds(secondsSince(stage_start)) << ")\n";
+
+  stage_start = Clock::now();
+  const CleanedPolygon cleaned = PolygonCleaner().clean(mission.polygon);
+  for (const std::string& warning : cleaned.warnings) log << "warning: " << warning << "\n";
+  log << "clean: free area " << formatNumber(area(cleaned.free_area)) << " m^2, "
+      << cleaned.free_area.holes.size() << " holes, " << cleaned.warnings.size()
+      << " cleaning steps (" << seconds(secondsSince(stage_start)) << ")\n";
+
+  const CoveragePlan plan =
+      CoveragePlanner(mission.parameters).plan(cleaned.free_area, mission.start, mission.goal);
+  const double planning_time_s = secondsSince(planning_start);
+  for (const PlanningStage& stage : plan.stages) {
+    log << stage.name << ": " << stage.summary << " (" << seconds(stage.duration_s) << ")\n";
+  }
+  for (const std::string& warning : plan.warnings) log << "warning: " << warning << "\n";
+
+  createDirectory(arguments.out_dir);
+  const std::filesystem::path dir(arguments.out_dir);
+  const std::string waypoints_path = (dir / "waypoints.csv").string();
+  const std::string metrics_path = (dir / "metrics.json").string();
+  WaypointCsvWriter().write(waypoints_path, plan.waypoints);
+  JsonObject metrics;
+  metrics.set("planning_time_s", planning_time_s)
+      .set("cells", static_cast<double>(plan.cells.size()))
+      .set("waypoint_count", static_cast<double>(plan.waypoints.size()))
+      .set("path_length_m", plan.path_length_m)
+      .set("time_cost_s", plan.time_cost_s);
+  metrics.write(metrics_path);
+  log << "write: " << plan.waypoints.size() << " waypoints, planning took "
+      << seconds(planning_time_s) << "\n";
+  log << "note: trajectory.csv and plot.png are not produced yet (trajectory.csv arrives with "
+         "issue 4, plot.png with issue 5)\n";
+  err << log.str();
+  out << "wrote " << waypoints_path << " " << metrics_path << "\n";
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace kinematic_coverage {
+
+/// `coverage_tool plan MISSION.yaml --out DIR [--set name=value ...]` (INTERFACE section
+/// 7): loads the mission, validates and cleans the polygon, plans with CoveragePlanner and
+/// writes DIR/waypoints.csv and DIR/metrics.json (planning_time_s: validation + cleaning +
+/// planning; cells, waypoint_count, path_length_m, time_cost_s). Log lines (one per
+/// stage), warnings ("warning: ...") and a note on what is not produced yet go to `err`
+/// only once the command has succeeded, so that a failure prints just its one error line;
+/// the written files are named on `out`.
+class PlanCommand {
+ public:
+  /// Usage text of the command.
+  static std::string usage();
+
+  /// Runs the command on its arguments (those after "plan"). Throws InvalidInputError for
+  /// invalid input or an impossible request; any other exception is an internal error.
+  void run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) const;
+};
+
+}  // namespace kinematic_coverage

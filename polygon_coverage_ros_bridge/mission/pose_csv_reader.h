@@ -1,0 +1,47 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+
+namespace kinematic_coverage {
+
+/// One row of a trajectory or visited-poses file.
+struct PoseRecord {
+  Pose2 pose;        ///< yaw wrapped into (-pi, pi]
+  double t = 0.0;    ///< seconds; 0 when the file has no t column
+  std::string kind;  ///< "segment", "arc" or "rotation"; empty without a kind column
+};
+
+/// The rows of a pose file, and which optional columns it had.
+struct PoseTable {
+  std::vector<PoseRecord> rows;
+  bool has_time = false;
+  bool has_kind = false;
+};
+
+/// Reads CSV pose files (`trajectory.csv`, `visited` files, INTERFACE section 7): a header
+/// row naming the columns, `x`, `y`, `yaw` required, `t` and `kind` optional, any other
+/// columns allowed and ignored, in any order. Fields are separated by commas (no quoting);
+/// surrounding spaces, CRLF line ends and blank lines are accepted. Every problem is an
+/// InvalidInputError naming the file, line and column: a missing or repeated column, a row
+/// with the wrong number of fields, a non-numeric or non-finite number, a kind other than
+/// segment/arc/rotation, a decreasing t, no rows. Yaw may be any finite angle; it is
+/// wrapped into (-pi, pi]. Limits: files of at most kMaxFileBytes and kMaxRows rows.
+class PoseCsvReader {
+ public:
+  /// Largest file read, bytes.
+  static constexpr std::size_t kMaxFileBytes = 512u << 20;
+  /// Most rows read.
+  static constexpr std::size_t kMaxRows = 5000000;
+
+  /// Reads the file at `path`.
+  PoseTable read(const std::string& path) const;
+
+  /// Reads CSV text; `source_name` names it in messages.
+  PoseTable parse(const std::string& text, const std::string& source_name) const;
+};
+
+}  // namespace kinematic_coverage

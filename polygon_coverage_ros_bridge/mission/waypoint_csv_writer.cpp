@@ -1,0 +1,29 @@
+#include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
+#include "polygon_coverage_ros_bridge/mission/text_file_writer.h"
+
+namespace kinematic_coverage {
+
+std::string WaypointCsvWriter::format(const std::vector<Pose2>& waypoints) const {
+  std::string text = "x,y,yaw\n";
+  for (std::size_t i = 0; i < waypoints.size(); ++i) {
+    const Pose2& pose = waypoints[i];
+    if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw)) {
+      throw std::domain_error("waypoint " + std::to_string(i) + " is not finite");
+    }
+    text += formatRoundTrip(pose.x) + "," + formatRoundTrip(pose.y) + "," +
+            formatRoundTrip(wrapAngle(pose.yaw)) + "\n";
+  }
+  return text;
+}
+
+void WaypointCsvWriter::write(const std::string& path, const std::vector<Pose2>& waypoints) const {
+  writeTextFile(path, format(waypoints));
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,19 @@
+#pragma once
+
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+
+namespace kinematic_coverage {
+
+/// Checks planner parameters against their ranges (INTERFACE section 3): turning_radius,
+/// sensor_distance, v_max, a_max, yaw_rate_max, the sampling distances and angle,
+/// lateral_footprint and alpha > 0; wall_distance >= 0; lateral_overlap in [0, 1);
+/// lateral_fov and onward_fov in (0, pi); every number finite; every name-valued
+/// parameter one of its values.
+class ParameterValidator {
+ public:
+  /// Throws InvalidInputError naming the first parameter out of range, its value and the
+  /// allowed range, e.g. "lateral_overlap = 1 is out of range: it must be in [0, 1)".
+  void validate(const PlannerParameters& parameters) const;
+};
+
+}  // namespace kinematic_coverage

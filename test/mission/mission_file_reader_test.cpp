@@ -1,0 +1,295 @@
+#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+
+namespace kinematic_coverage {
+namespace {
+
+const char* const kMission = R"(frame_id: lake
+polygon:
+  hull: [[0, 0], [30, 0], [30, 30], [0, 30]]
+  holes:
+    - [[8, 8], [12, 8], [12, 12], [8, 12]]
+    - [[20, 20], [22, 20], [21, 22]]
+start: [1, 1.5]
+goal: [29, 29]
+turning_radius: 2.0
+)";
+
+std::string errorOf(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
+  try {
+    MissionFileReader().parse(yaml, "m.yaml", overrides);
+  } catch (const InvalidInputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+/// The example mission with `line` replacing the line that starts like it.
+std::string missionWith(const std::string& key, const std::string& line) {
+  std::istringstream in(kMission);
+  std::string out, current;
+  while (std::getline(in, current)) out += (current.rfind(key, 0) == 0 ? line : current) + "\n";
+  return out;
+}
+
+TEST(MissionFileReader, ReadsEveryPartOfAMission) {
+  const Mission mission = MissionFileReader().parse(kMission, "m.yaml");
+  EXPECT_EQ(mission.frame_id, "lake");
+  ASSERT_EQ(mission.polygon.hull.size(), 4u);
+  EXPECT_EQ(mission.polygon.hull[1], Point2(30, 0));
+  ASSERT_EQ(mission.polygon.holes.size(), 2u);
+  EXPECT_EQ(mission.polygon.holes[1][2], Point2(21, 22));
+  EXPECT_EQ(mission.start, Point2(1, 1.5));
+  EXPECT_EQ(mission.goal, Point2(29, 29));
+  EXPECT_EQ(mission.parameters.turning_radius, 2.0);
+  EXPECT_EQ(mission.parameters.v_max, PlannerParameters{}.v_max);
+}
+
+TEST(MissionFileReader, DefaultsFrameAndHoles) {
+  const Mission mission = MissionFileReader().parse(
+      "polygon: {hull: [[0, 0], [1, 0], [0, 1]]}\nstart: [0, 0]\ngoal: [0, 0]\n", "m.yaml");
+  EXPECT_EQ(mission.frame_id, "map");
+  EXPECT_TRUE(mission.polygon.holes.empty());
+}
+
+TEST(MissionFileReader, ReadsEveryParameterKey) {
+  const std::string base = missionWith("turning_radius", "");
+  const std::vector<std::pair<std::string, std::string>> values = {
+      {"decomposition_type", "trapezoidal"},
+      {"cost_function", "distance"},
+      {"v_max", "1.5"},
+      {"a_max", "0.7"},
+      {"yaw_rate_max", "0.9"},
+      {"wall_distance", "0"},
+      {"sensor_model", "line"},
+      {"lateral_fov", "1.1"},
+      {"onward_fov", "0.3"},
+      {"lateral_footprint", "4.5"},
+      {"sensor_distance", "7"},
+      {"lateral_overlap", "0.25"},
+      {"smoothing", "false"},
+      {"turning_radius", "3.5"},
+      {"segment_sampling_distance", "0.25"},
+      {"arc_sampling_distance", "0.05"},
+      {"rotation_sampling_angle", "0.1"},
+      {"replanning_method", "convex_hull"},
+      {"alpha", "6"}};
+  EXPECT_EQ(values.size(), MissionFileReader::parameterNames().size());
+  std::string yaml = base;
+  for (const auto& [key, value] : values) yaml += key + ": " + value + "\n";
+  const PlannerParameters p = MissionFileReader().parse(yaml, "m.yaml").parameters;
+  EXPECT_EQ(p.decomposition_type, "trapezoidal");
+  EXPECT_EQ(p.cost_function, "distance");
+  EXPECT_EQ(p.v_max, 1.5);
+  EXPECT_EQ(p.a_max, 0.7);
+  EXPECT_EQ(p.yaw_rate_max, 0.9);
+  EXPECT_EQ(p.wall_distance, 0.0);
+  EXPECT_EQ(p.sensor_model, "line");
+  EXPECT_EQ(p.lateral_fov, 1.1);
+  EXPECT_EQ(p.onward_fov, 0.3);
+  EXPECT_EQ(p.lateral_footprint, 4.5);
+  EXPECT_EQ(p.sensor_distance, 7.0);
+  EXPECT_EQ(p.lateral_overlap, 0.25);
+  EXPECT_FALSE(p.smoothing);
+  EXPECT_EQ(p.turning_radius, 3.5);
+  EXPECT_EQ(p.segment_sampling_distance, 0.25);
+  EXPECT_EQ(p.arc_sampling_distance, 0.05);
+  EXPECT_EQ(p.rotation_sampling_angle, 0.1);
+  EXPECT_EQ(p.replanning_method, "convex_hull");
+  EXPECT_EQ(p.alpha, 6.0);
+}
+
+TEST(MissionFileReader, AppliesOverridesAfterTheFile) {
+  const Mission mission = MissionFileReader().parse(
+      kMission, "m.yaml", {"turning_radius=2.5", "smoothing=no", "cost_function=waypoints"});
+  EXPECT_EQ(mission.parameters.turning_radius, 2.5);
+  EXPECT_FALSE(mission.parameters.smoothing);
+  EXPECT_EQ(mission.parameters.cost_function, "waypoints");
+  EXPECT_EQ(errorOf(kMission, {"turnig_radius=2"}),
+            "--set turnig_radius=2: unknown parameter 'turnig_radius'");
+  EXPECT_EQ(errorOf(kMission, {"turning_radius"}), "--set turning_radius: expected name=value");
+  EXPECT_EQ(errorOf(kMission, {"turning_radius=abc"}),
+            "--set turning_radius=abc:1: turning_radius: the value 'abc' is not a number");
+  EXPECT_EQ(errorOf(kMission, {"turning_radius="}),
+            "--set turning_radius=: turning_radius: the value must be a number, not nothing");
+  EXPECT_EQ(errorOf(kMission, {"smoothing=maybe"}),
+            "--set smoothing=maybe:1: smoothing: the value 'maybe' is not true or false");
+  EXPECT_EQ(errorOf(kMission, {"turning_radius=-1"}),
+            "turning_radius = -1 is out of range: it must be a finite number > 0 (m)");
+}
+
+TEST(MissionFileReader, RejectsUnknownAndDuplicateKeys) {
+  EXPECT_EQ(errorOf(missionWith("turning_radius", "turnig_radius: 2")),
+            "m.yaml:9: turnig_radius: unknown key (a mission has frame_id, polygon, start, "
+            "goal and the parameters of config/default.yaml)");
+  EXPECT_EQ(errorOf("polygon:\n  hull: [[0, 0], [1, 0], [0, 1]]\n  hole: []\n"),
+            "m.yaml:3: polygon.hole: unknown key (a polygon has hull and holes)");
+  EXPECT_EQ(errorOf(std::string(kMission) + "turning_radius: 3\n"),
+            "m.yaml:10: turning_radius: the key appears twice");
+}
+
+TEST(MissionFileReader, RejectsMissingParts) {
+  EXPECT_EQ(errorOf(missionWith("goal", "")), "m.yaml: the goal is missing");
+  EXPECT_EQ(errorOf(missionWith("start", "")), "m.yaml: the start is missing");
+  EXPECT_EQ(errorOf("start: [0, 0]\ngoal: [0, 0]\n"), "m.yaml: the polygon is missing");
+  EXPECT_EQ(errorOf("polygon: {holes: []}\nstart: [0, 0]\ngoal: [0, 0]\n"),
+            "m.yaml:1: polygon: the hull is missing");
+  EXPECT_EQ(errorOf(""), "m.yaml: the file is empty");
+  EXPECT_EQ(errorOf("- 1\n- 2\n"), "m.yaml: the file must be a map of keys, not a list");
+}
+
+TEST(MissionFileReader, RejectsWrongShapes) {
+  EXPECT_EQ(errorOf(missionWith("start", "start: [1, 2, 3]")),
+            "m.yaml:7: start: a point must be a list of 2 numbers [x, y], not a list of 3 items");
+  EXPECT_EQ(errorOf(missionWith("  hull", "  hull: 5")),
+            "m.yaml:3: polygon.hull: a ring must be a list of [x, y] points, not '5'");
+  EXPECT_EQ(errorOf(missionWith("  hull", "  hull: {a: 1}")),
+            "m.yaml:3: polygon.hull: a ring must be a list of [x, y] points, not a map");
+  EXPECT_EQ(errorOf(missionWith("    - [[20", "    - [[20, 20], [22, 20], [21, 22], [1, 2, 3]]")),
+            "m.yaml:6: polygon.holes[1][3]: a point must be a list of 2 numbers [x, y], not a "
+            "list of 3 items");
+  EXPECT_EQ(errorOf("polygon:\n  hull: [[0, 0], [1, 0], [0, 1]]\n  holes: 3\n"),
+            "m.yaml:3: polygon.holes: must be a list of rings, not '3'");
+  EXPECT_EQ(errorOf("frame_id: map\npolygon: [1, 2]\n"),
+            "m.yaml:2: polygon: must be a map with hull and holes, not a list");
+  EXPECT_EQ(errorOf(missionWith("frame_id", "frame_id: [a]")),
+            "m.yaml:1: frame_id: must be a frame name, not a list");
+}
+
+TEST(MissionFileReader, RejectsNonNumericAndNonFiniteCoordinates) {
+  EXPECT_EQ(errorOf(missionWith("    - [[20", "    - [[20, 20], [22, 20], [21, 22], [abc, 1]]")),
+            "m.yaml:6: polygon.holes[1][3]: the x coordinate 'abc' is not a number");
+  EXPECT_EQ(errorOf(missionWith("goal", "goal: [1, .nan]")),
+            "m.yaml:8: goal: the y coordinate '.nan' is not finite");
+  EXPECT_EQ(errorOf(missionWith("  hull", "  hull: [[0, 0], [-.inf, 0], [0, 1]]")),
+            "m.yaml:3: polygon.hull[1]: the x coordinate '-.inf' is not finite");
+  EXPECT_EQ(errorOf(missionWith("  hull", "  hull: [[0, 0], [[1], 0], [0, 1]]")),
+            "m.yaml:3: polygon.hull[1]: the x coordinate must be a number, not a list");
+  EXPECT_EQ(errorOf(missionWith("goal", "goal: [1, 1e300]")),
+            "m.yaml:8: goal: the y coordinate 1e+300 exceeds the limit of +-100000000 m");
+}
+
+TEST(MissionFileReader, RejectsBadYaml) {
+  const std::string message = errorOf("polygon: [[0, 0]\nstart: [0, 0]\n");
+  EXPECT_EQ(message.rfind("m.yaml:", 0), 0u) << message;
+  EXPECT_NE(message.find("not valid YAML"), std::string::npos) << message;
+  const std::string deep = errorOf("polygon: " + std::string(100000, '[') + "\n");
+  EXPECT_NE(deep.find("not valid YAML"), std::string::npos) << deep;
+}
+
+TEST(MissionFileReader, EnforcesTheSizeLimits) {
+  std::string holes = "polygon:\n  hull: [[0, 0], [10, 0], [0, 10]]\n  holes:\n";
+  for (int i = 0; i <= 5000; ++i) holes += "    - [[1, 1], [2, 1], [1, 2]]\n";
+  EXPECT_EQ(errorOf(holes + "start: [0, 0]\ngoal: [0, 0]\n"),
+            "m.yaml:4: polygon.holes: 5001 holes, more than the limit of 5000");
+  std::string vertices = "polygon:\n  hull: [";
+  for (int i = 0; i <= 100000; ++i) vertices += "[" + std::to_string(i) + ", 0],";
+  vertices += "[0, 1]]\nstart: [0, 0]\ngoal: [0, 0]\n";
+  EXPECT_EQ(errorOf(vertices),
+            "m.yaml:2: polygon.hull: the polygon has more than 100000 vertices in total, the "
+            "limit");
+}
+
+TEST(MissionFileReader, RejectsParametersOutOfRange) {
+  EXPECT_EQ(errorOf(missionWith("turning_radius", "lateral_overlap: 1.0")),
+            "lateral_overlap = 1 is out of range: it must be in [0, 1)");
+  EXPECT_EQ(errorOf(missionWith("turning_radius", "lateral_fov: 3.2")),
+            "lateral_fov = 3.2 is out of range: it must be in (0, pi) rad");
+  EXPECT_EQ(errorOf(missionWith("turning_radius", "sensor_distance: 0")),
+            "sensor_distance = 0 is out of range: it must be a finite number > 0 (m)");
+  EXPECT_EQ(errorOf(missionWith("turning_radius", "decomposition_type: grid")),
+            "decomposition_type = 'grid' is not one of: boustrophedon, trapezoidal");
+  EXPECT_EQ(errorOf(missionWith("turning_radius", "turning_radius: fast")),
+            "m.yaml:9: turning_radius: the value 'fast' is not a number");
+  EXPECT_EQ(errorOf(missionWith("turning_radius", "smoothing: 1.5")),
+            "m.yaml:9: smoothing: the value '1.5' is not true or false");
+}
+
+TEST(MissionFileReader, ReadsFilesAndReportsMissingOnes) {
+  const std::string dir = ::testing::TempDir() + "/mission_reader";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/m.yaml") << kMission;
+  EXPECT_EQ(MissionFileReader().read(dir + "/m.yaml").frame_id, "lake");
+  try {
+    MissionFileReader().read(dir + "/none.yaml");
+    FAIL();
+  } catch (const InvalidInputError& error) {
+    EXPECT_EQ(std::string(error.what()), dir + "/none.yaml: no such file");
+  }
+  EXPECT_THROW(MissionFileReader().read(dir), InvalidInputError);
+}
+
+TEST(MissionFileReader, ReadsUpdatedPolygons) {
+  const PolygonWithHoles polygon = MissionFileReader().parseUpdatedPolygon(
+      "frame_id: map\npolygon:\n  hull: [[0, 0], [5, 0], [5, 5]]\n", "u.yaml");
+  EXPECT_EQ(polygon.hull.size(), 3u);
+  EXPECT_THROW(MissionFileReader().parseUpdatedPolygon("start: [0, 0]\n", "u.yaml"),
+               InvalidInputError);
+  EXPECT_THROW(MissionFileReader().parseUpdatedPolygon("frame_id: map\n", "u.yaml"),
+               InvalidInputError);
+}
+
+TEST(DefaultYaml, EqualsTheBuiltInDefaults) {
+  const std::string path = std::string(KC_SOURCE_DIR) + "/config/default.yaml";
+  const PlannerParameters loaded = MissionFileReader().readParameters(path);
+  const PlannerParameters d;
+  EXPECT_EQ(loaded.decomposition_type, d.decomposition_type);
+  EXPECT_EQ(loaded.cost_function, d.cost_function);
+  EXPECT_EQ(loaded.v_max, d.v_max);
+  EXPECT_EQ(loaded.a_max, d.a_max);
+  EXPECT_EQ(loaded.yaw_rate_max, d.yaw_rate_max);
+  EXPECT_EQ(loaded.wall_distance, d.wall_distance);
+  EXPECT_EQ(loaded.sensor_model, d.sensor_model);
+  EXPECT_EQ(loaded.lateral_fov, d.lateral_fov);
+  EXPECT_EQ(loaded.onward_fov, d.onward_fov);
+  EXPECT_EQ(loaded.lateral_footprint, d.lateral_footprint);
+  EXPECT_EQ(loaded.sensor_distance, d.sensor_distance);
+  EXPECT_EQ(loaded.lateral_overlap, d.lateral_overlap);
+  EXPECT_EQ(loaded.smoothing, d.smoothing);
+  EXPECT_EQ(loaded.turning_radius, d.turning_radius);
+  EXPECT_EQ(loaded.segment_sampling_distance, d.segment_sampling_distance);
+  EXPECT_EQ(loaded.arc_sampling_distance, d.arc_sampling_distance);
+  EXPECT_EQ(loaded.rotation_sampling_angle, d.rotation_sampling_angle);
+  EXPECT_EQ(loaded.replanning_method, d.replanning_method);
+  EXPECT_EQ(loaded.alpha, d.alpha);
+  // Every parameter is written out, not just defaulted.
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  for (const std::string& name : MissionFileReader::parameterNames()) {
+    EXPECT_NE(text.str().find("\n" + name + ": "), std::string::npos) << name;
+  }
+}
+
+TEST(ShippedMissions, LoadValidateAndClean) {
+  std::vector<std::string> paths;
+  for (const std::string dir : {std::string(KC_SOURCE_DIR) + "/config/missions",
+                                std::string(KC_SHARED_DIR) + "/benchmarks/pcp_polygons"}) {
+    if (!std::filesystem::is_directory(dir)) continue;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      if (entry.path().extension() == ".yaml") paths.push_back(entry.path().string());
+    }
+  }
+  EXPECT_GE(paths.size(), 2u);
+  for (const std::string& path : paths) {
+    SCOPED_TRACE(path);
+    const Mission mission = MissionFileReader().read(path);
+    const PolygonValidator validator;
+    EXPECT_NO_THROW(validator.validate(mission.polygon));
+    EXPECT_NO_THROW(validator.validateEndpoint("start", mission.start, mission.polygon));
+    EXPECT_NO_THROW(PolygonCleaner().clean(mission.polygon));
+  }
+}
+
+}  // namespace
+}  // namespace kinematic_coverage

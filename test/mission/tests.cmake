@@ -1,0 +1,4 @@
+kc_add_gtest(test_mission
+  test/mission/mission_file_reader_test.cpp
+  test/mission/output_files_test.cpp
+  LIBRARIES kc_mission)

@@ -1,0 +1,230 @@
+// Runs the coverage_tool binary on mission files written to a temporary directory and
+// checks the contract of INTERFACE section 7: exit status, one stderr line for invalid
+// input, the files written.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct ToolRun {
+  int exit_status = -1;
+  std::string out;
+  std::vector<std::string> err_lines;
+};
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) result.push_back(line);
+  return result;
+}
+
+std::string scratchDir() {
+  const std::string dir = ::testing::TempDir() + "/coverage_tool_test";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// Runs coverage_tool with `args` (shell words, already quoted where needed).
+ToolRun runTool(const std::string& args) {
+  const std::string out = scratchDir() + "/stdout.txt";
+  const std::string err = scratchDir() + "/stderr.txt";
+  const std::string command =
+      std::string("'") + KC_TOOL_PATH + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  const int status = std::system(command.c_str());
+  ToolRun run;
+  run.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.out = readText(out);
+  run.err_lines = lines(readText(err));
+  return run;
+}
+
+std::string writeMission(const std::string& name, const std::string& yaml) {
+  const std::string path = scratchDir() + "/" + name + ".yaml";
+  std::ofstream(path) << yaml;
+  return path;
+}
+
+std::string mission(const std::string& polygon, const std::string& extra = "",
+                    const std::string& start = "[1, 1]", const std::string& goal = "[29, 29]") {
+  return "frame_id: map\npolygon:\n" + polygon + "start: " + start + "\ngoal: " + goal + "\n" +
+         extra;
+}
+
+const char* const kSquare = "  hull: [[0, 0], [30, 0], [30, 30], [0, 30]]\n";
+const char* const kSquareWithHole =
+    "  hull: [[0, 0], [30, 0], [30, 30], [0, 30]]\n"
+    "  holes: [[[8, 8], [12, 8], [12, 12], [8, 12]]]\n";
+
+/// Expects exit 2 and exactly one stderr line "error: ..." containing `expected`.
+void expectInvalid(const std::string& args, const std::string& expected) {
+  SCOPED_TRACE(args);
+  const ToolRun run = runTool(args);
+  EXPECT_EQ(run.exit_status, 2);
+  ASSERT_EQ(run.err_lines.size(), 1u) << run.out;
+  EXPECT_EQ(run.err_lines[0].rfind("error: ", 0), 0u) << run.err_lines[0];
+  EXPECT_NE(run.err_lines[0].find(expected), std::string::npos) << run.err_lines[0];
+}
+
+void expectInvalidMission(const std::string& yaml, const std::string& expected,
+                          const std::string& options = "") {
+  const std::string path = writeMission("invalid", yaml);
+  const std::string out_dir = scratchDir() + "/invalid_out";
+  std::filesystem::remove_all(out_dir);
+  expectInvalid("plan '" + path + "' --out '" + out_dir + "' " + options, expected);
+  EXPECT_FALSE(std::filesystem::exists(out_dir + "/waypoints.csv"));
+}
+
+TEST(CoverageTool, RejectsEachInvalidInputClassWithOneLine) {
+  expectInvalidMission(mission("  hull: [[0, 0], [30, 0]]\n"),
+                       "hull has 2 distinct vertices: a ring needs at least 3");
+  expectInvalidMission(mission("  hull: [[0, 0], [10, 10], [20, 20]]\n"), "hull has zero area");
+  expectInvalidMission(mission("  hull: [[0, 0], [30, 30], [30, 0], [0, 30]]\n"),
+                       "hull is self-intersecting: edge 0 (vertices 0-1) and edge 2 (vertices "
+                       "2-3) meet at (15, 15)");
+  expectInvalidMission(
+      mission("  hull: [[0, 0], [30, 0], [30, 30], [0, 30]]\n"
+              "  holes: [[[8, 8], [12, 8], [12, 12], [8, 12]], [[5, 5], [6, 5], [x, 6]]]\n"),
+      "polygon.holes[1][2]: the x coordinate 'x' is not a number");
+  expectInvalidMission(mission(kSquare, "", "[.inf, 1]"),
+                       "start: the x coordinate '.inf' is not finite");
+  expectInvalidMission(mission("  hull: [[0, 0], [30, 0], [30, 30], [0, 30]]\n"
+                               "  holes: [[[40, 40], [42, 40], [42, 42]]]\n"),
+                       "hole 0 lies entirely outside the hull");
+  expectInvalidMission(mission(kSquareWithHole, "", "[10, 10]"),
+                       "start (10, 10) lies inside hole 0");
+  expectInvalidMission(mission(kSquareWithHole, "", "[1, 1]", "[9, 11]"),
+                       "goal (9, 11) lies inside hole 0");
+  expectInvalidMission(mission(kSquare, "turning_radius: 0\n"),
+                       "turning_radius = 0 is out of range: it must be a finite number > 0");
+  expectInvalidMission(mission(kSquare, "lateral_overlap: 1\n"),
+                       "lateral_overlap = 1 is out of range: it must be in [0, 1)");
+  expectInvalidMission(mission(kSquare, "onward_fov: 3.5\n"),
+                       "onward_fov = 3.5 is out of range: it must be in (0, pi) rad");
+  expectInvalidMission(mission(kSquare, "turnig_radius: 2\n"), "turnig_radius: unknown key");
+  expectInvalidMission(mission(kSquare), "--set x=1: unknown parameter 'x'",
+                       "--set sensor_distance=-3 --set x=1");
+  expectInvalidMission(mission(kSquare), "sensor_distance = -3 is out of range",
+                       "--set sensor_distance=-3");
+  expectInvalidMission(mission("  hull: [[0, 0], [30, 0], [30, 30], [0, 30]]\n"
+                               "  holes: [[[-1, 10], [31, 10], [31, 12], [-1, 12]]]\n"),
+                       "the holes split the free area into 2 disconnected parts");
+  std::string many_holes = "  hull: [[0, 0], [30, 0], [30, 30], [0, 30]]\n  holes:\n";
+  for (int i = 0; i <= 5000; ++i) many_holes += "    - [[1, 1], [2, 1], [1, 2]]\n";
+  expectInvalidMission(mission(many_holes), "5001 holes, more than the limit of 5000");
+  expectInvalidMission("polygon: [[[\n", "not valid YAML");
+}
+
+TEST(CoverageTool, RejectsBadCommandLines) {
+  expectInvalid("", "no command given");
+  expectInvalid("frobnicate", "unknown command 'frobnicate'");
+  expectInvalid("plan", "no mission file given");
+  expectInvalid("plan '" + writeMission("ok", mission(kSquare)) + "'", "--out DIR is required");
+  expectInvalid("plan '" + writeMission("ok", mission(kSquare)) + "' --out", "--out needs a value");
+  expectInvalid("plan a.yaml b.yaml --out x", "one mission file expected");
+  expectInvalid("plan a.yaml --bogus --out x", "unknown option '--bogus'");
+  expectInvalid("plan '" + scratchDir() + "/missing.yaml' --out x", "missing.yaml: no such file");
+  expectInvalid("evaluate m.yaml",
+                "not available yet: coverage_tool evaluate arrives with issue 5");
+  expectInvalid("replan m.yaml", "not available yet: coverage_tool replan arrives with issue 8");
+  expectInvalid("simulate m.yaml",
+                "not available yet: coverage_tool simulate arrives with issue 9");
+}
+
+TEST(CoverageTool, PrintsHelp) {
+  const ToolRun run = runTool("--help");
+  EXPECT_EQ(run.exit_status, 0);
+  EXPECT_NE(run.out.find("plan MISSION.yaml --out DIR"), std::string::npos);
+  const ToolRun plan_help = runTool("plan --help");
+  EXPECT_EQ(plan_help.exit_status, 0);
+  EXPECT_NE(plan_help.out.find("--set name=value"), std::string::npos);
+}
+
+/// The number of `key` in a flat metrics.json line.
+double metric(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) return std::nan("");
+  return std::stod(json.substr(at + key.size() + 4));
+}
+
+TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
+  const std::string out_dir = scratchDir() + "/lake_out";
+  std::filesystem::remove_all(out_dir);
+  const ToolRun run =
+      runTool("plan '" + std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml' --out '" +
+              out_dir + "' --set lateral_overlap=0.5");
+  ASSERT_EQ(run.exit_status, 0);
+  EXPECT_EQ(run.out, "wrote " + out_dir + "/waypoints.csv " + out_dir + "/metrics.json\n");
+  ASSERT_FALSE(run.err_lines.empty());
+  EXPECT_EQ(run.err_lines.back().rfind("note: trajectory.csv and plot.png are not produced yet", 0),
+            0u);
+  for (const std::string stage : {"load: ", "validate: ", "clean: ", "write: "}) {
+    EXPECT_EQ(std::count_if(run.err_lines.begin(), run.err_lines.end(),
+                            [&](const std::string& line) { return line.rfind(stage, 0) == 0; }),
+              1)
+        << stage;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out_dir + "/trajectory.csv"));
+  EXPECT_FALSE(std::filesystem::exists(out_dir + "/plot.png"));
+
+  const std::vector<std::string> rows = lines(readText(out_dir + "/waypoints.csv"));
+  ASSERT_GE(rows.size(), 3u);
+  EXPECT_EQ(rows[0], "x,y,yaw");
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    double x = 0, y = 0, yaw = 0;
+    char comma1 = 0, comma2 = 0;
+    std::istringstream row(rows[i]);
+    ASSERT_TRUE(row >> x >> comma1 >> y >> comma2 >> yaw) << rows[i];
+    EXPECT_GT(yaw, -M_PI);
+    EXPECT_LE(yaw, M_PI);
+  }
+  const std::string json = readText(out_dir + "/metrics.json");
+  EXPECT_EQ(metric(json, "waypoint_count"), static_cast<double>(rows.size() - 1));
+  for (const std::string key : {"planning_time_s", "cells", "path_length_m", "time_cost_s"}) {
+    EXPECT_GT(metric(json, key), 0.0) << key << " in " << json;
+  }
+}
+
+TEST(CoverageTool, ReportsEachCleaningStepAsAWarning) {
+  const std::string path =
+      writeMission("cleaning", mission("  hull: [[0, 0], [30, 0], [30, 0], [30, 30], [0, 30]]\n"
+                                       "  holes:\n"
+                                       "    - [[8, 8], [12, 8], [12, 12], [8, 12]]\n"
+                                       "    - [[10, 10], [14, 10], [14, 14], [10, 14]]\n"
+                                       "    - [[25, 15], [35, 15], [35, 20], [25, 20]]\n"));
+  const std::string out_dir = scratchDir() + "/cleaning_out";
+  const ToolRun run = runTool("plan '" + path + "' --out '" + out_dir + "'");
+  ASSERT_EQ(run.exit_status, 0);
+  std::vector<std::string> warnings;
+  for (const std::string& line : run.err_lines) {
+    if (line.rfind("warning: ", 0) == 0) warnings.push_back(line);
+  }
+  auto has = [&](const std::string& text) {
+    return std::any_of(warnings.begin(), warnings.end(),
+                       [&](const std::string& w) { return w.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(has("warning: hull: 1 duplicate consecutive vertex dropped"));
+  EXPECT_TRUE(has("warning: hole 0 and hole 1 overlap: merged"));
+  EXPECT_TRUE(has("warning: hole 2 crosses the hull"));
+}
+
+TEST(CoverageTool, RejectsAnEmptyOffsetFreeArea) {
+  expectInvalidMission(mission(kSquare, "wall_distance: 20\n"), "the offset free area is empty");
+}
+
+}  // namespace

@@ -1,0 +1,97 @@
+#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+
+namespace kinematic_coverage {
+namespace {
+
+std::string errorOf(const std::function<void(PlannerParameters&)>& change) {
+  PlannerParameters parameters;
+  change(parameters);
+  try {
+    ParameterValidator().validate(parameters);
+  } catch (const InvalidInputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(ParameterValidator, AcceptsTheDefaultsAndTheBoundaries) {
+  EXPECT_EQ(errorOf([](PlannerParameters&) {}), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.wall_distance = 0.0; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.lateral_overlap = 0.0; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.lateral_overlap = 0.99; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) {
+              p.decomposition_type = "trapezoidal";
+              p.cost_function = "waypoints";
+              p.sensor_model = "line";
+              p.replanning_method = "concave_hull";
+            }),
+            "");
+}
+
+TEST(ParameterValidator, RejectsNonPositiveLengthsSpeedsAndSampling) {
+  const std::vector<std::pair<std::string, double PlannerParameters::*>> positive = {
+      {"turning_radius", &PlannerParameters::turning_radius},
+      {"sensor_distance", &PlannerParameters::sensor_distance},
+      {"v_max", &PlannerParameters::v_max},
+      {"a_max", &PlannerParameters::a_max},
+      {"yaw_rate_max", &PlannerParameters::yaw_rate_max},
+      {"segment_sampling_distance", &PlannerParameters::segment_sampling_distance},
+      {"arc_sampling_distance", &PlannerParameters::arc_sampling_distance},
+      {"rotation_sampling_angle", &PlannerParameters::rotation_sampling_angle},
+      {"lateral_footprint", &PlannerParameters::lateral_footprint},
+      {"alpha", &PlannerParameters::alpha},
+  };
+  for (const auto& [name, member] : positive) {
+    for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
+                             std::numeric_limits<double>::infinity()}) {
+      const std::string message = errorOf([&](PlannerParameters& p) { p.*member = bad; });
+      EXPECT_EQ(message.rfind(name + " = ", 0), 0u) << message;
+      EXPECT_NE(message.find("is out of range: it must be a finite number > 0"), std::string::npos)
+          << message;
+    }
+  }
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.turning_radius = -2.5; }),
+            "turning_radius = -2.5 is out of range: it must be a finite number > 0 (m)");
+}
+
+TEST(ParameterValidator, RejectsANegativeWallDistance) {
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.wall_distance = -0.1; }),
+            "wall_distance = -0.1 is out of range: it must be a finite number >= 0 (m)");
+}
+
+TEST(ParameterValidator, RejectsOverlapOutsideZeroToOne) {
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.lateral_overlap = 1.0; }),
+            "lateral_overlap = 1 is out of range: it must be in [0, 1)");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.lateral_overlap = -0.2; }),
+            "lateral_overlap = -0.2 is out of range: it must be in [0, 1)");
+}
+
+TEST(ParameterValidator, RejectsFieldsOfViewOutsideZeroToPi) {
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.lateral_fov = M_PI; }),
+            "lateral_fov = 3.141592654 is out of range: it must be in (0, pi) rad");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.onward_fov = 0.0; }),
+            "onward_fov = 0 is out of range: it must be in (0, pi) rad");
+}
+
+TEST(ParameterValidator, RejectsUnknownNames) {
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.decomposition_type = "voronoi"; }),
+            "decomposition_type = 'voronoi' is not one of: boustrophedon, trapezoidal");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.cost_function = "Time"; }),
+            "cost_function = 'Time' is not one of: distance, time, waypoints");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.sensor_model = ""; }),
+            "sensor_model = '' is not one of: frustum, line");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.replanning_method = "alpha"; }),
+            "replanning_method = 'alpha' is not one of: convex_hull, concave_hull, footprint");
+}
+
+}  // namespace
+}  // namespace kinematic_coverage
