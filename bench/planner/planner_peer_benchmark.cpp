@@ -4,7 +4,6 @@
 //
 //   planner_peer_benchmark [POLYGONS_DIR] [--runs N]
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,9 +14,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
 namespace {
@@ -63,16 +60,6 @@ std::map<std::string, PeerFigures> readPeerTable(const std::string& readme) {
   return table;
 }
 
-/// Validation, cleaning and planning, as `coverage_tool plan` does them.
-CoveragePlan planMission(const kinematic_coverage::Mission& mission,
-                         kinematic_coverage::PolygonWithHoles* free_area) {
-  const kinematic_coverage::PolygonValidator validator;
-  validator.validate(mission.polygon);
-  *free_area = kinematic_coverage::PolygonCleaner().clean(mission.polygon).free_area;
-  return kinematic_coverage::CoveragePlanner(mission.parameters)
-      .plan(*free_area, mission.start, mission.goal);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -101,29 +88,27 @@ int main(int argc, char** argv) {
     const std::string name = std::filesystem::path(path).stem().string();
     try {
       const auto mission = kinematic_coverage::MissionFileReader().read(path);
-      CoveragePlan plan;
-      kinematic_coverage::PolygonWithHoles free_area;
+      kinematic_coverage::PlannedMission planned;
       std::vector<double> times;
       for (int run = 0; run < runs; ++run) {
-        const auto start = std::chrono::steady_clock::now();
-        plan = planMission(mission, &free_area);
-        times.push_back(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        planned = kinematic_coverage::planMission(mission);
+        times.push_back(planned.planning_time_s);
       }
+      const CoveragePlan& plan = planned.plan;
       std::sort(times.begin(), times.end());
       const double median_time = times[times.size() / 2];
       const auto it = peer.find(name);
       const PeerFigures reference = it != peer.end() ? it->second : PeerFigures{};
       const double seen = kinematic_coverage::waypointPathReachableCoveragePercent(
-          free_area, plan.offset_free_area,
+          planned.free_area, plan.offset_free_area,
           kinematic_coverage::FrustumSensor::fromParameters(mission.parameters), plan.waypoints);
       std::printf(
           "| %s | %zu (%d) | %zu (%d) | %.2f (%.2f) | %.2f (%.2f) | %.3f | %.3f (%.2f) | %.2f |\n",
-                  name.c_str(), plan.cells.size(), reference.cells, plan.waypoints.size(),
-                  reference.waypoints, plan.path_length_m, reference.path_length_m,
-                  plan.time_cost_s, reference.time_cost_s,
-                  reference.time_cost_s > 0 ? plan.time_cost_s / reference.time_cost_s : 0.0,
-                  median_time, reference.planning_time_s, seen);
+          name.c_str(), plan.cells.size(), reference.cells, plan.waypoints.size(),
+          reference.waypoints, plan.path_length_m, reference.path_length_m, plan.time_cost_s,
+          reference.time_cost_s,
+          reference.time_cost_s > 0 ? plan.time_cost_s / reference.time_cost_s : 0.0, median_time,
+          reference.planning_time_s, seen);
       std::fflush(stdout);
     } catch (const std::exception& error) {
       std::printf("| %s | failed: %s |\n", name.c_str(), error.what());

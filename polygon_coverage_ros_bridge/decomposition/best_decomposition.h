@@ -10,9 +10,9 @@ namespace kinematic_coverage {
 
 /// A cell and the lane directions that sweep it without leaving it.
 struct Cell {
-  Ring polygon;                           ///< counter-clockwise
-  std::vector<double> sweep_directions;   ///< best (smallest altitude) first
-  double altitude = 0.0;                  ///< across the best direction
+  Ring polygon;                          ///< counter-clockwise
+  std::vector<double> sweep_directions;  ///< best (smallest altitude) first
+  double altitude = 0.0;                 ///< across the best direction
 };
 
 /// The chosen decomposition of an area.

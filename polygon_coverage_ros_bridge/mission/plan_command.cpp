@@ -9,11 +9,9 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/json_object.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
-#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/validation/point_format.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
 namespace kinematic_coverage {
 namespace {
@@ -109,28 +107,13 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
       << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id
       << " (" << seconds(secondsSince(stage_start)) << ")\n";
 
-  const Clock::time_point planning_start = Clock::now();
-  stage_start = planning_start;
-  const PolygonValidator validator;
-  validator.validate(mission.polygon);
-  validator.validateEndpoint("start", mission.start, mission.polygon);
-  validator.validateEndpoint("goal", mission.goal, mission.polygon);
-  log << "validate: polygon, start and goal valid (" << seconds(secondsSince(stage_start)) << ")\n";
-
-  stage_start = Clock::now();
-  const CleanedPolygon cleaned = PolygonCleaner().clean(mission.polygon);
-  for (const std::string& warning : cleaned.warnings) log << "warning: " << warning << "\n";
-  log << "clean: free area " << formatNumber(area(cleaned.free_area)) << " m^2, "
-      << cleaned.free_area.holes.size() << " holes, " << cleaned.warnings.size()
-      << " cleaning steps (" << seconds(secondsSince(stage_start)) << ")\n";
-
-  const CoveragePlan plan =
-      CoveragePlanner(mission.parameters).plan(cleaned.free_area, mission.start, mission.goal);
-  const double planning_time_s = secondsSince(planning_start);
+  const PlannedMission planned = planMission(mission);
+  const CoveragePlan& plan = planned.plan;
+  const double planning_time_s = planned.planning_time_s;
   for (const PlanningStage& stage : plan.stages) {
     log << stage.name << ": " << stage.summary << " (" << seconds(stage.duration_s) << ")\n";
   }
-  for (const std::string& warning : plan.warnings) log << "warning: " << warning << "\n";
+  for (const std::string& warning : planned.warnings) log << "warning: " << warning << "\n";
 
   createDirectory(arguments.out_dir);
   const std::filesystem::path dir(arguments.out_dir);

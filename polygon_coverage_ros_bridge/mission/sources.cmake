@@ -2,6 +2,7 @@ kc_add_stage_library(kc_mission
   SOURCES
     polygon_coverage_ros_bridge/mission/json_object.cpp
     polygon_coverage_ros_bridge/mission/mission_file_reader.cpp
+    polygon_coverage_ros_bridge/mission/mission_planner.cpp
     polygon_coverage_ros_bridge/mission/plan_command.cpp
     polygon_coverage_ros_bridge/mission/pose_csv_reader.cpp
     polygon_coverage_ros_bridge/mission/waypoint_csv_writer.cpp

@@ -127,8 +127,8 @@ std::vector<Point2> simplifiedPath(const std::vector<Point2>& path, const std::v
     if (!result.empty() && i + 1 < points.size() && !kept[i]) {
       const Point2 in = points[i] - result.back();
       const Point2 out = points[i + 1] - points[i];
-      const bool straight_on = std::abs(cross({0, 0}, in, out)) <= tolerance * in.norm() &&
-                               in.dot(out) > 0.0;
+      const bool straight_on =
+          std::abs(cross({0, 0}, in, out)) <= tolerance * in.norm() && in.dot(out) > 0.0;
       if (straight_on) continue;
     }
     result.push_back(points[i]);
@@ -227,7 +227,8 @@ CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Poin
   instance.goal_cluster = 1;
   instance.costs.assign(n * n, 0.0);
   std::vector<double> pattern_costs;
-  for (const SweepPattern& pattern : patterns) pattern_costs.push_back(segment_cost.pathCost(pattern.path));
+  for (const SweepPattern& pattern : patterns)
+    pattern_costs.push_back(segment_cost.pathCost(pattern.path));
   // Node 0 (start) is source row 0; node 1 (goal) is target column 0; pattern k is
   // node k + 2, source row k + 1 and target column k + 1.
   auto sourceRow = [](std::size_t node) { return node == 0 ? 0 : node - 1; };

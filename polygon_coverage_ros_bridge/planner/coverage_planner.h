@@ -11,7 +11,7 @@ namespace kinematic_coverage {
 
 /// One stage of planning, for log lines and status messages.
 struct PlanningStage {
-  std::string name;     ///< "offset", "decompose", "sweeps", "transitions", "solve", "path"
+  std::string name;  ///< "offset", "decompose", "sweeps", "transitions", "solve", "path"
   double duration_s = 0.0;
   std::string summary;  ///< one line: what the stage produced
 };

@@ -13,8 +13,7 @@ FrustumSensor FrustumSensor::fromParameters(const PlannerParameters& parameters)
   }
   const double d = parameters.sensor_distance;
   return FrustumSensor(2.0 * d * std::tan(0.5 * parameters.lateral_fov),
-                       2.0 * d * std::tan(0.5 * parameters.onward_fov),
-                       parameters.lateral_overlap);
+                       2.0 * d * std::tan(0.5 * parameters.onward_fov), parameters.lateral_overlap);
 }
 
 Ring FrustumSensor::footprint(const Pose2& pose) const {

@@ -126,7 +126,8 @@ std::vector<SweepPattern> SweepPatternGenerator::patterns(const Ring& cell, doub
         const Point2& to = up ? lane.second : lane.first;
         if (!pattern.path.empty() && !segmentInside(cell_area, pattern.path.back(), from)) {
           const std::vector<Point2> join = transition(pattern.path.back(), from);
-          if (join.size() > 2) pattern.path.insert(pattern.path.end(), join.begin() + 1, join.end() - 1);
+          if (join.size() > 2)
+            pattern.path.insert(pattern.path.end(), join.begin() + 1, join.end() - 1);
         }
         pattern.path.push_back(from);
         pattern.path.push_back(to);

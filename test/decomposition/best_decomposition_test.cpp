@@ -19,9 +19,9 @@ TEST(BestDecomposition, LongRectangleIsSweptAlongItsLength) {
 }
 
 TEST(BestDecomposition, CellsHaveMonotoneDirectionsAndTile) {
-  const PolygonWithHoles region = {{{0, 0}, {30, 0}, {30, 30}, {0, 30}},
-                                 {{{8, 8}, {8, 12}, {12, 12}, {12, 8}},
-                                  {{18, 15}, {20, 22}, {24, 16}}}};
+  const PolygonWithHoles region = {
+      {{0, 0}, {30, 0}, {30, 30}, {0, 30}},
+      {{{8, 8}, {8, 12}, {12, 12}, {12, 8}}, {{18, 15}, {20, 22}, {24, 16}}}};
   for (auto type : {DecompositionType::kBoustrophedon, DecompositionType::kTrapezoidal}) {
     const Decomposition best = computeBestDecomposition(region, type);
     double total = 0.0;

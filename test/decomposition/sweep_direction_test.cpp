@@ -25,7 +25,7 @@ TEST(SweepDirection, AltitudeOfRectangle) {
 
 TEST(SweepDirection, MonotoneDetectsUShape) {
   const Ring u = {{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
-  EXPECT_FALSE(isMonotone(u, 0.0));     // horizontal lanes would leave it
+  EXPECT_FALSE(isMonotone(u, 0.0));      // horizontal lanes would leave it
   EXPECT_TRUE(isMonotone(u, M_PI / 2));  // vertical lines meet it once
   const Ring triangle = {{0, 0}, {4, 0}, {1, 3}};
   for (double direction = 0.0; direction < M_PI; direction += 0.1) {

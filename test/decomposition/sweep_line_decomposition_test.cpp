@@ -77,9 +77,9 @@ TEST(SweepLineDecomposition, UShapeSplitsAtCriticalPoint) {
 
 TEST(SweepLineDecomposition, HolesTouchingAtAPinchPoint) {
   // Two holes meeting at one vertex, lanes parallel to their shared diagonal.
-  const PolygonWithHoles area = {{{0, 0}, {20, 0}, {20, 20}, {0, 20}},
-                                 {{{5, 5}, {5, 10}, {10, 10}, {10, 5}},
-                                  {{10, 10}, {10, 15}, {15, 15}, {15, 10}}}};
+  const PolygonWithHoles area = {
+      {{0, 0}, {20, 0}, {20, 20}, {0, 20}},
+      {{{5, 5}, {5, 10}, {10, 10}, {10, 5}}, {{10, 10}, {10, 15}, {15, 15}, {15, 10}}}};
   const SweepLineDecomposition decomposition(DecompositionType::kBoustrophedon);
   for (double direction : {0.0, M_PI / 4, M_PI / 2, 1.0}) {
     SCOPED_TRACE(direction);

@@ -14,9 +14,9 @@
 namespace kinematic_coverage {
 namespace {
 
-const PolygonWithHoles kLake = {{{0, 0}, {30, 0}, {30, 30}, {0, 30}},
-                                {{{7, 9}, {7, 15}, {12, 15}, {12, 9}},
-                                 {{18, 17}, {16, 21}, {19, 25}, {24, 23}, {23, 18}}}};
+const PolygonWithHoles kLake = {
+    {{0, 0}, {30, 0}, {30, 30}, {0, 30}},
+    {{{7, 9}, {7, 15}, {12, 15}, {12, 9}}, {{18, 17}, {16, 21}, {19, 25}, {24, 23}, {23, 18}}}};
 
 TEST(CoveragePlanner, LakeMissionPlanIsValid) {
   const PlannerParameters parameters;
@@ -24,7 +24,7 @@ TEST(CoveragePlanner, LakeMissionPlanIsValid) {
   expectValidPlan(kLake, plan, parameters, {0.5, 5}, {29, 29});
   EXPECT_GE(plan.cells.size(), 3u);
   EXPECT_GT(plan.time_cost_s, plan.path_length_m / parameters.v_max);
-  EXPECT_EQ(plan.first_inside, 1u);  // (0.5, 5) is in the 1 m wall band
+  EXPECT_EQ(plan.first_inside, 1u);                        // (0.5, 5) is in the 1 m wall band
   EXPECT_EQ(plan.last_inside, plan.waypoints.size() - 1);  // (29, 29): the offset corner
   ASSERT_FALSE(plan.stages.empty());
 }
@@ -45,8 +45,7 @@ TEST(CoveragePlanner, StartInsideAHoleIsRejected) {
     planner.plan(kLake, {9, 10}, {29, 29});
     FAIL() << "expected InvalidInputError";
   } catch (const InvalidInputError& error) {
-    EXPECT_NE(std::string(error.what()).find("start (9, 10) lies inside hole 0"),
-              std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("start (9, 10) lies inside hole 0"), std::string::npos)
         << error.what();
   }
 }

@@ -4,34 +4,16 @@
 
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "test/planner/plan_properties.h"
 
 namespace kinematic_coverage {
 namespace {
 
-struct PlannedMission {
-  Mission mission;
-  PolygonWithHoles free_area;
-  CoveragePlan plan;
-};
-
-PlannedMission planMissionFile(const std::string& name) {
-  PlannedMission result;
-  result.mission = MissionFileReader().read(std::string(KC_SOURCE_DIR) + "/config/missions/" + name);
-  PolygonValidator().validate(result.mission.polygon);
-  result.free_area = PolygonCleaner().clean(result.mission.polygon).free_area;
-  result.plan = CoveragePlanner(result.mission.parameters)
-                    .plan(result.free_area, result.mission.start, result.mission.goal);
-  return result;
-}
-
 /// The number of lanes the planner lays in the decomposition it chose.
-std::size_t laneCount(const PlannedMission& planned) {
-  const PlannerParameters& parameters = planned.mission.parameters;
+std::size_t laneCount(const Mission& mission, const PlannedMission& planned) {
+  const PlannerParameters& parameters = mission.parameters;
   const FrustumSensor sensor = FrustumSensor::fromParameters(parameters);
   const SweepPatternGenerator generator(
       sensor, SweepPatternGenerator::laneEndInset(sensor, parameters.wall_distance));
@@ -45,17 +27,19 @@ std::size_t laneCount(const PlannedMission& planned) {
 }
 
 TEST(MissionPlans, Lake30x30) {
-  const PlannedMission planned = planMissionFile("lake_30x30.yaml");
-  expectValidPlan(planned.free_area, planned.plan, planned.mission.parameters,
-                  planned.mission.start, planned.mission.goal);
+  const Mission mission =
+      MissionFileReader().read(std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml");
+  const PlannedMission planned = planMission(mission);
+  expectValidPlan(planned.free_area, planned.plan, mission.parameters, mission.start, mission.goal);
   EXPECT_GE(planned.plan.cells.size(), 2u);
 }
 
 TEST(MissionPlans, Lake7x5HasAtLeastFiveSweeps) {
-  const PlannedMission planned = planMissionFile("lake_7_5.yaml");
-  expectValidPlan(planned.free_area, planned.plan, planned.mission.parameters,
-                  planned.mission.start, planned.mission.goal);
-  EXPECT_GE(laneCount(planned), 5u);
+  const Mission mission =
+      MissionFileReader().read(std::string(KC_SOURCE_DIR) + "/config/missions/lake_7_5.yaml");
+  const PlannedMission planned = planMission(mission);
+  expectValidPlan(planned.free_area, planned.plan, mission.parameters, mission.start, mission.goal);
+  EXPECT_GE(laneCount(mission, planned), 5u);
 }
 
 }  // namespace

@@ -8,8 +8,7 @@
 namespace kinematic_coverage {
 
 void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan,
-                     const PlannerParameters& parameters, const Point2& start,
-                     const Point2& goal) {
+                     const PlannerParameters& parameters, const Point2& start, const Point2& goal) {
   const auto& waypoints = plan.waypoints;
   ASSERT_GE(waypoints.size(), 2u);
   EXPECT_NEAR((waypoints.front().position() - start).norm(), 0.0, 1e-9);
@@ -22,9 +21,9 @@ void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan
     const Point2 b = waypoints[i + 1].position();
     length += (b - a).norm();
     EXPECT_GT((b - a).norm(), 0.0) << "repeated waypoint " << i;
-    EXPECT_NEAR(std::remainder(waypoints[i].yaw - std::atan2(b.y() - a.y(), b.x() - a.x()),
-                               2 * M_PI),
-                0.0, 1e-9);
+    EXPECT_NEAR(
+        std::remainder(waypoints[i].yaw - std::atan2(b.y() - a.y(), b.x() - a.x()), 2 * M_PI), 0.0,
+        1e-9);
     if (i >= plan.first_inside && i + 1 <= plan.last_inside) {
       EXPECT_TRUE(segmentInside(plan.offset_free_area, a, b, kLegTolerance))
           << "leg " << i << " from " << a.transpose() << " to " << b.transpose()

@@ -15,7 +15,6 @@ constexpr double kLegTolerance = 1e-6;
 /// the headings of the legs, the metrics add up, and the legs' swept footprints cover at
 /// least 99 % of the reachable area.
 void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan,
-                     const PlannerParameters& parameters, const Point2& start,
-                     const Point2& goal);
+                     const PlannerParameters& parameters, const Point2& start, const Point2& goal);
 
 }  // namespace kinematic_coverage

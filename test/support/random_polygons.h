@@ -34,7 +34,8 @@ inline double ringDistance(const Ring& a, const Ring& b) {
     for (std::size_t j = 0; j < b.size(); ++j) {
       const Point2& r = b[j];
       const Point2& t = b[(j + 1) % b.size()];
-      const bool crossing = cross(p, q, r) * cross(p, q, t) < 0.0 && cross(r, t, p) * cross(r, t, q) < 0.0;
+      const bool crossing =
+          cross(p, q, r) * cross(p, q, t) < 0.0 && cross(r, t, p) * cross(r, t, q) < 0.0;
       if (crossing) return 0.0;
       best = std::min({best, distanceToSegment(p, r, t), distanceToSegment(q, r, t),
                        distanceToSegment(r, p, q), distanceToSegment(t, p, q)});

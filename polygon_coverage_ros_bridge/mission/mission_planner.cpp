@@ -1,0 +1,51 @@
+#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+
+#include <chrono>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+
+namespace kinematic_coverage {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+PlannedMission planMission(const Mission& mission) {
+  const Clock::time_point start = Clock::now();
+  std::vector<PlanningStage> stages;
+
+  Clock::time_point stage_start = Clock::now();
+  const PolygonValidator validator;
+  validator.validate(mission.polygon);
+  validator.validateEndpoint("start", mission.start, mission.polygon);
+  validator.validateEndpoint("goal", mission.goal, mission.polygon);
+  stages.push_back({"validate", secondsSince(stage_start), "polygon, start and goal valid"});
+
+  stage_start = Clock::now();
+  CleanedPolygon cleaned = PolygonCleaner().clean(mission.polygon);
+  std::ostringstream summary;
+  summary << "free area " << area(cleaned.free_area) << " m^2, " << cleaned.free_area.holes.size()
+          << " holes, " << cleaned.warnings.size() << " cleaning steps";
+  stages.push_back({"clean", secondsSince(stage_start), summary.str()});
+
+  PlannedMission planned;
+  planned.plan =
+      CoveragePlanner(mission.parameters).plan(cleaned.free_area, mission.start, mission.goal);
+  planned.planning_time_s = secondsSince(start);
+  planned.plan.stages.insert(planned.plan.stages.begin(), stages.begin(), stages.end());
+  planned.warnings = std::move(cleaned.warnings);
+  planned.warnings.insert(planned.warnings.end(), planned.plan.warnings.begin(),
+                          planned.plan.warnings.end());
+  planned.free_area = std::move(cleaned.free_area);
+  return planned;
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/mission/mission.h"
+#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+
+namespace kinematic_coverage {
+
+/// A mission planned end to end, with what every consumer reports.
+struct PlannedMission {
+  /// The cleaned free area the plan was made for (collision checks use it).
+  PolygonWithHoles free_area;
+  /// The plan; its stages start with "validate" and "clean".
+  CoveragePlan plan;
+  /// Cleaning warnings first, then the planner's.
+  std::vector<std::string> warnings;
+  /// Validation, cleaning and planning, seconds.
+  double planning_time_s = 0.0;
+};
+
+/// Validates the mission's polygon, start and goal (INTERFACE section 3), cleans the
+/// polygon and plans it: the one sequence that coverage_tool, the nodes and the
+/// benchmarks share. Throws InvalidInputError for invalid input or an impossible request.
+PlannedMission planMission(const Mission& mission);
+
+}  // namespace kinematic_coverage
