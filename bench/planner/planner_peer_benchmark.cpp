@@ -97,18 +97,24 @@ int main(int argc, char** argv) {
       const CoveragePlan& plan = planned.plan;
       std::sort(times.begin(), times.end());
       const double median_time = times[times.size() / 2];
-      const auto it = peer.find(name);
-      const PeerFigures reference = it != peer.end() ? it->second : PeerFigures{};
       const double seen = kinematic_coverage::waypointPathReachableCoveragePercent(
           planned.free_area, plan.offset_free_area,
           kinematic_coverage::FrustumSensor::fromParameters(mission.parameters), plan.waypoints);
-      std::printf(
-          "| %s | %zu (%d) | %zu (%d) | %.2f (%.2f) | %.2f (%.2f) | %.3f | %.3f (%.2f) | %.2f |\n",
-          name.c_str(), plan.cells.size(), reference.cells, plan.waypoints.size(),
-          reference.waypoints, plan.path_length_m, reference.path_length_m, plan.time_cost_s,
-          reference.time_cost_s,
-          reference.time_cost_s > 0 ? plan.time_cost_s / reference.time_cost_s : 0.0, median_time,
-          reference.planning_time_s, seen);
+      const auto it = peer.find(name);
+      if (it == peer.end()) {
+        std::printf("| %s | %zu | %zu | %.2f | %.2f | - | %.4f | %.2f |\n", name.c_str(),
+                    plan.cells.size(), plan.waypoints.size(), plan.path_length_m, plan.time_cost_s,
+                    median_time, seen);
+      } else {
+        const PeerFigures& reference = it->second;
+        std::printf(
+            "| %s | %zu (%d) | %zu (%d) | %.2f (%.2f) | %.2f (%.2f) | %.3f | %.4f (%.2f) | %.2f "
+            "|\n",
+            name.c_str(), plan.cells.size(), reference.cells, plan.waypoints.size(),
+            reference.waypoints, plan.path_length_m, reference.path_length_m, plan.time_cost_s,
+            reference.time_cost_s, plan.time_cost_s / reference.time_cost_s, median_time,
+            reference.planning_time_s, seen);
+      }
       std::fflush(stdout);
     } catch (const std::exception& error) {
       std::printf("| %s | failed: %s |\n", name.c_str(), error.what());

@@ -1,0 +1,213 @@
+#include "polygon_coverage_ros_bridge/gtsp/memetic_gtsp_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kinematic_coverage {
+namespace {
+
+/// Default number of cluster neighbours that local search moves consider.
+constexpr int kDefaultNeighbourCount = 20;
+/// Share of children made by crossover (the others by mutation of one parent).
+constexpr double kCrossoverShare = 0.8;
+/// Population when not given: kPopulationBase + clusters / 2, at most kMaxPopulation.
+constexpr int kPopulationBase = 10;
+constexpr int kMaxPopulation = 100;
+/// Generations without improvement before stopping, when not given: kStallBase +
+/// clusters / 3, clamped to [kMinStallGenerations, kMaxStallGenerations].
+constexpr int kStallBase = 20;
+constexpr int kMinStallGenerations = 30;
+constexpr int kMaxStallGenerations = 80;
+
+/// Tours whose costs differ by less than this (relative) count as equal: duplicates in the
+/// population, and no improvement for the stopping rule.
+constexpr double kRelativeCostTolerance = 1e-9;
+/// Longest time limit honoured (seconds, about 11 days): keeps the deadline representable.
+constexpr double kMaxTimeLimit = 1e6;
+
+/// The cycle's anchor: its smallest cluster (cheapest cluster optimization).
+int chooseAnchor(const GtspInstance& instance) {
+  if (instance.isPath()) return -1;
+  int anchor = 0;
+  for (std::size_t c = 1; c < instance.clusters.size(); ++c) {
+    if (instance.clusters[c].size() < instance.clusters[anchor].size())
+      anchor = static_cast<int>(c);
+  }
+  return anchor;
+}
+
+}  // namespace
+
+MemeticGtspSolver::MemeticGtspSolver(const GtspInstance& instance, const GtspOptions& options)
+    : instance_(instance),
+      options_(options),
+      anchor_cluster_(chooseAnchor(instance)),
+      random_(options.seed),
+      search_(instance, anchor_cluster_,
+              options.neighbour_count > 0 ? options.neighbour_count : kDefaultNeighbourCount) {}
+
+std::vector<int> MemeticGtspSolver::randomSequence() {
+  std::vector<int> interior;
+  for (int c = 0; c < static_cast<int>(instance_.clusters.size()); ++c) {
+    if (c != anchor_cluster_ && c != instance_.start_cluster && c != instance_.goal_cluster) {
+      interior.push_back(instance_.clusters[c][randomIndex(instance_.clusters[c].size())]);
+    }
+  }
+  for (std::size_t i = interior.size(); i > 1; --i)
+    std::swap(interior[i - 1], interior[randomIndex(i)]);
+  std::vector<int> sequence;
+  if (instance_.isPath()) {
+    sequence.push_back(instance_.clusters[instance_.start_cluster].front());
+    sequence.insert(sequence.end(), interior.begin(), interior.end());
+    sequence.push_back(instance_.clusters[instance_.goal_cluster].front());
+  } else {
+    const int anchor = instance_.clusters[anchor_cluster_].front();
+    sequence.push_back(anchor);
+    sequence.insert(sequence.end(), interior.begin(), interior.end());
+    sequence.push_back(anchor);
+  }
+  return sequence;
+}
+
+std::vector<int> MemeticGtspSolver::sequenceFromTour(const std::vector<int>& tour) const {
+  if (instance_.isPath()) return tour;
+  std::size_t first = 0;
+  while (search_.clusterOf(tour[first]) != anchor_cluster_) ++first;
+  std::vector<int> sequence;
+  for (std::size_t i = 0; i <= tour.size(); ++i)
+    sequence.push_back(tour[(first + i) % tour.size()]);
+  return sequence;
+}
+
+std::vector<int> MemeticGtspSolver::crossover(const std::vector<int>& first,
+                                              const std::vector<int>& second) {
+  const std::size_t interior = first.size() - 2;
+  std::size_t a = randomIndex(interior);
+  std::size_t b = randomIndex(interior);
+  if (a > b) std::swap(a, b);
+  std::vector<int> child(first.size(), -1);
+  child.front() = first.front();
+  child.back() = first.back();
+  std::vector<bool> used(instance_.clusters.size(), false);
+  for (std::size_t i = a; i <= b; ++i) {
+    child[i + 1] = first[i + 1];
+    used[search_.clusterOf(first[i + 1])] = true;
+  }
+  std::size_t source = (b + 1) % interior;
+  for (std::size_t k = 0; k < interior - (b - a + 1); ++k) {
+    const std::size_t target = (b + 1 + k) % interior;
+    while (used[search_.clusterOf(second[source + 1])]) source = (source + 1) % interior;
+    child[target + 1] = second[source + 1];
+    used[search_.clusterOf(second[source + 1])] = true;
+  }
+  return child;
+}
+
+void MemeticGtspSolver::mutate(std::vector<int>& sequence) {
+  const std::size_t interior = sequence.size() - 2;
+  if (interior < 2) return;
+  if (interior < 4) {
+    std::swap(sequence[1 + randomIndex(interior)], sequence[1 + randomIndex(interior)]);
+    return;
+  }
+  std::size_t cuts[3] = {1 + randomIndex(interior - 1), 1 + randomIndex(interior - 1),
+                         1 + randomIndex(interior - 1)};
+  std::sort(cuts, cuts + 3);
+  // Interior [0, c0) [c0, c1) [c1, c2) [c2, end) becomes [0, c0) [c1, c2) [c0, c1) [c2, end).
+  std::rotate(sequence.begin() + 1 + static_cast<std::ptrdiff_t>(cuts[0]),
+              sequence.begin() + 1 + static_cast<std::ptrdiff_t>(cuts[1]),
+              sequence.begin() + 1 + static_cast<std::ptrdiff_t>(cuts[2]));
+}
+
+std::size_t MemeticGtspSolver::tournament(const std::vector<Individual>& population) {
+  const std::size_t a = randomIndex(population.size());
+  const std::size_t b = randomIndex(population.size());
+  return population[a].cost <= population[b].cost ? a : b;
+}
+
+GtspSolution MemeticGtspSolver::toSolution(const Individual& individual) const {
+  GtspSolution solution;
+  solution.nodes = individual.sequence;
+  if (!instance_.isPath()) solution.nodes.pop_back();
+  solution.cost = gtspTourCost(instance_, solution.nodes);
+  return solution;
+}
+
+GtspSolution MemeticGtspSolver::solve() {
+  // A NaN, negative or huge limit must not overflow the clock: clamp it to [0, kMaxTimeLimit].
+  const double limit =
+      options_.time_limit_s > 0.0 ? std::min(options_.time_limit_s, kMaxTimeLimit) : 0.0;
+  deadline_ = Clock::now() +
+              std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
+  const int m = static_cast<int>(instance_.clusters.size());
+  const int population_size = options_.population_size > 0
+                                  ? options_.population_size
+                                  : std::min(kPopulationBase + m / 2, kMaxPopulation);
+  const int stall_limit =
+      options_.stall_generations > 0
+          ? options_.stall_generations
+          : std::clamp(kStallBase + m / 3, kMinStallGenerations, kMaxStallGenerations);
+  std::vector<Individual> population;
+  auto distinct = [&](const std::vector<Individual>& members, double cost) {
+    for (const Individual& other : members) {
+      if (std::abs(other.cost - cost) <= kRelativeCostTolerance * std::max(1.0, std::abs(cost))) {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (!options_.warm_start.empty()) {
+    Individual warm{sequenceFromTour(options_.warm_start), 0.0};
+    warm.cost = search_.improve(warm.sequence, deadline_);
+    population.push_back(std::move(warm));
+  }
+  const bool trivial = static_cast<int>(randomSequence().size()) <= 3;
+  for (int attempt = 0;
+       attempt < 3 * population_size && static_cast<int>(population.size()) < population_size &&
+       (population.empty() || Clock::now() < deadline_);
+       ++attempt) {
+    Individual individual{randomSequence(), 0.0};
+    individual.cost = search_.improve(individual.sequence, deadline_);
+    if (distinct(population, individual.cost)) population.push_back(std::move(individual));
+    if (trivial) break;
+  }
+  auto byCost = [](const Individual& a, const Individual& b) { return a.cost < b.cost; };
+  std::sort(population.begin(), population.end(), byCost);
+  if (trivial) return toSolution(population.front());
+  int stall = 0;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  while (stall < stall_limit && Clock::now() < deadline_) {
+    std::vector<Individual> pool = population;
+    for (int k = 0; k < population_size; ++k) {
+      Individual child;
+      const std::size_t parent = tournament(population);
+      if (population.size() >= 2 && unit(random_) < kCrossoverShare) {
+        child.sequence =
+            crossover(population[parent].sequence, population[tournament(population)].sequence);
+      } else {
+        child.sequence = population[parent].sequence;
+        mutate(child.sequence);
+      }
+      child.cost = search_.improve(child.sequence, deadline_);
+      pool.push_back(std::move(child));
+    }
+    std::stable_sort(pool.begin(), pool.end(), byCost);
+    const double previous_best = population.front().cost;
+    population.clear();
+    for (Individual& individual : pool) {
+      if (static_cast<int>(population.size()) < population_size &&
+          distinct(population, individual.cost)) {
+        population.push_back(std::move(individual));
+      }
+    }
+    if (population.front().cost <
+        previous_best - kRelativeCostTolerance * std::max(1.0, previous_best)) {
+      stall = 0;
+    } else {
+      ++stall;
+    }
+  }
+  return toSolution(population.front());
+}
+
+}  // namespace kinematic_coverage
