@@ -18,7 +18,7 @@ double secondsSince(Clock::time_point start) {
 
 }  // namespace
 
-PlannedMission planMission(const Mission& mission) {
+PlannedMission planMission(const Mission& mission, const StageCallback& on_stage) {
   const Clock::time_point start = Clock::now();
   std::vector<PlanningStage> stages;
 
@@ -28,6 +28,7 @@ PlannedMission planMission(const Mission& mission) {
   validator.validateEndpoint("start", mission.start, mission.polygon);
   validator.validateEndpoint("goal", mission.goal, mission.polygon);
   stages.push_back({"validate", secondsSince(stage_start), "polygon, start and goal valid"});
+  if (on_stage) on_stage(stages.back());
 
   stage_start = Clock::now();
   CleanedPolygon cleaned = PolygonCleaner().clean(mission.polygon);
@@ -35,10 +36,11 @@ PlannedMission planMission(const Mission& mission) {
   summary << "free area " << area(cleaned.free_area) << " m^2, " << cleaned.free_area.holes.size()
           << " holes, " << cleaned.warnings.size() << " cleaning steps";
   stages.push_back({"clean", secondsSince(stage_start), summary.str()});
+  if (on_stage) on_stage(stages.back());
 
   PlannedMission planned;
-  planned.plan =
-      CoveragePlanner(mission.parameters).plan(cleaned.free_area, mission.start, mission.goal);
+  planned.plan = CoveragePlanner(mission.parameters)
+                     .plan(cleaned.free_area, mission.start, mission.goal, on_stage);
   planned.planning_time_s = secondsSince(start);
   planned.plan.stages.insert(planned.plan.stages.begin(), stages.begin(), stages.end());
   planned.warnings = std::move(cleaned.warnings);

@@ -22,7 +22,8 @@ struct PlannedMission {
 
 /// Validates the mission's polygon, start and goal (INTERFACE section 3), cleans the
 /// polygon and plans it: the one sequence that coverage_tool, the nodes and the
-/// benchmarks share. Throws InvalidInputError for invalid input or an impossible request.
-PlannedMission planMission(const Mission& mission);
+/// benchmarks share. `on_stage`, when given, hears of every stage as it finishes. Throws
+/// InvalidInputError for invalid input or an impossible request.
+PlannedMission planMission(const Mission& mission, const StageCallback& on_stage = {});
 
 }  // namespace kinematic_coverage

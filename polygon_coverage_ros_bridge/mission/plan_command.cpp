@@ -100,20 +100,22 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
     out << usage();
     return;
   }
-  std::ostringstream log;
+  // Progress goes to `out` as each stage finishes; warnings and notes go to `err` only
+  // once the command has succeeded, so that a failure prints just its one error line.
   Clock::time_point stage_start = Clock::now();
   const Mission mission = MissionFileReader().read(arguments.mission_path, arguments.overrides);
-  log << "load: " << arguments.mission_path << ": hull of " << mission.polygon.hull.size()
+  out << "load: " << arguments.mission_path << ": hull of " << mission.polygon.hull.size()
       << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id
-      << " (" << seconds(secondsSince(stage_start)) << ")\n";
+      << " (" << seconds(secondsSince(stage_start)) << ")" << std::endl;
 
-  const PlannedMission planned = planMission(mission);
+  const PlannedMission planned = planMission(mission, [&](const PlanningStage& stage) {
+    out << stage.name << ": " << stage.summary << " (" << seconds(stage.duration_s) << ")"
+        << std::endl;
+  });
   const CoveragePlan& plan = planned.plan;
   const double planning_time_s = planned.planning_time_s;
-  for (const PlanningStage& stage : plan.stages) {
-    log << stage.name << ": " << stage.summary << " (" << seconds(stage.duration_s) << ")\n";
-  }
-  for (const std::string& warning : planned.warnings) log << "warning: " << warning << "\n";
+  std::ostringstream notes;
+  for (const std::string& warning : planned.warnings) notes << "warning: " << warning << "\n";
 
   createDirectory(arguments.out_dir);
   const std::filesystem::path dir(arguments.out_dir);
@@ -127,11 +129,11 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
       .set("path_length_m", plan.path_length_m)
       .set("time_cost_s", plan.time_cost_s);
   metrics.write(metrics_path);
-  log << "write: " << plan.waypoints.size() << " waypoints, planning took "
+  notes << "note: trajectory.csv and plot.png are not produced yet (trajectory.csv arrives with "
+           "issue 4, plot.png with issue 5)\n";
+  err << notes.str();
+  out << "write: " << plan.waypoints.size() << " waypoints, planning took "
       << seconds(planning_time_s) << "\n";
-  log << "note: trajectory.csv and plot.png are not produced yet (trajectory.csv arrives with "
-         "issue 4, plot.png with issue 5)\n";
-  err << log.str();
   out << "wrote " << waypoints_path << " " << metrics_path << "\n";
 }
 

@@ -142,11 +142,12 @@ CoveragePlanner::CoveragePlanner(PlannerParameters parameters)
     : parameters_(std::move(parameters)) {}
 
 CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Point2& start,
-                                   const Point2& goal) const {
+                                   const Point2& goal, const StageCallback& on_stage) const {
   const Clock::time_point planning_start = Clock::now();
   CoveragePlan plan;
   auto stage = [&](const std::string& name, Clock::time_point since, std::string summary) {
     plan.stages.push_back({name, secondsSince(since), std::move(summary)});
+    if (on_stage) on_stage(plan.stages.back());
   };
 
   double scale = 1.0;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,9 @@ struct PlanningStage {
   double duration_s = 0.0;
   std::string summary;  ///< one line: what the stage produced
 };
+
+/// Called as each stage finishes, for progress lines while a large plan runs.
+using StageCallback = std::function<void(const PlanningStage&)>;
 
 /// A coverage waypoint path and what the planner learned on the way.
 struct CoveragePlan {
@@ -49,8 +53,9 @@ class CoveragePlanner {
   /// Plans over `free_area` (cleaned: CCW hull, CW holes, no crossings).
   /// Throws InvalidInputError for an impossible request (empty offset free area, a
   /// start or goal whose joining leg crosses a hole, ...).
-  CoveragePlan plan(const PolygonWithHoles& free_area, const Point2& start,
-                    const Point2& goal) const;
+  /// `on_stage`, when given, hears of every stage as it finishes.
+  CoveragePlan plan(const PolygonWithHoles& free_area, const Point2& start, const Point2& goal,
+                    const StageCallback& on_stage = {}) const;
 
  private:
   PlannerParameters parameters_;

@@ -169,15 +169,22 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
       runTool("plan '" + std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml' --out '" +
               out_dir + "' --set lateral_overlap=0.5");
   ASSERT_EQ(run.exit_status, 0);
-  EXPECT_EQ(run.out, "wrote " + out_dir + "/waypoints.csv " + out_dir + "/metrics.json\n");
+  const std::vector<std::string> out_lines = lines(run.out);
+  ASSERT_FALSE(out_lines.empty());
+  EXPECT_EQ(out_lines.back(), "wrote " + out_dir + "/waypoints.csv " + out_dir + "/metrics.json");
   ASSERT_FALSE(run.err_lines.empty());
   EXPECT_EQ(run.err_lines.back().rfind("note: trajectory.csv and plot.png are not produced yet", 0),
             0u);
-  for (const std::string stage : {"load: ", "validate: ", "clean: ", "write: "}) {
-    EXPECT_EQ(std::count_if(run.err_lines.begin(), run.err_lines.end(),
-                            [&](const std::string& line) { return line.rfind(stage, 0) == 0; }),
-              1)
-        << stage;
+  // One progress line per stage, in order, on stdout.
+  std::size_t previous = 0;
+  for (const std::string stage : {"load: ", "validate: ", "clean: ", "offset: ", "decompose: ",
+                                  "sweeps: ", "transitions: ", "solve: ", "path: ", "write: "}) {
+    const auto it = std::find_if(out_lines.begin(), out_lines.end(), [&](const std::string& line) {
+      return line.rfind(stage, 0) == 0;
+    });
+    ASSERT_NE(it, out_lines.end()) << stage;
+    EXPECT_GE(static_cast<std::size_t>(it - out_lines.begin()), previous) << stage;
+    previous = static_cast<std::size_t>(it - out_lines.begin());
   }
   EXPECT_FALSE(std::filesystem::exists(out_dir + "/trajectory.csv"));
   EXPECT_FALSE(std::filesystem::exists(out_dir + "/plot.png"));
