@@ -13,13 +13,17 @@ namespace {
 
 /// Tolerance as a fraction of the map's extent (the brief's ~1e-9 relative).
 constexpr double kRelativeTolerance = 1e-9;
-/// Largest angle within which a segment counts as running along an edge's ray.
-constexpr double kMaxAngleTolerance = 1e-6;
 /// Grid cells per edge, and the most cells along one axis.
 constexpr double kCellsPerEdge = 2.0;
 constexpr int kMaxCellsPerAxis = 512;
 
 double crossOf(const Point2& u, const Point2& v) { return u.x() * v.y() - u.y() * v.x(); }
+
+/// The largest angle by which a straight piece of the given length, leaving a point on a
+/// ray, may turn off the ray and stay within `tolerance` of it: length * sin(angle).
+double angleWithin(double tolerance, double length) {
+  return std::asin(std::min(1.0, tolerance / length));
+}
 
 /// The ring without repeated consecutive vertices, validated and oriented.
 Ring cleanedRing(const Ring& ring, const std::string& name, bool counter_clockwise,
@@ -241,7 +245,31 @@ BoundaryGrid::Contact BoundaryGrid::contactOf(const Point2& p) const {
       contact.edges.push_back(e);
     }
   }
+  // Within the tolerance of two edges that meet at a vertex with wall in the narrow angle
+  // between them (a reflex corner, or a pinch), p lies on that wall's sliver, narrower than
+  // the tolerance there: the vertex's rays judge its directions, the free side being the
+  // union of the edges' free sides there, not the intersection that their half-planes
+  // give. In a sliver of free area the intersection is right: the edges alone judge.
+  for (std::size_t i = 0; i < contact.edges.size() && contact.cluster < 0; ++i) {
+    for (std::size_t j = i + 1; j < contact.edges.size() && contact.cluster < 0; ++j) {
+      contact.cluster = wallCornerBetween(contact.edges[i], contact.edges[j]);
+    }
+  }
   return contact;
+}
+
+int BoundaryGrid::wallCornerBetween(int e, int f) const {
+  for (int k : {start_cluster_[e], end_cluster_[e]}) {
+    if (k != start_cluster_[f] && k != end_cluster_[f]) continue;
+    const Point2& corner = clusters_[k].position;
+    auto away = [&](int edge) {
+      const Point2& far_end = start_cluster_[edge] == k ? edge_end_[edge] : edge_start_[edge];
+      return Point2((far_end - corner).normalized());
+    };
+    const Point2 middle = away(e) + away(f);  // bisects the narrow angle
+    if (middle.squaredNorm() > 0.0 && !directionFree(k, middle, 0.0)) return k;
+  }
+  return -1;
 }
 
 bool BoundaryGrid::directionFree(int cluster, const Point2& direction,
@@ -264,22 +292,26 @@ bool BoundaryGrid::directionFree(int cluster, const Point2& direction,
   return free;
 }
 
-bool BoundaryGrid::endAllows(const Contact& contact, const Point2& direction,
+bool BoundaryGrid::endAllows(const Contact& contact, const Point2& end, const Point2& far_end,
                              double angle_tolerance) const {
-  if (contact.cluster >= 0) return directionFree(contact.cluster, direction, angle_tolerance);
+  if (contact.cluster >= 0) {
+    return directionFree(contact.cluster, far_end - end, angle_tolerance);
+  }
   for (int e : contact.edges) {
     const Point2 along = edge_end_[e] - edge_start_[e];
-    // The far end may lie right of the edge's line by at most the tolerance.
-    if (crossOf(along, direction) < -tolerance_ * along.norm()) return false;
+    // The far end may lie right of the edge's line by at most the tolerance (measured
+    // from the line itself: the end may lie up to the tolerance off it either way).
+    if (crossOf(along, far_end - edge_start_[e]) < -tolerance_ * along.norm()) return false;
   }
   return true;
 }
 
 bool BoundaryGrid::touches(const Contact& contact, int edge) const {
-  if (contact.cluster >= 0) {
-    return contact.cluster == start_cluster_[edge] || contact.cluster == end_cluster_[edge];
+  if (!contact.edges.empty()) {
+    return std::find(contact.edges.begin(), contact.edges.end(), edge) != contact.edges.end();
   }
-  return std::find(contact.edges.begin(), contact.edges.end(), edge) != contact.edges.end();
+  return contact.cluster >= 0 &&
+         (contact.cluster == start_cluster_[edge] || contact.cluster == end_cluster_[edge]);
 }
 
 bool BoundaryGrid::segmentInside(const Point2& a, const Point2& b) const {
@@ -293,8 +325,9 @@ bool BoundaryGrid::segmentInside(const Point2& a, const Contact& a_contact, cons
   const double length = std::sqrt(length_sq);
   if (!(length > tolerance_)) return length <= tolerance_;
   // The segment may deviate from an edge's ray by the tolerance over its length.
-  const double angle_tolerance = std::min(tolerance_ / length, kMaxAngleTolerance);
-  if (!endAllows(a_contact, d, angle_tolerance) || !endAllows(b_contact, -d, angle_tolerance)) {
+  const double angle_tolerance = angleWithin(tolerance_, length);
+  if (!endAllows(a_contact, a, b, angle_tolerance) ||
+      !endAllows(b_contact, b, a, angle_tolerance)) {
     return false;
   }
   const double side_tolerance = tolerance_ * length;  // cross products scale with |d|
@@ -307,13 +340,19 @@ bool BoundaryGrid::segmentInside(const Point2& a, const Contact& a_contact, cons
         (side_s < -side_tolerance && side_t < -side_tolerance)) {
       return true;
     }
-    // A vertex on the open segment: both directions must be free there.
+    // A vertex on the open segment: both directions must be free there. The vertex lies
+    // up to the tolerance off the segment's line, so each part, from the vertex to an
+    // end, may deviate from a ray by the tolerance over that part's own length: near an
+    // end this angle is large (a boundary end just past a corner sees along the corner's
+    // other edge) while the part still strays at most the tolerance from the boundary.
     if (std::abs(side_s) <= side_tolerance) {
       const double along = (s - a).dot(d);
-      if (along > 0.0 && along < length_sq && (s - a).norm() > tolerance_ &&
-          (s - b).norm() > tolerance_) {
+      const double to_a = (s - a).norm();
+      const double to_b = (s - b).norm();
+      if (along > 0.0 && along < length_sq && to_a > tolerance_ && to_b > tolerance_) {
         const int k = start_cluster_[e];
-        if (!directionFree(k, d, angle_tolerance) || !directionFree(k, -d, angle_tolerance)) {
+        if (!directionFree(k, d, angleWithin(tolerance_, to_b)) ||
+            !directionFree(k, -d, angleWithin(tolerance_, to_a))) {
           return false;
         }
       }

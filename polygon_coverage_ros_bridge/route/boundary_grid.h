@@ -18,8 +18,8 @@ class BoundaryGrid {
  public:
   /// Where a point touches the boundary, for the local test at a segment's end.
   struct Contact {
-    int cluster = -1;        ///< the vertex within tolerance (see clusterPosition), or -1
-    std::vector<int> edges;  ///< the edges within tolerance, when no vertex is
+    int cluster = -1;        ///< the vertex whose rays judge directions at p (see contactOf), or -1
+    std::vector<int> edges;  ///< the edges within tolerance (none when a vertex is)
   };
 
   /// Takes the hull and holes in either orientation (they are made CCW and CW) and drops
@@ -37,7 +37,10 @@ class BoundaryGrid {
   /// True when p lies in the closed polygon, within tolerance().
   bool contains(const Point2& p) const;
 
-  /// The vertex or edges that p touches (empty for a point off the boundary).
+  /// The vertex or edges that p touches (empty for a point off the boundary). A point
+  /// within tolerance of two edges that meet at a vertex with wall in the narrow angle
+  /// between them lies on that wall's sliver: the vertex judges its directions, and the
+  /// edges stay in the contact.
   Contact contactOf(const Point2& p) const;
 
   /// True when the closed segment [a, b] lies in the closed polygon, for ends inside it.
@@ -70,7 +73,13 @@ class BoundaryGrid {
   void addTouchingEdges();
   bool directionFree(int cluster, const Point2& direction, double angle_tolerance) const;
   bool touches(const Contact& contact, int edge) const;
-  bool endAllows(const Contact& contact, const Point2& direction, double angle_tolerance) const;
+  /// The vertex cluster where edges e and f meet with wall in the narrow angle between
+  /// them, or -1.
+  int wallCornerBetween(int e, int f) const;
+  /// True when the segment from `end` (touching `contact`) to `far_end` starts into the
+  /// free side there.
+  bool endAllows(const Contact& contact, const Point2& end, const Point2& far_end,
+                 double angle_tolerance) const;
   int column(double x) const;
   int row(double y) const;
   template <typename Visit>

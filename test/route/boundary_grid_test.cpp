@@ -8,6 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "test/route/route_test_maps.h"
 #include "test/support/random_polygons.h"
 
 namespace kinematic_coverage {
@@ -137,6 +138,92 @@ TEST(BoundaryGrid, HoleTouchingTheHullEdge) {
   const std::vector<int> bends = grid.bendClusters();
   EXPECT_TRUE(std::any_of(bends.begin(), bends.end(),
                           [&](int k) { return grid.clusterPosition(k) == Point2(5, 0); }));
+}
+
+TEST(BoundaryGrid, BoundaryEndJustPastAConvexCornerSeesAlongTheOtherEdge) {
+  // An end on the corner's outgoing edge, past the corner's tolerance: the segment back
+  // along the incoming edge passes the corner within the tolerance, and its short piece
+  // from the corner to the end runs off that edge's ray by the corner's whole turn angle
+  // (the regression: such sweep-lane ends saw no node and got an infinite cost).
+  const double bend = 0.1;
+  const BoundaryGrid grid(testing::bentCorridorMap(bend));
+  const Point2 heading(std::cos(bend), std::sin(bend));
+  const Point2 corner(80, 20);
+  const Point2 end = corner + 3.0 * grid.tolerance() * heading;
+  ASSERT_EQ(grid.contactOf(end).cluster, -1);
+  EXPECT_TRUE(grid.segmentInside(end, {50, 20}));
+  EXPECT_TRUE(grid.segmentInside({50, 20}, end));
+  EXPECT_TRUE(grid.segmentInside(end, {50, 22}));
+  EXPECT_TRUE(grid.segmentInside(end, {60, 20.5}));
+  EXPECT_FALSE(grid.segmentInside(end, {10, 5}));   // through the room's wall
+  EXPECT_FALSE(grid.segmentInside(end, {40, 19}));  // through the mouth's lower corner
+  // Farther along the edge, the corner is clear of the same segments.
+  const Point2 farther = corner + 1e-3 * heading;
+  EXPECT_TRUE(grid.segmentInside(farther, {50, 20}));
+  EXPECT_FALSE(grid.segmentInside(farther, {40, 19}));
+}
+
+TEST(BoundaryGrid, BoundaryEndInAReflexCornersSliverGoesToBothFreeSides) {
+  // Near the tip of a thin wall spike, a point on one side is within the tolerance of the
+  // other side too; the free directions there are the union of the two edges' free sides
+  // (the tip's rays), not their intersection.
+  const double half_base = 0.003;
+  const BoundaryGrid grid(testing::wallSpikeMap(half_base));
+  const Point2 tip(5, 6);
+  const Point2 down_left = (Point2(5 - half_base, 0) - tip).normalized();
+  const Point2 down_right = (Point2(5 + half_base, 0) - tip).normalized();
+  const double apex = std::acos(down_left.dot(down_right));
+  const Point2 into_wall(-down_left.y(), down_left.x());
+  const std::vector<Point2> sliver_points = {
+      tip + 2.0 * grid.tolerance() * down_left + 1e-13 * into_wall,
+      tip + 0.5 * grid.tolerance() / std::sin(apex) * down_left};
+  for (const Point2& end : sliver_points) {
+    SCOPED_TRACE(::testing::Message() << "end " << end.transpose());
+    ASSERT_GT((end - tip).norm(), grid.tolerance());
+    ASSERT_LE(distanceToSegment(end, tip, tip + down_right), grid.tolerance());
+    EXPECT_TRUE(grid.contains(end));
+    const BoundaryGrid::Contact contact = grid.contactOf(end);
+    EXPECT_EQ(contact.cluster, grid.contactOf(tip).cluster);  // the tip's rays judge
+    EXPECT_EQ(contact.edges.size(), 2u);
+    EXPECT_TRUE(grid.segmentInside(end, {1, 5}));  // the own edge's free side
+    EXPECT_TRUE(grid.segmentInside(end, {1, 1}));
+    EXPECT_TRUE(grid.segmentInside(end, {9, 5}));  // across the sliver, thinner than tolerance
+    EXPECT_TRUE(grid.segmentInside(end, {5, 9}));  // over the tip
+    EXPECT_TRUE(grid.segmentInside(end, tip));
+  }
+  // Lower down the spike is wide: crossing it leaves the area.
+  const Point2 low = tip + 3.0 * down_left;
+  EXPECT_TRUE(grid.segmentInside(low, {1, 5}));
+  EXPECT_FALSE(grid.segmentInside(low, {9, 5}));
+}
+
+TEST(BoundaryGrid, BoundaryEndInAConvexCornersSliverKeepsBothEdgesSides) {
+  // In a thin needle of free area, a point near the tip is within the tolerance of both
+  // edges: it may go along either edge, also a short way, but not out of the needle.
+  const double half_base = 0.003;
+  const BoundaryGrid grid(testing::freeNeedleMap(half_base));
+  const Point2 tip(16, 5);
+  const Point2 back_low = (Point2(10, 5 - half_base) - tip).normalized();
+  const Point2 back_high = (Point2(10, 5 + half_base) - tip).normalized();
+  const double apex = std::acos(back_low.dot(back_high));
+  const Point2 end = tip + 0.5 * grid.tolerance() / std::sin(apex) * back_low;
+  ASSERT_LE(distanceToSegment(end, tip, tip + back_high), grid.tolerance());
+  EXPECT_EQ(grid.contactOf(end).cluster, -1);  // both edges' free sides, intersected
+  EXPECT_EQ(grid.contactOf(end).edges.size(), 2u);
+  EXPECT_TRUE(grid.segmentInside(end, tip + 1e-4 * back_high));
+  EXPECT_TRUE(grid.segmentInside(end, tip + 1e-4 * back_low));
+  EXPECT_TRUE(grid.segmentInside(end, tip + 1e-4 * back_high + 1e-9 * back_low));
+  EXPECT_TRUE(grid.segmentInside(end, {5, 5}));
+  EXPECT_FALSE(grid.segmentInside(end, {9, 9}));                  // over the needle's root
+  EXPECT_FALSE(grid.segmentInside(end, {9, 5 + 2 * half_base}));  // through its upper edge
+  EXPECT_FALSE(grid.segmentInside(end, {9, 5 - 2 * half_base}));  // through its lower edge
+  // From a point most of a tolerance beside the tip, short segments along the edges turn
+  // off the edges' rays by far more than a long one could.
+  const Point2 near_tip = tip + Point2(0, -0.7 * grid.tolerance());
+  ASSERT_EQ(grid.contactOf(near_tip).cluster, grid.contactOf(tip).cluster);
+  EXPECT_TRUE(grid.segmentInside(near_tip, tip + 1e-5 * back_high));
+  EXPECT_TRUE(grid.segmentInside(near_tip, tip + 1e-5 * back_low));
+  EXPECT_FALSE(grid.segmentInside(near_tip, {9, 9}));
 }
 
 TEST(BoundaryGrid, OrientationAndRepeatedVerticesAreNormalized) {

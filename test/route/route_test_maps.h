@@ -8,6 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "test/support/random_polygons.h"
 
 namespace kinematic_coverage {
 namespace testing {
@@ -127,6 +128,80 @@ inline std::vector<Point2> queryPoints(std::mt19937& rng, const PolygonWithHoles
     const Point2& a = ring[k];
     const Point2& b = ring[(k + 1) % ring.size()];
     points.push_back(i < on_boundary ? Point2(a + unit(rng) * (b - a)) : a);
+  }
+  return points;
+}
+
+/// A room [0, 50]^2 with a 2 m wide corridor leaving its right wall at y = 20..22; at
+/// x = 80 the corridor turns left by `bend` radians, so its lower wall has a convex corner
+/// at (80, 20), and the corridor's mouth has the reflex corners (50, 20) and (50, 22).
+inline PolygonWithHoles bentCorridorMap(double bend) {
+  const Point2 heading(std::cos(bend), std::sin(bend));
+  const Point2 lower_bend(80, 20);
+  const Point2 upper_bend(80, 22);
+  return {{{0, 0},
+           {50, 0},
+           {50, 20},
+           lower_bend,
+           lower_bend + 10.0 * heading,
+           upper_bend + 10.0 * heading,
+           upper_bend,
+           {50, 22},
+           {50, 50},
+           {0, 50}},
+          {}};
+}
+
+/// The square [0, 10]^2 with a thin spike of wall rising from its bottom edge to the
+/// reflex tip (5, 6); the spike is 2 * half_base wide at the bottom.
+inline PolygonWithHoles wallSpikeMap(double half_base) {
+  return {{{0, 0}, {5 - half_base, 0}, {5, 6}, {5 + half_base, 0}, {10, 0}, {10, 10}, {0, 10}}, {}};
+}
+
+/// The square [0, 10]^2 with a thin needle of free area leaving its right wall, 2 *
+/// half_base wide there, with its convex tip at (16, 5).
+inline PolygonWithHoles freeNeedleMap(double half_base) {
+  return {{{0, 0}, {10, 0}, {10, 5 - half_base}, {16, 5}, {10, 5 + half_base}, {10, 10}, {0, 10}},
+          {}};
+}
+
+/// A jagged star hull about 200 m across (`vertices` vertices, radii from r_min to 100)
+/// around a square hole: deep thin bays and spikes, many nearly straight corners.
+inline PolygonWithHoles jaggedStarMap(std::mt19937& rng, int vertices, double r_min) {
+  PolygonWithHoles map;
+  map.hull = randomStarRing(rng, {0, 0}, r_min, 100.0, vertices);
+  map.holes.push_back({{-10, -10}, {-10, 10}, {10, 10}, {10, -10}});
+  return map;
+}
+
+/// Points on the boundary of `map` as sweep lane ends are: on random edges, at vertices,
+/// and on edges close to a vertex (log-uniform from a tenth of `tolerance` to a thousand
+/// times it: just past a corner, or inside a sharp corner's sliver); each coordinate then
+/// moved by -1e-14, 0 or +1e-14, a rounding error off the boundary.
+inline std::vector<Point2> boundaryPoints(std::mt19937& rng, const PolygonWithHoles& map,
+                                          double tolerance, int count) {
+  std::vector<const Ring*> rings = {&map.hull};
+  for (const Ring& hole : map.holes) rings.push_back(&hole);
+  std::uniform_int_distribution<std::size_t> ring_index(0, rings.size() - 1);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> nudge(-1, 1);
+  std::vector<Point2> points;
+  for (int i = 0; i < count; ++i) {
+    const Ring& ring = *rings[ring_index(rng)];
+    const std::size_t k = std::uniform_int_distribution<std::size_t>(0, ring.size() - 1)(rng);
+    const Point2& a = ring[k];
+    const Point2& b = ring[(k + 1) % ring.size()];
+    const double length = (b - a).norm();
+    Point2 p = a;
+    if (i % 4 == 0) {
+      p = a + unit(rng) * (b - a);
+    } else if (i % 4 != 1) {
+      const double from_vertex =
+          std::min(tolerance * std::pow(10.0, 4.0 * unit(rng) - 1.0), 0.5 * length);
+      p = i % 4 == 2 ? Point2(a + (from_vertex / length) * (b - a))
+                     : Point2(b + (from_vertex / length) * (a - b));
+    }
+    points.push_back(p + 1e-14 * Point2(nudge(rng), nudge(rng)));
   }
   return points;
 }

@@ -4,12 +4,14 @@
 
 #include <cmath>
 #include <ctime>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <random>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "test/route/route_test_maps.h"
 #include "test/support/random_polygons.h"
 
@@ -121,6 +123,99 @@ TEST(VisibilityGraph, BoundaryPointsAndNodesAreQueryPoints) {
   expectPathInside(area, graph.shortestPath({4, 4}, {6, 6}));
   // A point a rounding error outside the boundary counts as on it.
   EXPECT_NEAR(graph.cost({4.0 - 1e-14, 5}, {6.0 + 1e-14, 5}), 4.0, 1e-9);
+}
+
+TEST(VisibilityGraph, BoundaryPointJustPastAConvexCornerRoutesAlongTheWall) {
+  // A lane end on the corridor's lower wall just past its bend: the cheapest route runs
+  // back along the wall to the mouth's corner (regression: that leg counted as leaving
+  // the area at the bend, so the route took the far wall or did not exist).
+  const double bend = 0.1;
+  const PolygonWithHoles area = testing::bentCorridorMap(bend);
+  const VisibilityGraph graph(area, costOf("distance"));
+  const Point2 end =
+      Point2(80, 20) + 3.0 * graph.boundary().tolerance() * Point2(std::cos(bend), std::sin(bend));
+  const Point2 mouth(50, 20);
+  const Point2 target(10, 5);
+  const double expected = (end - mouth).norm() + (mouth - target).norm();
+  EXPECT_NEAR(graph.cost(end, target), expected, 1e-9);
+  EXPECT_NEAR(graph.cost(target, end), expected, 1e-9);
+  const std::vector<Point2> path = graph.shortestPath(end, target);
+  ASSERT_EQ(path.size(), 3u);
+  EXPECT_EQ(path[1], mouth);
+  expectPathInside(area, path);
+  EXPECT_NEAR(graph.costMatrix({end}, {target})[0], expected, 1e-9);
+}
+
+TEST(VisibilityGraph, BoundaryPointInAWallSpikesSliverIsReachable) {
+  // Near the tip of a thin wall spike, on its left side and within the tolerance of its
+  // right side: the only node is the tip; every free direction must stay open
+  // (regression: the point saw nothing, or only the tip, and went round it or nowhere).
+  const double half_base = 0.003;
+  const PolygonWithHoles area = testing::wallSpikeMap(half_base);
+  const VisibilityGraph graph(area, costOf("distance"));
+  ASSERT_EQ(graph.nodeCount(), 1u);
+  const double tolerance = graph.boundary().tolerance();
+  const Point2 tip(5, 6);
+  const Point2 down_left = (Point2(5 - half_base, 0) - tip).normalized();
+  const Point2 into_wall(-down_left.y(), down_left.x());
+  const double apex = 2.0 * std::atan2(half_base, 6.0);
+  for (const Point2& end : {Point2(tip + 2.0 * tolerance * down_left + 1e-13 * into_wall),
+                            Point2(tip + 0.5 * tolerance / std::sin(apex) * down_left)}) {
+    // The wall spike is a cone from the tip: every point outside it is in sight.
+    for (const Point2& target : {Point2(1, 5), Point2(9, 5), Point2(5, 9), Point2(1, 1),
+                                 Point2(4.99, 0.1), Point2(5.01, 0.1)}) {
+      SCOPED_TRACE(::testing::Message() << end.transpose() << " to " << target.transpose());
+      EXPECT_NEAR(graph.cost(end, target), (end - target).norm(), 1e-9);
+      const std::vector<Point2> path = graph.shortestPath(end, target);
+      EXPECT_EQ(path.size(), 2u);
+      expectPathInside(area, path);
+    }
+  }
+}
+
+TEST(VisibilityGraph, BoundaryPointsOfJaggedPolygonsAreReachable) {
+  // Sweep lane ends lie on the offset free area's boundary up to rounding, often just past
+  // a corner or inside a sharp corner's sliver: on jagged star hulls around a hole (some
+  // wall-offset, as the planner makes them; some 2 m across, where a rounding error is
+  // relatively larger), every such point must reach an interior point along an inside
+  // route whose cost the route itself confirms.
+  std::mt19937 rng(17);
+  const SegmentCost distance = costOf("distance");
+  int points_checked = 0;
+  for (int map_index = 0; map_index < 16; ++map_index) {
+    const int vertices = std::uniform_int_distribution<int>(20, 300)(rng);
+    PolygonWithHoles area = testing::jaggedStarMap(rng, vertices, map_index % 2 == 0 ? 20.0 : 70.0);
+    if (map_index % 3 == 2) {
+      const double wall_distance = std::uniform_real_distribution<double>(0.3, 2.0)(rng);
+      area = computeOffsetFreeArea(area, wall_distance).area;
+    }
+    const double scale = map_index % 4 == 3 ? 0.01 : 1.0;
+    for (Point2& p : area.hull) p *= scale;
+    for (Ring& hole : area.holes)
+      for (Point2& p : hole) p *= scale;
+    SCOPED_TRACE("jagged map " + std::to_string(map_index));
+    const VisibilityGraph graph(area, distance);
+    std::uniform_real_distribution<double> coordinate(-100.0 * scale, 100.0 * scale);
+    Point2 target(coordinate(rng), coordinate(rng));
+    while (!contains(area, target)) target = Point2(coordinate(rng), coordinate(rng));
+    const double inside_tolerance = 1e-6 * scale;
+    for (const Point2& p : testing::boundaryPoints(rng, area, graph.boundary().tolerance(), 300)) {
+      ++points_checked;
+      const double cost = graph.cost(p, target);
+      ASSERT_TRUE(std::isfinite(cost)) << std::setprecision(17) << p.transpose();
+      const std::vector<Point2> path = graph.shortestPath(p, target);
+      ASSERT_GE(path.size(), 2u);
+      EXPECT_EQ(path.front(), p);
+      EXPECT_EQ(path.back(), target);
+      for (std::size_t i = 1; i < path.size(); ++i) {
+        EXPECT_TRUE(segmentInside(area, path[i - 1], path[i], inside_tolerance))
+            << std::setprecision(17) << p.transpose() << ": leg " << i;
+      }
+      EXPECT_NEAR(pathLength(path), cost, 1e-9 * (1.0 + cost));
+      EXPECT_GE(cost, (target - p).norm() - 1e-12);
+    }
+  }
+  EXPECT_EQ(points_checked, 16 * 300);
 }
 
 TEST(VisibilityGraph, DegenerateQueries) {
