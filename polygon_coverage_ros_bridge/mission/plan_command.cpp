@@ -1,6 +1,7 @@
 #include "polygon_coverage_ros_bridge/mission/plan_command.h"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -12,6 +13,8 @@
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
 #include "polygon_coverage_ros_bridge/validation/point_format.h"
+#include "trajectory_generation_tools/trajectory/trajectory_csv_writer.h"
+#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage {
 namespace {
@@ -117,24 +120,44 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
   std::ostringstream notes;
   for (const std::string& warning : planned.warnings) notes << "warning: " << warning << "\n";
 
+  stage_start = Clock::now();
+  const GeneratedTrajectory trajectory =
+      TrajectoryGenerator(mission.parameters).generate(plan.waypoints, planned.free_area);
+  const SmoothingStatistics& turns = trajectory.statistics;
+  out << (mission.parameters.smoothing ? "smooth: " : "trajectory: ") << turns.turns_smoothed
+      << " of " << turns.turns_total << " turns smoothed (inner " << turns.inner
+      << ", outer bisector " << turns.outer_bisector << ", outer tangent " << turns.outer_tangent
+      << "), " << trajectory.poses.size() << " poses, " << formatNumber(trajectory.traversal_time_s)
+      << " s (" << seconds(secondsSince(stage_start)) << ")" << std::endl;
+
   createDirectory(arguments.out_dir);
   const std::filesystem::path dir(arguments.out_dir);
   const std::string waypoints_path = (dir / "waypoints.csv").string();
+  const std::string trajectory_path = (dir / "trajectory.csv").string();
   const std::string metrics_path = (dir / "metrics.json").string();
   WaypointCsvWriter().write(waypoints_path, plan.waypoints);
+  TrajectoryCsvWriter().write(trajectory_path, trajectory.poses);
   JsonObject metrics;
   metrics.set("planning_time_s", planning_time_s)
       .set("cells", static_cast<double>(plan.cells.size()))
       .set("waypoint_count", static_cast<double>(plan.waypoints.size()))
       .set("path_length_m", plan.path_length_m)
-      .set("time_cost_s", plan.time_cost_s);
+      .set("time_cost_s", plan.time_cost_s)
+      .set("trajectory_length_m", trajectory.trajectory_length_m)
+      .set("traversal_time_s", trajectory.traversal_time_s)
+      .set("max_curvature", trajectory.max_curvature)
+      .set("turns_total", static_cast<double>(turns.turns_total))
+      .set("turns_smoothed", static_cast<double>(turns.turns_smoothed));
+  if (std::isfinite(trajectory.min_obstacle_clearance_m)) {
+    metrics.set("min_obstacle_clearance_m", trajectory.min_obstacle_clearance_m);
+  }
   metrics.write(metrics_path);
-  notes << "note: trajectory.csv and plot.png are not produced yet (trajectory.csv arrives with "
-           "issue 4, plot.png with issue 5)\n";
+  notes << "note: plot.png and the coverage metrics are not produced yet (they arrive with "
+           "issue 5)\n";
   err << notes.str();
   out << "write: " << plan.waypoints.size() << " waypoints, planning took "
       << seconds(planning_time_s) << "\n";
-  out << "wrote " << waypoints_path << " " << metrics_path << "\n";
+  out << "wrote " << waypoints_path << " " << trajectory_path << " " << metrics_path << "\n";
 }
 
 }  // namespace kinematic_coverage

@@ -6,4 +6,4 @@ kc_add_stage_library(kc_mission
     polygon_coverage_ros_bridge/mission/plan_command.cpp
     polygon_coverage_ros_bridge/mission/pose_csv_reader.cpp
     polygon_coverage_ros_bridge/mission/waypoint_csv_writer.cpp
-  DEPENDS kc_validation kc_planner kc_geometry yaml-cpp)
+  DEPENDS kc_validation kc_planner kc_trajectory kc_geometry yaml-cpp)

@@ -22,7 +22,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Points closer than this (relative to the map's scale) are one waypoint.
+/// Waypoints closer than this are one waypoint (metres; and relative to the map's scale
+/// for very large maps): the same vertex computed two ways differs by rounding only.
+constexpr double kDuplicateWaypointTolerance = 5e-7;
 constexpr double kRelativeDuplicateTolerance = 1e-9;
 /// A point this close (relative) to the offset free area counts as inside it.
 constexpr double kRelativeInsideTolerance = 1e-9;
@@ -189,7 +191,7 @@ CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Poin
   const VisibilityGraph graph(area, segment_cost);
   const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
   const SweepPatternGenerator generator(
-      sensor, SweepPatternGenerator::laneEndInset(sensor, parameters_.wall_distance));
+      sensor, SweepPatternGenerator::laneEndInset(sensor, parameters_.wall_distance), area);
   const TransitionPath transition = [&](const Point2& a, const Point2& b) {
     return graph.shortestPath(a, b);
   };
@@ -282,8 +284,8 @@ CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Poin
   append(graph.shortestPath(position, goal_inside), false);
   keep.back() = true;
   append({goal}, true);
-  const std::vector<Point2> waypoints =
-      simplifiedPath(path, keep, kRelativeDuplicateTolerance * scale);
+  const std::vector<Point2> waypoints = simplifiedPath(
+      path, keep, std::max(kDuplicateWaypointTolerance, kRelativeDuplicateTolerance * scale));
   plan.first_inside = (waypoints.size() > 1 && (start - start_inside).norm() > tolerance) ? 1 : 0;
   plan.last_inside = waypoints.size() - 1;
   if (waypoints.size() > 1 && (goal - goal_inside).norm() > tolerance) plan.last_inside -= 1;

@@ -40,6 +40,34 @@ std::pair<double, double> verticalInterval(const Ring& ring, double x) {
 
 }  // namespace
 
+SweepPatternGenerator::SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
+                                             const PolygonWithHoles& area)
+    : sensor_(sensor), lane_end_inset_(lane_end_inset) {
+  double scale = 1.0;
+  auto collect = [&](const Ring& ring) {
+    for (const Point2& p : ring) {
+      area_vertices_.push_back(p);
+      scale = std::max(scale, p.cwiseAbs().maxCoeff());
+    }
+  };
+  collect(area.hull);
+  for (const Ring& hole : area.holes) collect(hole);
+  std::sort(area_vertices_.begin(), area_vertices_.end(),
+            [](const Point2& a, const Point2& b) { return a.x() < b.x(); });
+  vertex_tolerance_ = kRelativeLaneMerge * scale;
+}
+
+bool SweepPatternGenerator::isAreaVertex(const Point2& corner) const {
+  if (area_vertices_.empty()) return true;
+  auto it =
+      std::lower_bound(area_vertices_.begin(), area_vertices_.end(), corner.x() - vertex_tolerance_,
+                       [](const Point2& vertex, double x) { return vertex.x() < x; });
+  for (; it != area_vertices_.end() && it->x() <= corner.x() + vertex_tolerance_; ++it) {
+    if ((*it - corner).norm() <= vertex_tolerance_) return true;
+  }
+  return false;
+}
+
 double SweepPatternGenerator::laneEndInset(const FrustumSensor& sensor, double wall_distance) {
   return std::max(0.0, 0.5 * sensor.length() - wall_distance);
 }
@@ -64,13 +92,25 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& 
   const double half_length = 0.5 * sensor_.length();
   const double margin = std::max(inset, std::min(0.5 * spacing, half_width - half_length));
 
+  // The fewest lanes whose outer margins stay within `margin` and whose spacing stays
+  // within the sweep distance. The outer lanes go out to the margin, which shortens the
+  // joins between lanes, unless that crowds neighbours closer than half a sweep
+  // distance (no room to turn between them); then they are spread evenly.
+  const double extent = x_max - x_min;
+  const int lane_count =
+      extent <= 2.0 * margin
+          ? 1
+          : 1 + std::max(1, static_cast<int>(std::ceil((extent - 2.0 * margin) / spacing - 1e-9)));
+  const bool crowded = lane_count > 1 && (extent - 2.0 * margin) / (lane_count - 1) < 0.5 * spacing;
+  const double lane_margin = crowded ? std::min(margin, 0.5 * extent / lane_count) : margin;
   std::vector<double> positions;
-  const double span = x_max - x_min - 2.0 * margin;
-  if (span <= 0.0) {
+  if (lane_count == 1) {
     positions.push_back(0.5 * (x_min + x_max));
   } else {
-    const int gaps = std::max(1, static_cast<int>(std::ceil(span / spacing - 1e-9)));
-    for (int k = 0; k <= gaps; ++k) positions.push_back(x_min + margin + span * k / gaps);
+    const double span = extent - 2.0 * lane_margin;
+    for (int k = 0; k < lane_count; ++k) {
+      positions.push_back(x_min + lane_margin + span * k / (lane_count - 1));
+    }
   }
 
   auto intervals = [&]() {
@@ -80,7 +120,9 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& 
   };
   // Extra lanes through corners that no lane's swept footprint reaches.
   std::vector<std::pair<double, double>> spans = intervals();
-  for (const Point2& corner : frame) {
+  for (std::size_t i = 0; i < frame.size(); ++i) {
+    const Point2& corner = frame[i];
+    if (!isAreaVertex(cell[i])) continue;
     bool seen = false;
     for (std::size_t k = 0; k < positions.size() && !seen; ++k) {
       seen = std::abs(corner.x() - positions[k]) <= half_width &&

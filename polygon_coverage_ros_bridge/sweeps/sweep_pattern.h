@@ -23,9 +23,11 @@ using TransitionPath = std::function<std::vector<Point2>(const Point2&, const Po
 /// Places the lanes of a cell and builds its four sweep patterns per direction (both
 /// lane orders, both first-lane directions).
 ///
-/// Lanes run parallel to the direction, at most one sweep distance (1 - overlap) W
-/// apart; the outermost lanes stay within min(s/2, W/2 - L/2) of the cell's sides, so
-/// that the footprint also reaches half a footprint length beyond a wall. Where a
+/// Lanes run parallel to the direction, as few as possible: at most one sweep distance
+/// s = (1 - overlap) W apart, the outermost within min(s/2, W/2 - L/2) of the cell's sides
+/// (so that the footprint also reaches half a footprint length beyond a wall); the outer
+/// lanes sit at that margin unless neighbours would then be closer than half a sweep
+/// distance, in which case the lanes are spread evenly. Where a
 /// corner of the cell would stay unseen by every lane's swept footprint, an extra lane
 /// is placed through it. Lane ends stop `lane_end_inset` short of the cell's boundary:
 /// where the walls are closer than half a footprint length (wall_distance < L/2), the
@@ -35,6 +37,12 @@ class SweepPatternGenerator {
  public:
   explicit SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset = 0.0)
       : sensor_(sensor), lane_end_inset_(lane_end_inset) {}
+
+  /// As above; only corners that are vertices of `area` (the decomposed area) get extra
+  /// lanes: a corner made by a decomposition cut lies on the neighbouring cell's side,
+  /// which that cell's lanes see.
+  SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
+                        const PolygonWithHoles& area);
 
   /// The inset that keeps the reachable band seen (see the class comment).
   static double laneEndInset(const FrustumSensor& sensor, double wall_distance);
@@ -49,8 +57,13 @@ class SweepPatternGenerator {
                                      const TransitionPath& transition) const;
 
  private:
+  /// True when the corner may need an extra lane (see the constructors).
+  bool isAreaVertex(const Point2& corner) const;
+
   FrustumSensor sensor_;
   double lane_end_inset_;
+  std::vector<Point2> area_vertices_;  ///< sorted by x; empty: every corner counts
+  double vertex_tolerance_ = 0.0;
 };
 
 }  // namespace kinematic_coverage

@@ -3,10 +3,12 @@
 #include <string>
 
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
 #include "test/planner/plan_properties.h"
+#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage {
 namespace {
@@ -26,12 +28,50 @@ std::size_t laneCount(const Mission& mission, const PlannedMission& planned) {
   return lanes;
 }
 
+/// Issue 4 on a mission's trajectory: consecutive poses at most the sampling distance
+/// apart, heading equal to the direction of travel on segments and arcs, every pose in
+/// the free area, curvature at most 1 / r.
+void expectValidTrajectory(const Mission& mission, const PlannedMission& planned,
+                           const GeneratedTrajectory& trajectory) {
+  const PlannerParameters& parameters = mission.parameters;
+  const auto& poses = trajectory.poses;
+  ASSERT_GE(poses.size(), 2u);
+  EXPECT_NEAR((poses.front().position() - mission.start).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((poses.back().position() - mission.goal).norm(), 0.0, 1e-9);
+  const double max_step =
+      std::max(parameters.segment_sampling_distance, parameters.arc_sampling_distance);
+  for (std::size_t i = 1; i < poses.size(); ++i) {
+    const Point2 step = poses[i].position() - poses[i - 1].position();
+    EXPECT_LE(step.norm(), max_step + 1e-9) << "pose " << i;
+    EXPECT_GE(poses[i].t, poses[i - 1].t);
+    if (poses[i].kind == PrimitiveKind::kSegment && step.norm() > 1e-6) {
+      EXPECT_NEAR(std::remainder(poses[i].yaw - std::atan2(step.y(), step.x()), 2 * M_PI), 0.0,
+                  1e-6)
+          << "pose " << i;
+    }
+    if (i >= 1 && i + 1 < poses.size() && planned.plan.first_inside == 0 &&
+        planned.plan.last_inside + 1 == planned.plan.waypoints.size()) {
+      EXPECT_TRUE(contains(planned.free_area, poses[i].position(), 1e-9)) << "pose " << i;
+    }
+  }
+  EXPECT_LE(trajectory.max_curvature, 1.0 / parameters.turning_radius + 1e-9);
+  EXPECT_GT(trajectory.min_obstacle_clearance_m, 0.0);
+}
+
 TEST(MissionPlans, Lake30x30) {
   const Mission mission =
       MissionFileReader().read(std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml");
   const PlannedMission planned = planMission(mission);
   expectValidPlan(planned.free_area, planned.plan, mission.parameters, mission.start, mission.goal);
   EXPECT_GE(planned.plan.cells.size(), 2u);
+  for (bool smoothing : {true, false}) {
+    Mission variant = mission;
+    variant.parameters.smoothing = smoothing;
+    SCOPED_TRACE(smoothing ? "smoothed" : "unsmoothed");
+    expectValidTrajectory(variant, planned,
+                          TrajectoryGenerator(variant.parameters)
+                              .generate(planned.plan.waypoints, planned.free_area));
+  }
 }
 
 TEST(MissionPlans, Lake7x5HasAtLeastFiveSweeps) {
@@ -40,6 +80,13 @@ TEST(MissionPlans, Lake7x5HasAtLeastFiveSweeps) {
   const PlannedMission planned = planMission(mission);
   expectValidPlan(planned.free_area, planned.plan, mission.parameters, mission.start, mission.goal);
   EXPECT_GE(laneCount(mission, planned), 5u);
+  const GeneratedTrajectory trajectory =
+      TrajectoryGenerator(mission.parameters).generate(planned.plan.waypoints, planned.free_area);
+  expectValidTrajectory(mission, planned, trajectory);
+  // The thesis's second experiment: every smoothing variant is used.
+  EXPECT_GE(trajectory.statistics.inner, 1);
+  EXPECT_GE(trajectory.statistics.outer_bisector, 1);
+  EXPECT_GE(trajectory.statistics.outer_tangent, 1);
 }
 
 }  // namespace

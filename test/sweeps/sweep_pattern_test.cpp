@@ -51,6 +51,17 @@ TEST(SweepPattern, RectangleLaneCountAndMargins) {
   expectValidLanes(rectangle, 0.0, sensor);
 }
 
+TEST(SweepPattern, LanesJustOverOneLaneApartAreSpreadEvenly) {
+  // Altitude 7.87 with s = 7.74 and margin 3.87: two lanes at the margins would be 0.13 m
+  // apart; they are spread to a quarter and three quarters instead.
+  const Ring band = {{0, 0}, {30, 0}, {30, 7.87}, {0, 7.87}};
+  const FrustumSensor sensor(12.9, 1.6, 0.4);
+  const auto lanes = SweepPatternGenerator(sensor).lanes(band, 0.0);
+  ASSERT_EQ(lanes.size(), 2u);
+  EXPECT_NEAR(std::abs(lanes[0].first.y() - lanes[1].first.y()), 7.87 / 2, 1e-9);
+  expectValidLanes(band, 0.0, sensor);
+}
+
 TEST(SweepPattern, NarrowCellGetsOneCentredLane) {
   const Ring sliver = {{0, 0}, {20, 0}, {20, 1}, {0, 1}};
   const auto lanes = SweepPatternGenerator(FrustumSensor(4.0, 1.0, 0.4)).lanes(sliver, 0.0);

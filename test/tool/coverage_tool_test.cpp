@@ -171,10 +171,12 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
   ASSERT_EQ(run.exit_status, 0);
   const std::vector<std::string> out_lines = lines(run.out);
   ASSERT_FALSE(out_lines.empty());
-  EXPECT_EQ(out_lines.back(), "wrote " + out_dir + "/waypoints.csv " + out_dir + "/metrics.json");
+  EXPECT_EQ(out_lines.back(), "wrote " + out_dir + "/waypoints.csv " + out_dir +
+                                  "/trajectory.csv " + out_dir + "/metrics.json");
   ASSERT_FALSE(run.err_lines.empty());
-  EXPECT_EQ(run.err_lines.back().rfind("note: trajectory.csv and plot.png are not produced yet", 0),
-            0u);
+  EXPECT_EQ(
+      run.err_lines.back().rfind("note: plot.png and the coverage metrics are not produced yet", 0),
+      0u);
   // One progress line per stage, in order, on stdout.
   std::size_t previous = 0;
   for (const std::string stage : {"load: ", "validate: ", "clean: ", "offset: ", "decompose: ",
@@ -186,8 +188,10 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
     EXPECT_GE(static_cast<std::size_t>(it - out_lines.begin()), previous) << stage;
     previous = static_cast<std::size_t>(it - out_lines.begin());
   }
-  EXPECT_FALSE(std::filesystem::exists(out_dir + "/trajectory.csv"));
   EXPECT_FALSE(std::filesystem::exists(out_dir + "/plot.png"));
+  const std::vector<std::string> trajectory = lines(readText(out_dir + "/trajectory.csv"));
+  ASSERT_GE(trajectory.size(), 3u);
+  EXPECT_EQ(trajectory[0], "t,x,y,yaw,kind");
 
   const std::vector<std::string> rows = lines(readText(out_dir + "/waypoints.csv"));
   ASSERT_GE(rows.size(), 3u);
@@ -202,7 +206,9 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
   }
   const std::string json = readText(out_dir + "/metrics.json");
   EXPECT_EQ(metric(json, "waypoint_count"), static_cast<double>(rows.size() - 1));
-  for (const std::string key : {"planning_time_s", "cells", "path_length_m", "time_cost_s"}) {
+  for (const std::string key : {"planning_time_s", "cells", "path_length_m", "time_cost_s",
+                                "trajectory_length_m", "traversal_time_s", "max_curvature",
+                                "min_obstacle_clearance_m", "turns_total", "turns_smoothed"}) {
     EXPECT_GT(metric(json, key), 0.0) << key << " in " << json;
   }
 }

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "trajectory_generation_tools/path/path_primitive.h"
+
+namespace kinematic_coverage {
+
+/// Clearance (m) a smoothing's arcs and segments must keep from the raw hull and holes.
+/// Decision: touching is a collision; a primitive is free only when every point of it is
+/// more than this from every boundary edge (1e-9 m is far above double rounding of
+/// coordinates up to 1e5 m and far below any physical clearance).
+constexpr double kContactTolerance = 1e-9;
+
+/// The edges of a free area (hull and holes, INTERFACE section 3: collisions are against
+/// the raw rings) in a uniform grid, for fast collision and containment queries of path
+/// primitives: a query only tests the edges registered in the cells its bounding box meets.
+/// Distances are analytic in doubles; whether two segments cross uses CGAL's exact
+/// orientation predicate. Immutable after construction, so concurrent queries are safe.
+class BoundaryEdgeIndex {
+ public:
+  /// Indexes every edge of the hull and holes. An empty hull stands for the unbounded plane
+  /// (only the holes are obstacles). Rings need not be closed explicitly. Throws
+  /// InvalidInputError for a non-finite coordinate.
+  explicit BoundaryEdgeIndex(const PolygonWithHoles& free_area);
+
+  /// True when the closed segment [a, b] keeps more than kContactTolerance from every edge.
+  bool segmentClear(const Point2& a, const Point2& b) const;
+  /// True when the arc keeps more than kContactTolerance from every edge.
+  bool arcClear(const PathPrimitive& arc) const;
+  /// segmentClear / arcClear by kind; a rotation is its point.
+  bool primitiveClear(const PathPrimitive& primitive) const;
+  /// True when p lies in the free area (inside the hull, outside every hole). Points on an
+  /// edge may go either way; callers first check clearance.
+  bool inside(const Point2& p) const;
+
+  /// Number of indexed edges.
+  std::size_t edgeCount() const { return edges_.size(); }
+
+ private:
+  struct Edge {
+    Point2 from;
+    Point2 to;
+  };
+  struct CellRange {
+    int x0, y0, x1, y1;
+    bool empty() const { return x0 > x1 || y0 > y1; }
+  };
+
+  CellRange cellsOf(const Point2& low, const Point2& high) const;
+  /// Sorted, distinct ids of the edges registered in the cells of `range`.
+  void collect(const CellRange& range, std::vector<std::uint32_t>* ids) const;
+
+  std::vector<Edge> edges_;
+  bool has_hull_ = false;
+  Point2 origin_ = Point2::Zero();
+  double cell_width_ = 1.0;
+  double cell_height_ = 1.0;
+  int columns_ = 0;
+  int rows_ = 0;
+  std::vector<std::uint32_t> cell_start_;  ///< CSR offsets into cell_edges_, per cell
+  std::vector<std::uint32_t> cell_edges_;
+};
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "trajectory_generation_tools/path/path_primitive.h"
+#include "trajectory_generation_tools/smoothing/boundary_edge_index.h"
+
+namespace kinematic_coverage {
+
+/// Waypoints closer than this (m) to the previous kept one are duplicates and dropped.
+constexpr double kDuplicateWaypointDistance = 1e-9;
+
+/// What smoothing a waypoint path did: turns_total counts the interior waypoints where the
+/// heading changes by more than kStraightTurnTolerance (after dropping duplicates),
+/// turns_smoothed those replaced by arcs, split by variant.
+struct SmoothingStatistics {
+  int turns_total = 0;
+  int turns_smoothed = 0;
+  int inner = 0;
+  int outer_bisector = 0;
+  int outer_tangent = 0;
+};
+
+/// A drivable path and how it was made.
+struct SmoothedPath {
+  /// Consecutive primitives, each starting where the previous one ends: segments (kNone),
+  /// the arcs of each smoothed corner (tagged with their variant), and an in-place rotation
+  /// (kNone) at every corner that stays sharp.
+  std::vector<PathPrimitive> primitives;
+  SmoothingStatistics statistics;
+};
+
+/// Algorithm 1 over a whole waypoint path (thesis 3.2): every corner in order, each corner's
+/// A being the end of the previous smoothing where there was one; joining segments between.
+class PathSmoother {
+ public:
+  /// Collisions are checked against the raw hull and holes of `free_area` (an empty hull:
+  /// the unbounded plane). Throws InvalidInputError for a turning radius that is not a
+  /// positive finite number or a non-finite coordinate.
+  PathSmoother(const PolygonWithHoles& free_area, double turning_radius);
+
+  /// The smoothed path through `waypoints`. Duplicate waypoints are dropped and straight
+  /// ones (heading change <= kStraightTurnTolerance) merged into their legs; fewer than two
+  /// distinct waypoints give no primitives. Throws InvalidInputError for a non-finite
+  /// coordinate.
+  SmoothedPath smooth(const std::vector<Point2>& waypoints) const;
+  /// The same from poses (their positions; headings follow from the legs).
+  SmoothedPath smooth(const std::vector<Pose2>& waypoints) const;
+
+ private:
+  SmoothedPath build(const std::vector<Point2>& waypoints) const;
+
+  BoundaryEdgeIndex index_;
+  double radius_;
+};
+
+}  // namespace kinematic_coverage

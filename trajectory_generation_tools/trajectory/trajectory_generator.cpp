@@ -1,0 +1,58 @@
+#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "trajectory_generation_tools/trajectory/primitive_path_metrics.h"
+#include "trajectory_generation_tools/trajectory/segment_path_builder.h"
+#include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
+#include "trajectory_generation_tools/trajectory/trajectory_timing.h"
+
+namespace kinematic_coverage {
+namespace {
+
+/// A primitive's ends count as in the free area within this distance (metres).
+constexpr double kInsideTolerance = 1e-6;
+
+/// turns_total of a segment path: its rotations that turn.
+SmoothingStatistics segmentPathStatistics(const std::vector<PathPrimitive>& path) {
+  SmoothingStatistics statistics;
+  statistics.turns_total =
+      static_cast<int>(std::count_if(path.begin(), path.end(), [](const PathPrimitive& p) {
+        return p.kind() == PrimitiveKind::kRotation && p.turnAngle() > 0.0;
+      }));
+  return statistics;
+}
+
+}  // namespace
+
+GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& waypoints,
+                                                  const PolygonWithHoles& free_area) const {
+  GeneratedTrajectory trajectory;
+  if (parameters_.smoothing) {
+    SmoothedPath smoothed = PathSmoother(free_area, parameters_.turning_radius).smooth(waypoints);
+    trajectory.path = std::move(smoothed.primitives);
+    trajectory.statistics = smoothed.statistics;
+  } else {
+    trajectory.path = SegmentPathBuilder().build(waypoints);
+    trajectory.statistics = segmentPathStatistics(trajectory.path);
+  }
+  TrajectorySampler(parameters_).sample(trajectory.path, trajectory.poses);
+  trajectory.traversal_time_s =
+      TrajectoryTiming(parameters_).assignTimes(trajectory.path, trajectory.poses);
+  trajectory.trajectory_length_m = primitivePathLength(trajectory.path);
+  trajectory.max_curvature = primitivePathMaxCurvature(trajectory.path);
+
+  std::vector<PathPrimitive> inside;
+  for (const PathPrimitive& primitive : trajectory.path) {
+    if (contains(free_area, primitive.start(), kInsideTolerance) &&
+        contains(free_area, primitive.end(), kInsideTolerance)) {
+      inside.push_back(primitive);
+    }
+  }
+  trajectory.min_obstacle_clearance_m = primitivePathClearance(inside, free_area);
+  return trajectory;
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "trajectory_generation_tools/path/path_primitive.h"
+#include "trajectory_generation_tools/smoothing/path_smoother.h"
+#include "trajectory_generation_tools/trajectory/trajectory_pose.h"
+
+namespace kinematic_coverage {
+
+/// A drivable, timed trajectory and the figures reported about it (INTERFACE section 7).
+struct GeneratedTrajectory {
+  std::vector<PathPrimitive> path;    ///< segments, arcs and in-place rotations
+  std::vector<TrajectoryPose> poses;  ///< sampled, with t from the velocity model
+  SmoothingStatistics statistics;     ///< turns_total, turns_smoothed, per variant
+  double trajectory_length_m = 0.0;
+  double traversal_time_s = 0.0;
+  double max_curvature = 0.0;
+  /// Smallest distance to the raw hull and holes over the primitives that lie in the free
+  /// area (the legs joining a start or goal outside it are left out); infinity if none.
+  double min_obstacle_clearance_m = 0.0;
+};
+
+/// Turns a waypoint path into a trajectory (Thesis sections 3.2 and 3.3): Algorithm 1's
+/// smoothing against the raw hull and holes (or, with `smoothing: false`, segments with
+/// in-place rotations), sampling, and timing with v_max, a_max and yaw_rate_max.
+class TrajectoryGenerator {
+ public:
+  explicit TrajectoryGenerator(const PlannerParameters& parameters) : parameters_(parameters) {}
+
+  /// The trajectory through `waypoints` in `free_area` (the cleaned free area). Throws
+  /// InvalidInputError for non-finite waypoints or parameters out of range.
+  GeneratedTrajectory generate(const std::vector<Pose2>& waypoints,
+                               const PolygonWithHoles& free_area) const;
+
+ private:
+  PlannerParameters parameters_;
+};
+
+}  // namespace kinematic_coverage
