@@ -1,3 +1,4 @@
 # Benchmark programs: each prints a table; figures and commands in docs/BENCHMARKS.md.
 include(bench/gtsp/sources.cmake OPTIONAL)
 include(bench/planner/sources.cmake OPTIONAL)
+include(bench/trajectory/sources.cmake OPTIONAL)

@@ -13,6 +13,9 @@
 namespace kinematic_coverage {
 namespace {
 
+/// Arc poses are recomputed from the angle this often (see appendPoses).
+constexpr std::size_t kArcResyncSteps = 64;
+
 double checkedInterval(double value, const std::string& name) {
   if (!std::isfinite(value) || !(value > 0.0)) {
     throw InvalidInputError(name + " must be positive and finite, got " + std::to_string(value));
@@ -88,16 +91,30 @@ void TrajectorySampler::appendPoses(const PathPrimitive& primitive, std::size_t 
       }
       break;
     }
-    case PrimitiveKind::kArc:
+    case PrimitiveKind::kArc: {
+      // The radius vector turns by a fixed angle per pose: one rotation per step instead
+      // of a cosine and a sine, recomputed exactly every kArcResyncSteps steps so that
+      // rounding cannot accumulate.
+      const double step_angle = step * primitive.sweep();
+      const double c = std::cos(step_angle);
+      const double s = std::sin(step_angle);
+      Point2 radius_vector = primitive.start() - primitive.centre();
       for (std::size_t k = 1; k < count; ++k) {
         pose.fraction = static_cast<double>(k) * step;
-        const double angle = primitive.startAngle() + pose.fraction * primitive.sweep();
-        pose.x = primitive.centre().x() + primitive.radius() * std::cos(angle);
-        pose.y = primitive.centre().y() + primitive.radius() * std::sin(angle);
+        if (k % kArcResyncSteps == 0) {
+          const double angle = primitive.startAngle() + pose.fraction * primitive.sweep();
+          radius_vector = primitive.radius() * Point2(std::cos(angle), std::sin(angle));
+        } else {
+          radius_vector = Point2(c * radius_vector.x() - s * radius_vector.y(),
+                                 s * radius_vector.x() + c * radius_vector.y());
+        }
+        pose.x = primitive.centre().x() + radius_vector.x();
+        pose.y = primitive.centre().y() + radius_vector.y();
         pose.yaw = wrapNear(start_yaw + pose.fraction * yaw_change);
         poses.push_back(pose);
       }
       break;
+    }
     case PrimitiveKind::kRotation:
       for (std::size_t k = 1; k < count; ++k) {
         pose.fraction = static_cast<double>(k) * step;

@@ -1,0 +1,87 @@
+// Issue 4's benchmark: smoothing (Algorithm 1), sampling and timing a 10 000-waypoint
+// boustrophedon path (lanes 100 m long and 2 m apart, r = 1 m, 20 rectangular obstacles
+// beside the lanes). Prints the median, minimum and maximum of 21 runs of each stage; the
+// pose buffer is reused between runs, as the smooth_trajectory_generator node does.
+//
+//   trajectory_benchmark
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
+#include "trajectory_generation_tools/smoothing/path_smoother.h"
+#include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
+#include "trajectory_generation_tools/trajectory/trajectory_timing.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+struct Summary {
+  double median, min, max;
+};
+
+Summary summarize(std::vector<double> times) {
+  std::sort(times.begin(), times.end());
+  return {times[times.size() / 2], times.front(), times.back()};
+}
+
+}  // namespace
+
+int main() {
+  using kinematic_coverage::Point2;
+  constexpr int kLanes = 5000;
+  constexpr int kRuns = 21;
+  std::vector<Point2> waypoints;
+  for (int i = 0; i < kLanes; ++i) {
+    const double x = 2.0 * i;
+    waypoints.push_back({x, i % 2 == 0 ? 0.0 : 100.0});
+    waypoints.push_back({x, i % 2 == 0 ? 100.0 : 0.0});
+  }
+  const double width = 2.0 * (kLanes - 1);
+  kinematic_coverage::PolygonWithHoles area;
+  area.hull = {{-10, -10}, {width + 10, -10}, {width + 10, 110}, {-10, 110}};
+  for (int k = 0; k < 20; ++k) {
+    const double x = width * k / 20.0 + 3.0;
+    const double y = k % 2 == 0 ? 103.0 : -7.0;  // beyond the lane ends, clear of the turns
+    area.holes.push_back({{x, y}, {x, y + 4}, {x + 6, y + 4}, {x + 6, y}});
+  }
+  kinematic_coverage::PlannerParameters parameters;
+  parameters.turning_radius = 1.0;
+  const kinematic_coverage::TrajectorySampler sampler(parameters);
+  const kinematic_coverage::TrajectoryTiming timing(parameters);
+
+  std::vector<double> smooth_ms, sample_ms, time_ms, total_ms;
+  kinematic_coverage::SmoothedPath path;
+  std::vector<kinematic_coverage::TrajectoryPose> poses;
+  double traversal_time_s = 0.0;
+  for (int run = 0; run < kRuns; ++run) {
+    const Clock::time_point start = Clock::now();
+    path = kinematic_coverage::PathSmoother(area, parameters.turning_radius).smooth(waypoints);
+    const Clock::time_point smoothed = Clock::now();
+    sampler.sample(path.primitives, poses);
+    const Clock::time_point sampled = Clock::now();
+    traversal_time_s = timing.assignTimes(path.primitives, poses);
+    time_ms.push_back(millisecondsSince(sampled));
+    sample_ms.push_back(std::chrono::duration<double, std::milli>(sampled - smoothed).count());
+    smooth_ms.push_back(std::chrono::duration<double, std::milli>(smoothed - start).count());
+    total_ms.push_back(millisecondsSince(start));
+  }
+  std::printf("%zu waypoints, %zu primitives, %zu poses, %d of %d turns smoothed, %.1f s\n",
+              waypoints.size(), path.primitives.size(), poses.size(),
+              path.statistics.turns_smoothed, path.statistics.turns_total, traversal_time_s);
+  std::printf("| stage | median ms | min ms | max ms |\n|---|---|---|---|\n");
+  const std::pair<const char*, std::vector<double>*> stages[] = {{"smoothing", &smooth_ms},
+                                                                 {"sampling", &sample_ms},
+                                                                 {"timing", &time_ms},
+                                                                 {"total", &total_ms}};
+  for (const auto& [name, times] : stages) {
+    const Summary summary = summarize(*times);
+    std::printf("| %s | %.2f | %.2f | %.2f |\n", name, summary.median, summary.min, summary.max);
+  }
+  return 0;
+}
