@@ -10,18 +10,12 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "test/support/random_polygons.h"
+#include "test/support/test_shapes.h"
 
 namespace kinematic_coverage {
 namespace {
 
-/// A square of side `side` centred on `centre`, turned by `angle`, counter-clockwise.
-Ring turnedSquare(const Point2& centre, double side, double angle) {
-  const Point2 u(std::cos(angle), std::sin(angle));
-  const Point2 v(-u.y(), u.x());
-  const double h = 0.5 * side;
-  return {centre - h * u - h * v, centre + h * u - h * v, centre + h * u + h * v,
-          centre - h * u + h * v};
-}
+using testing::turnedSquare;
 
 double perimeter(const PolygonWithHoles& polygon) {
   double length = 0.0;

@@ -9,18 +9,12 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "test/support/test_shapes.h"
 
 namespace kinematic_coverage {
 namespace {
 
-/// A square of side `side` centred on `centre`, turned by `angle`, counter-clockwise.
-Ring turnedSquare(const Point2& centre, double side, double angle) {
-  const Point2 u(std::cos(angle), std::sin(angle));
-  const Point2 v(-u.y(), u.x());
-  const double h = 0.5 * side;
-  return {centre - h * u - h * v, centre + h * u - h * v, centre + h * u + h * v,
-          centre - h * u + h * v};
-}
+using testing::turnedSquare;
 
 TEST(ReachableArea, DilationMatchesBruteForce) {
   std::mt19937 rng(7);
