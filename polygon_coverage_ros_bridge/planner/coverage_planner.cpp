@@ -60,17 +60,16 @@ Point2 nearestBoundaryPoint(const PolygonWithHoles& polygon, const Point2& p) {
   return best;
 }
 
-/// True when the segment [a, b] passes through the interior of a hole.
-bool crossesHole(const std::vector<Ring>& holes, const Point2& a, const Point2& b) {
+/// True when the segment [a, b] passes through the interior of a hole (more than
+/// `tolerance` inside it): the segment is cut where it crosses the hole's edges and the
+/// middle of every piece is tested.
+bool crossesHole(const std::vector<Ring>& holes, const Point2& a, const Point2& b,
+                 double tolerance) {
   for (const Ring& hole : holes) {
-    // Inside the hole's ring as a polygon of its own = inside the obstacle.
-    Ring ccw = hole;
-    if (signedArea(ccw) < 0.0) std::reverse(ccw.begin(), ccw.end());
-    const PolygonWithHoles obstacle{ccw, {}};
     std::vector<double> ts = {0.0, 1.0};
-    for (std::size_t i = 0, n = ccw.size(); i < n; ++i) {
-      const Point2& c = ccw[i];
-      const Point2& d = ccw[(i + 1) % n];
+    for (std::size_t i = 0, n = hole.size(); i < n; ++i) {
+      const Point2& c = hole[i];
+      const Point2& d = hole[(i + 1) % n];
       const double denominator = cross({0, 0}, b - a, d - c);
       if (denominator == 0.0) continue;
       const double t = cross({0, 0}, c - a, d - c) / denominator;
@@ -80,7 +79,7 @@ bool crossesHole(const std::vector<Ring>& holes, const Point2& a, const Point2& 
     std::sort(ts.begin(), ts.end());
     for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
       const Point2 mid = a + 0.5 * (ts[i] + ts[i + 1]) * (b - a);
-      if (insideRing(mid, ccw) && distanceToRing(mid, ccw) > 1e-9) return true;
+      if (insideRing(mid, hole) && distanceToRing(mid, hole) > tolerance) return true;
     }
   }
   return false;
@@ -101,7 +100,7 @@ Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& off
   }
   if (contains(offset_area, p, tolerance)) return p;
   const Point2 entry = nearestBoundaryPoint(offset_area, p);
-  if (crossesHole(free_area.holes, p, entry)) {
+  if (crossesHole(free_area.holes, p, entry, tolerance)) {
     throw InvalidInputError(what + " " + formatPoint(p) +
                             " is outside the offset free area and its straight leg to the "
                             "nearest point " +
