@@ -12,6 +12,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
+#include "polygon_coverage_ros_bridge/route/jog_removal.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
@@ -283,8 +284,15 @@ CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Poin
   append(graph.shortestPath(position, goal_inside), false);
   keep.back() = true;
   append({goal}, true);
-  const std::vector<Point2> waypoints = simplifiedPath(
-      path, keep, std::max(kDuplicateWaypointTolerance, kRelativeDuplicateTolerance * scale));
+  // Jogs shorter than a turning radius would stay sharp turns (issue 4); a shift within
+  // half the lateral overlap keeps what the neighbouring lanes rely on seen.
+  const JogRemoval jog_removal(graph, parameters_.turning_radius,
+                               0.5 * (sensor.width() - sensor.sweepDistance()));
+  std::vector<bool> kept;
+  const std::vector<Point2> without_jogs = jog_removal.apply(path, keep, &kept);
+  const std::vector<Point2> waypoints =
+      simplifiedPath(without_jogs, kept,
+                     std::max(kDuplicateWaypointTolerance, kRelativeDuplicateTolerance * scale));
   plan.first_inside = (waypoints.size() > 1 && (start - start_inside).norm() > tolerance) ? 1 : 0;
   plan.last_inside = waypoints.size() - 1;
   if (waypoints.size() > 1 && (goal - goal_inside).norm() > tolerance) plan.last_inside -= 1;

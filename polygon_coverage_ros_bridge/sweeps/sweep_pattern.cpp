@@ -15,8 +15,10 @@ constexpr double kRelativeLaneInset = 1e-9;
 /// A lane within this (relative) distance of an existing one is the same lane.
 constexpr double kRelativeLaneMerge = 1e-6;
 
-/// The interval [lo, hi] of the vertical line at x inside a ring (sweep frame).
-std::pair<double, double> verticalInterval(const Ring& ring, double x) {
+/// The interval [lo, hi] of the vertical line at x inside a ring (sweep frame). Edges
+/// within `tolerance` of x count as crossing it, so that a lane placed through a corner
+/// reaches the corner even when rounding puts it a hair beside the corner's edges.
+std::pair<double, double> verticalInterval(const Ring& ring, double x, double tolerance) {
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
   for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
@@ -24,13 +26,13 @@ std::pair<double, double> verticalInterval(const Ring& ring, double x) {
     const Point2& b = ring[(i + 1) % n];
     const double x_lo = std::min(a.x(), b.x());
     const double x_hi = std::max(a.x(), b.x());
-    if (x < x_lo || x > x_hi) continue;
-    if (x_hi == x_lo) {
+    if (x < x_lo - tolerance || x > x_hi + tolerance) continue;
+    if (x_hi - x_lo <= tolerance) {
       lo = std::min({lo, a.y(), b.y()});
       hi = std::max({hi, a.y(), b.y()});
       continue;
     }
-    const double t = (x - a.x()) / (b.x() - a.x());
+    const double t = std::clamp((x - a.x()) / (b.x() - a.x()), 0.0, 1.0);
     const double y = a.y() + t * (b.y() - a.y());
     lo = std::min(lo, y);
     hi = std::max(hi, y);
@@ -115,28 +117,57 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& 
 
   auto intervals = [&]() {
     std::vector<std::pair<double, double>> result;
-    for (double x : positions) result.push_back(verticalInterval(frame, x));
+    for (double x : positions) result.push_back(verticalInterval(frame, x, inset));
     return result;
   };
-  // Extra lanes through corners that no lane's swept footprint reaches.
+  // Corners that no lane's swept footprint reaches get a lane through them: the nearest
+  // lane moves there when it can without breaking the placement's rules (neighbours at
+  // most one sweep distance apart, outer lanes within the margin of the cell's sides),
+  // otherwise an extra lane is added. Moving beats adding: an extra lane beside a lane a
+  // few centimetres away makes a pattern that doubles back on itself and a jog no
+  // turning radius can smooth (issue 4). A moved lane stays where it was moved.
   std::vector<std::pair<double, double>> spans = intervals();
-  for (std::size_t i = 0; i < frame.size(); ++i) {
-    const Point2& corner = frame[i];
-    if (!isAreaVertex(cell[i])) continue;
-    bool seen = false;
-    for (std::size_t k = 0; k < positions.size() && !seen; ++k) {
-      seen = std::abs(corner.x() - positions[k]) <= half_width &&
-             corner.y() >= spans[k].first - half_length &&
-             corner.y() <= spans[k].second + half_length;
+  std::vector<bool> pinned(positions.size(), false);
+  auto movable = [&](std::size_t k, double x) {
+    if (pinned[k]) return false;
+    const double below = k == 0 ? x_min : positions[k - 1];
+    const double above = k + 1 == positions.size() ? x_max : positions[k + 1];
+    const double limit_below = k == 0 ? margin : spacing;
+    const double limit_above = k + 1 == positions.size() ? margin : spacing;
+    return x - below <= limit_below && above - x <= limit_above && x >= below && x <= above;
+  };
+  // A move can uncover a corner checked before, so the corners are checked again until
+  // all are seen; each change leaves one more corner on a lane that never moves again.
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      const Point2& corner = frame[i];
+      if (!isAreaVertex(cell[i])) continue;
+      bool seen = false;
+      for (std::size_t k = 0; k < positions.size() && !seen; ++k) {
+        seen = std::abs(corner.x() - positions[k]) <= half_width &&
+               corner.y() >= spans[k].first - half_length &&
+               corner.y() <= spans[k].second + half_length;
+      }
+      if (seen) continue;
+      const double x = std::clamp(corner.x(), x_min + inset, x_max - inset);
+      const auto nearest =
+          std::min_element(positions.begin(), positions.end(),
+                           [&](double a, double b) { return std::abs(a - x) < std::abs(b - x); });
+      const std::size_t k = static_cast<std::size_t>(nearest - positions.begin());
+      if (std::abs(positions[k] - x) <= kRelativeLaneMerge * scale) continue;
+      if (movable(k, x)) {
+        positions[k] = x;
+        pinned[k] = true;
+      } else {
+        const auto at = std::upper_bound(positions.begin(), positions.end(), x);
+        pinned.insert(pinned.begin() + (at - positions.begin()), true);
+        positions.insert(at, x);
+      }
+      spans = intervals();
+      changed = true;
     }
-    if (seen) continue;
-    const double x = std::clamp(corner.x(), x_min + inset, x_max - inset);
-    const bool duplicate = std::any_of(positions.begin(), positions.end(), [&](double p) {
-      return std::abs(p - x) <= kRelativeLaneMerge * scale;
-    });
-    if (duplicate) continue;
-    positions.insert(std::upper_bound(positions.begin(), positions.end(), x), x);
-    spans = intervals();
   }
 
   // Lane ends pulled in by the inset, never past the lane's middle. The corner check

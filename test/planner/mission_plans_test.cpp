@@ -68,9 +68,16 @@ TEST(MissionPlans, Lake30x30) {
     Mission variant = mission;
     variant.parameters.smoothing = smoothing;
     SCOPED_TRACE(smoothing ? "smoothed" : "unsmoothed");
-    expectValidTrajectory(variant, planned,
-                          TrajectoryGenerator(variant.parameters)
-                              .generate(planned.plan.waypoints, planned.free_area));
+    const GeneratedTrajectory trajectory =
+        TrajectoryGenerator(variant.parameters).generate(planned.plan.waypoints, planned.free_area);
+    expectValidTrajectory(variant, planned, trajectory);
+    if (smoothing) {
+      // Issue 4: at least 90 % of the turns smoothed.
+      const SmoothingStatistics& turns = trajectory.statistics;
+      ASSERT_GT(turns.turns_total, 0);
+      EXPECT_GE(turns.turns_smoothed, 0.9 * turns.turns_total)
+          << turns.turns_smoothed << " of " << turns.turns_total;
+    }
   }
 }
 

@@ -34,6 +34,18 @@ void expectValidLanes(const Ring& cell, double direction, const FrustumSensor& s
       EXPECT_LE(gap, sensor.sweepDistance() + 1e-9);
     }
   }
+  // Every corner lies in some lane's swept footprint.
+  for (const Point2& corner : cell) {
+    bool seen = false;
+    for (const auto& [a, b] : lanes) {
+      const double lateral = std::abs((corner - a).dot(across));
+      const double onward = (corner - a).dot(along);
+      seen = seen ||
+             (lateral <= 0.5 * sensor.width() + 1e-7 && onward >= -0.5 * sensor.length() - 1e-7 &&
+              onward <= (b - a).dot(along) + 0.5 * sensor.length() + 1e-7);
+    }
+    EXPECT_TRUE(seen) << "corner " << corner.transpose();
+  }
 }
 
 TEST(SweepPattern, RectangleLaneCountAndMargins) {
@@ -78,6 +90,27 @@ TEST(SweepPattern, ExtraLaneThroughUnseenCorner) {
   for (const auto& lane : lanes) reaches_tip = reaches_tip || lane.first.y() < -19.0;
   EXPECT_TRUE(reaches_tip);
   expectValidLanes(v, M_PI / 2, sensor);
+}
+
+TEST(SweepPattern, MovesANearbyLaneThroughAnUnseenCornerRatherThanAddingOne) {
+  // lake_30x30's cell left of the pentagon: its top corner (18.66, 26.21) lies beyond the
+  // ends of both lanes. The upper lane can move up to it and stay within one sweep
+  // distance of the lower one, so the cell keeps two lanes (an extra lane there made a
+  // U-turn 1.4 m wide that a 1 m turning radius cannot smooth).
+  const Ring cell = {{1, 26.2131}, {1, 16}, {17.382, 16}, {14.8292, 21.1056}, {18.6598, 26.2131}};
+  const FrustumSensor sensor(12.8851, 1.59613, 0.4);
+  const PolygonWithHoles area{{{1, 1}, {29, 1}, {29, 29}, {1, 29}},
+                              {{{13, 16}, {13, 8}, {6, 8}, {6, 16}},
+                               {{25.1437, 23.6195},
+                                {23.8498, 17.1502},
+                                {17.4472, 15.8696},
+                                {14.8292, 21.1056},
+                                {18.6598, 26.2131}}}};
+  const auto lanes = SweepPatternGenerator(sensor, 0.0, area).lanes(cell, 0.0);
+  ASSERT_EQ(lanes.size(), 2u);
+  const double top = std::max(lanes[0].first.y(), lanes[1].first.y());
+  EXPECT_NEAR(top, 26.2131, 1e-6);
+  EXPECT_LE(std::abs(lanes[0].first.y() - lanes[1].first.y()), sensor.sweepDistance());
 }
 
 TEST(SweepPattern, FourPatternsJoinLanesAtAlternatingEnds) {
