@@ -332,6 +332,13 @@ PlannerParameters MissionFileReader::readParameters(const std::string& path) con
   return parameters;
 }
 
+PlannerParameters MissionFileReader::withOverrides(
+    PlannerParameters parameters, const std::vector<std::string>& overrides) const {
+  for (const std::string& assignment : overrides) applyOverride(parameters, assignment);
+  ParameterValidator().validate(parameters);
+  return parameters;
+}
+
 std::vector<std::string> MissionFileReader::parameterNames() {
   std::vector<std::string> names;
   for (const ParameterField& field : parameterFields()) names.emplace_back(field.name);

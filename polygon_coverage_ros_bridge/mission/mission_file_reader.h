@@ -51,6 +51,11 @@ class MissionFileReader {
   /// Reads a file of parameter keys only (config/default.yaml) over the built-in defaults.
   PlannerParameters readParameters(const std::string& path) const;
 
+  /// `parameters` with `overrides` ("name=value" each, the value read as YAML) applied,
+  /// then validated: how the nodes apply their private parameters.
+  PlannerParameters withOverrides(PlannerParameters parameters,
+                                  const std::vector<std::string>& overrides) const;
+
   /// The names of every parameter a mission file or `--set` may give.
   static std::vector<std::string> parameterNames();
 };

@@ -3,116 +3,44 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <optional>
 #include <sstream>
 
-#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/command_line.h"
 #include "polygon_coverage_ros_bridge/mission/json_object.h"
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
 #include "polygon_coverage_ros_bridge/validation/point_format.h"
+#include "trajectory_generation_tools/plot/coverage_plot.h"
 #include "trajectory_generation_tools/trajectory/trajectory_csv_writer.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string seconds(double value) {
-  std::ostringstream out;
-  out.precision(3);
-  out << std::fixed << value << " s";
-  return out.str();
-}
-
-struct PlanArguments {
-  std::string mission_path;
-  std::string out_dir;
-  std::vector<std::string> overrides;
-  bool help = false;
-};
-
-PlanArguments parseArguments(const std::vector<std::string>& args) {
-  PlanArguments parsed;
-  bool has_out = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) {
-        throw InvalidInputError("coverage_tool plan: " + arg + " needs a value");
-      }
-      return args[++i];
-    };
-    if (arg == "--help" || arg == "-h") {
-      parsed.help = true;
-    } else if (arg == "--out") {
-      parsed.out_dir = value();
-      has_out = true;
-    } else if (arg == "--set") {
-      parsed.overrides.push_back(value());
-    } else if (arg.size() > 1 && arg[0] == '-') {
-      throw InvalidInputError("coverage_tool plan: unknown option '" + arg +
-                              "' (see coverage_tool plan --help)");
-    } else if (parsed.mission_path.empty()) {
-      parsed.mission_path = arg;
-    } else {
-      throw InvalidInputError("coverage_tool plan: one mission file expected, got '" +
-                              parsed.mission_path + "' and '" + arg + "'");
-    }
-  }
-  if (parsed.help) return parsed;
-  if (parsed.mission_path.empty()) {
-    throw InvalidInputError(
-        "coverage_tool plan: no mission file given (see coverage_tool plan --help)");
-  }
-  if (!has_out || parsed.out_dir.empty()) {
-    throw InvalidInputError("coverage_tool plan: --out DIR is required");
-  }
-  return parsed;
-}
-
-void createDirectory(const std::string& dir) {
-  std::error_code code;
-  std::filesystem::create_directories(dir, code);
-  if (code || !std::filesystem::is_directory(dir)) {
-    throw InvalidInputError("cannot create the output directory " + dir +
-                            (code ? ": " + code.message() : ""));
-  }
-}
-
-}  // namespace
 
 std::string PlanCommand::usage() {
   return "usage: coverage_tool plan MISSION.yaml --out DIR [--set name=value ...]\n"
          "  Plans a coverage path over the mission's polygon and writes DIR/waypoints.csv\n"
-         "  (x,y,yaw) and DIR/metrics.json. --set overrides a parameter of\n"
-         "  config/default.yaml (the value is read as YAML), after the mission file.\n";
+         "  (x,y,yaw), DIR/trajectory.csv (t,x,y,yaw,kind), DIR/metrics.json (with the\n"
+         "  trajectory's coverage) and DIR/plot.png. --set overrides a parameter of "
+         "config/default.yaml (the\n"
+         "  value is read as YAML), after the mission file.\n";
 }
 
 void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
                       std::ostream& err) const {
-  const PlanArguments arguments = parseArguments(args);
+  const CommandArguments arguments = parseCommandArguments("plan", args, {{"--out", "DIR"}});
   if (arguments.help) {
     out << usage();
     return;
   }
+  const std::string& out_dir = arguments.values.at("--out");
   // Progress goes to `out` as each stage finishes; warnings and notes go to `err` only
   // once the command has succeeded, so that a failure prints just its one error line.
-  Clock::time_point stage_start = Clock::now();
-  const Mission mission = MissionFileReader().read(arguments.mission_path, arguments.overrides);
-  out << "load: " << arguments.mission_path << ": hull of " << mission.polygon.hull.size()
-      << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id
-      << " (" << seconds(secondsSince(stage_start)) << ")" << std::endl;
+  const Mission mission = loadMission(arguments, out);
 
   const PlannedMission planned = planMission(mission, [&](const PlanningStage& stage) {
-    out << stage.name << ": " << stage.summary << " (" << seconds(stage.duration_s) << ")"
+    out << stage.name << ": " << stage.summary << " (" << formatSeconds(stage.duration_s) << ")"
         << std::endl;
   });
   const CoveragePlan& plan = planned.plan;
@@ -120,7 +48,7 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
   std::ostringstream notes;
   for (const std::string& warning : planned.warnings) notes << "warning: " << warning << "\n";
 
-  stage_start = Clock::now();
+  const auto stage_start = std::chrono::steady_clock::now();
   const GeneratedTrajectory trajectory =
       TrajectoryGenerator(mission.parameters).generate(plan.waypoints, planned.free_area);
   const SmoothingStatistics& turns = trajectory.statistics;
@@ -128,13 +56,26 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
       << " of " << turns.turns_total << " turns smoothed (inner " << turns.inner
       << ", outer bisector " << turns.outer_bisector << ", outer tangent " << turns.outer_tangent
       << "), " << trajectory.poses.size() << " poses, " << formatNumber(trajectory.traversal_time_s)
-      << " s (" << seconds(secondsSince(stage_start)) << ")" << std::endl;
+      << " s (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
-  createDirectory(arguments.out_dir);
-  const std::filesystem::path dir(arguments.out_dir);
+  // Coverage of the poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so
+  // that `coverage_tool evaluate` of that file reports the same figures.
+  std::vector<Pose2> poses;
+  poses.reserve(trajectory.poses.size());
+  for (const TrajectoryPose& pose : trajectory.poses) {
+    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
+  }
+  const TrajectoryCoverage coverage = measureTrajectoryCoverage(
+      planned.free_area, plan.offset_free_area, mission.parameters, poses);
+  out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
+      << ")" << std::endl;
+
+  createOutputDirectory(out_dir);
+  const std::filesystem::path dir(out_dir);
   const std::string waypoints_path = (dir / "waypoints.csv").string();
   const std::string trajectory_path = (dir / "trajectory.csv").string();
   const std::string metrics_path = (dir / "metrics.json").string();
+  const std::string plot_path = (dir / "plot.png").string();
   WaypointCsvWriter().write(waypoints_path, plan.waypoints);
   TrajectoryCsvWriter().write(trajectory_path, trajectory.poses);
   JsonObject metrics;
@@ -148,16 +89,36 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
       .set("max_curvature", trajectory.max_curvature)
       .set("turns_total", static_cast<double>(turns.turns_total))
       .set("turns_smoothed", static_cast<double>(turns.turns_smoothed));
+  setCoverageMetrics(coverage.report, metrics);
   if (std::isfinite(trajectory.min_obstacle_clearance_m)) {
     metrics.set("min_obstacle_clearance_m", trajectory.min_obstacle_clearance_m);
   }
   metrics.write(metrics_path);
-  notes << "note: plot.png and the coverage metrics are not produced yet (they arrive with "
-           "issue 5)\n";
+
+  CoveragePlotData plot;
+  plot.free_area = planned.free_area;
+  plot.offset_free_area = plan.offset_free_area;
+  plot.heatmap = coverage.heatmap;
+  plot.waypoints = plan.waypoints;
+  plot.trajectory = poses;
+  plot.start = mission.start;
+  plot.goal = mission.goal;
+  std::ostringstream title;
+  title << "Coverage plan: " << std::filesystem::path(arguments.mission_path).filename().string()
+        << (mission.parameters.smoothing ? " (smoothed)" : " (unsmoothed)");
+  std::ostringstream figures;
+  figures.precision(4);
+  figures << "coverage " << coverage.report.coverage_percent << " %  |  loss "
+          << coverage.report.coverage_loss_percent << " %  |  " << turns.turns_smoothed << " of "
+          << turns.turns_total << " turns smoothed  |  " << trajectory.trajectory_length_m
+          << " m  |  " << trajectory.traversal_time_s << " s";
+  plot.title_lines = {title.str(), figures.str()};
+  CoveragePlot().writePng(plot, plot_path);
   err << notes.str();
   out << "write: " << plan.waypoints.size() << " waypoints, planning took "
-      << seconds(planning_time_s) << "\n";
-  out << "wrote " << waypoints_path << " " << trajectory_path << " " << metrics_path << "\n";
+      << formatSeconds(planning_time_s) << "\n";
+  out << "wrote " << waypoints_path << " " << trajectory_path << " " << metrics_path << " "
+      << plot_path << "\n";
 }
 
 }  // namespace kinematic_coverage

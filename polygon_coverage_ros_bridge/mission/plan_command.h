@@ -9,12 +9,13 @@ namespace kinematic_coverage {
 /// `coverage_tool plan MISSION.yaml --out DIR [--set name=value ...]` (INTERFACE section
 /// 7): loads the mission, validates and cleans the polygon, plans with CoveragePlanner,
 /// smooths, samples and times the trajectory (TrajectoryGenerator), and writes
-/// DIR/waypoints.csv, DIR/trajectory.csv and DIR/metrics.json (planning_time_s: validation
-/// + cleaning + planning; cells, waypoint_count, path_length_m, time_cost_s and the
-/// trajectory's figures). One progress line per
-/// stage goes to `out` as the stage finishes, and the written files are named there last;
-/// warnings ("warning: ...") and a note on what is not produced yet go to `err` only once
-/// the command has succeeded, so that a failure prints just its one error line.
+/// DIR/waypoints.csv, DIR/trajectory.csv, DIR/metrics.json (planning_time_s: validation
+/// + cleaning + planning; cells, waypoint_count, path_length_m, time_cost_s, the
+/// trajectory's figures and its coverage as measureTrajectoryCoverage gives it) and
+/// DIR/plot.png (CoveragePlot: the heatmap, the paths, start, goal). One
+/// progress line per stage goes to `out` as the stage finishes, and the written files are
+/// named there last; warnings ("warning: ...") go to `err` only once the command has succeeded, so
+/// that a failure prints just its one error line.
 class PlanCommand {
  public:
   /// Usage text of the command.

@@ -9,6 +9,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_command.h"
+#include "polygon_coverage_ros_bridge/mission/evaluate_command.h"
 #include "polygon_coverage_ros_bridge/mission/plan_command.h"
 
 namespace kinematic_coverage {
@@ -22,9 +23,9 @@ const char* const kUsage =
     "usage: coverage_tool COMMAND [ARGS...]\n"
     "commands:\n"
     "  plan MISSION.yaml --out DIR [--set name=value ...]\n"
-    "      plan a coverage path: DIR/waypoints.csv, DIR/metrics.json\n"
-    "  evaluate MISSION.yaml --trajectory FILE.csv --out DIR\n"
-    "      coverage of a trajectory (not available yet: issue 5)\n"
+    "      plan a coverage path: DIR/waypoints.csv, trajectory.csv, metrics.json, plot.png\n"
+    "  evaluate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value ...]\n"
+    "      coverage of a trajectory (x,y,yaw[,t,kind] CSV): DIR/metrics.json, DIR/plot.png\n"
     "  replan MISSION.yaml --updated UPDATED.yaml --visited FILE.csv --out DIR\n"
     "      replan the remaining area after obstacles moved (not available yet: issue 8)\n"
     "  simulate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value ...]\n"
@@ -58,7 +59,8 @@ int runCommand(const std::vector<std::string>& args) {
   }
   if (command == "gtsp") return runGtspCommand(rest, std::cout, std::cerr);
   if (command == "evaluate") {
-    throw InvalidInputError("not available yet: coverage_tool evaluate arrives with issue 5");
+    EvaluateCommand().run(rest, std::cout, std::cerr);
+    return kExitSuccess;
   }
   if (command == "replan") {
     throw InvalidInputError("not available yet: coverage_tool replan arrives with issue 8");

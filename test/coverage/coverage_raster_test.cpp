@@ -146,6 +146,22 @@ TEST(CoverageRaster, AutomaticResolutionFollowsAccuracyAndBudget) {
   EXPECT_GE(given.origin().x() + given.columns() * given.cellSize(), 10.0);
 }
 
+TEST(CoverageRaster, AutomaticCellSizeStaysAboveItsFloor) {
+  // The accuracy asks for 0.01 m; a 0.05 m floor wins, a 0.002 m floor does not.
+  const PolygonWithHoles square{turnedSquare({0.0, 0.0}, 20.0, 0.0), {}};
+  EXPECT_DOUBLE_EQ(CoverageRaster::covering(square, {0.0, 1e-3, 10'000'000, 0.05}).cellSize(),
+                   0.05);
+  EXPECT_NEAR(CoverageRaster::covering(square, {0.0, 1e-3, 10'000'000, 0.002}).cellSize(), 0.01,
+              1e-12);
+  // The budget still coarsens beyond the floor; an explicit cell size ignores it.
+  EXPECT_LE(CoverageRaster::covering(square, {0.0, 1e-3, 10'000, 0.05}).cellCount(), 10'000u);
+  EXPECT_DOUBLE_EQ(CoverageRaster::covering(square, {0.02, 1e-3, 10'000'000, 0.05}).cellSize(),
+                   0.02);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(CoverageRaster::covering(square, {0.0, 1e-3, 1'000'000, -0.05}), InvalidInputError);
+  EXPECT_THROW(CoverageRaster::covering(square, {0.0, 1e-3, 1'000'000, nan}), InvalidInputError);
+}
+
 TEST(CoverageRaster, RejectsInvalidInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const PolygonWithHoles square{turnedSquare({0.0, 0.0}, 20.0, 0.0), {}};

@@ -1,4 +1,5 @@
 kc_add_gtest(test_mission
   test/mission/mission_file_reader_test.cpp
   test/mission/output_files_test.cpp
+  test/mission/coverage_finding_test.cpp
   LIBRARIES kc_mission)

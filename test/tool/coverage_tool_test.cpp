@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -139,8 +140,6 @@ TEST(CoverageTool, RejectsBadCommandLines) {
   expectInvalid("plan a.yaml b.yaml --out x", "one mission file expected");
   expectInvalid("plan a.yaml --bogus --out x", "unknown option '--bogus'");
   expectInvalid("plan '" + scratchDir() + "/missing.yaml' --out x", "missing.yaml: no such file");
-  expectInvalid("evaluate m.yaml",
-                "not available yet: coverage_tool evaluate arrives with issue 5");
   expectInvalid("replan m.yaml", "not available yet: coverage_tool replan arrives with issue 8");
   expectInvalid("simulate m.yaml",
                 "not available yet: coverage_tool simulate arrives with issue 9");
@@ -172,15 +171,15 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
   const std::vector<std::string> out_lines = lines(run.out);
   ASSERT_FALSE(out_lines.empty());
   EXPECT_EQ(out_lines.back(), "wrote " + out_dir + "/waypoints.csv " + out_dir +
-                                  "/trajectory.csv " + out_dir + "/metrics.json");
-  ASSERT_FALSE(run.err_lines.empty());
-  EXPECT_EQ(
-      run.err_lines.back().rfind("note: plot.png and the coverage metrics are not produced yet", 0),
-      0u);
+                                  "/trajectory.csv " + out_dir + "/metrics.json " + out_dir +
+                                  "/plot.png");
+  // The lake needs no cleaning: nothing on stderr.
+  EXPECT_TRUE(run.err_lines.empty()) << run.err_lines.front();
   // One progress line per stage, in order, on stdout.
   std::size_t previous = 0;
-  for (const std::string stage : {"load: ", "validate: ", "clean: ", "offset: ", "decompose: ",
-                                  "sweeps: ", "transitions: ", "solve: ", "path: ", "write: "}) {
+  for (const std::string stage :
+       {"load: ", "validate: ", "clean: ", "offset: ", "decompose: ", "sweeps: ", "transitions: ",
+        "solve: ", "path: ", "smooth: ", "coverage: ", "write: "}) {
     const auto it = std::find_if(out_lines.begin(), out_lines.end(), [&](const std::string& line) {
       return line.rfind(stage, 0) == 0;
     });
@@ -188,7 +187,7 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
     EXPECT_GE(static_cast<std::size_t>(it - out_lines.begin()), previous) << stage;
     previous = static_cast<std::size_t>(it - out_lines.begin());
   }
-  EXPECT_FALSE(std::filesystem::exists(out_dir + "/plot.png"));
+  EXPECT_EQ(readText(out_dir + "/plot.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
   const std::vector<std::string> trajectory = lines(readText(out_dir + "/trajectory.csv"));
   ASSERT_GE(trajectory.size(), 3u);
   EXPECT_EQ(trajectory[0], "t,x,y,yaw,kind");
@@ -211,6 +210,12 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
                                 "min_obstacle_clearance_m", "turns_total", "turns_smoothed"}) {
     EXPECT_GT(metric(json, key), 0.0) << key << " in " << json;
   }
+  // With 50 % overlap the lake's trajectory sees nearly all of it (issue 5).
+  EXPECT_GE(metric(json, "coverage_percent"), 99.9) << json;
+  EXPECT_LE(metric(json, "coverage_percent"), 100.0) << json;
+  EXPECT_DOUBLE_EQ(metric(json, "coverage_loss_percent"), 100.0 - metric(json, "coverage_percent"));
+  EXPECT_GE(metric(json, "reachable_coverage_percent"), 99.9) << json;
+  EXPECT_LE(metric(json, "reachable_coverage_percent"), 100.0) << json;
 }
 
 TEST(CoverageTool, ReportsEachCleaningStepAsAWarning) {
@@ -238,6 +243,129 @@ TEST(CoverageTool, ReportsEachCleaningStepAsAWarning) {
 
 TEST(CoverageTool, RejectsAnEmptyOffsetFreeArea) {
   expectInvalidMission(mission(kSquare, "wall_distance: 20\n"), "the offset free area is empty");
+}
+
+std::string writeTrajectory(const std::string& name, const std::string& csv) {
+  const std::string path = scratchDir() + "/" + name + ".csv";
+  std::ofstream(path) << csv;
+  return path;
+}
+
+const char* const kCoverageKeys[] = {"coverage_percent", "coverage_loss_percent",
+                                     "reachable_coverage_percent"};
+
+TEST(CoverageTool, EvaluatesPlansOwnTrajectoryToPlansFigures) {
+  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml";
+  const std::string plan_dir = scratchDir() + "/evaluate_plan_out";
+  const std::string evaluate_dir = scratchDir() + "/evaluate_out";
+  std::filesystem::remove_all(plan_dir);
+  std::filesystem::remove_all(evaluate_dir);
+  ASSERT_EQ(runTool("plan '" + lake + "' --out '" + plan_dir + "'").exit_status, 0);
+  const ToolRun run = runTool("evaluate '" + lake + "' --trajectory '" + plan_dir +
+                              "/trajectory.csv' --out '" + evaluate_dir + "'");
+  ASSERT_EQ(run.exit_status, 0) << (run.err_lines.empty() ? "" : run.err_lines[0]);
+  const std::vector<std::string> out_lines = lines(run.out);
+  ASSERT_FALSE(out_lines.empty());
+  EXPECT_EQ(out_lines.back(),
+            "wrote " + evaluate_dir + "/metrics.json " + evaluate_dir + "/plot.png");
+  EXPECT_EQ(readText(evaluate_dir + "/plot.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
+  for (const std::string stage :
+       {"load: ", "read: ", "validate: ", "clean: ", "offset: ", "coverage: "}) {
+    EXPECT_TRUE(std::any_of(out_lines.begin(), out_lines.end(), [&](const std::string& line) {
+      return line.rfind(stage, 0) == 0;
+    })) << stage;
+  }
+  EXPECT_TRUE(run.err_lines.empty()) << run.err_lines.front();
+
+  const std::string planned = readText(plan_dir + "/metrics.json");
+  const std::string evaluated = readText(evaluate_dir + "/metrics.json");
+  for (const char* key : kCoverageKeys) {
+    EXPECT_GE(metric(evaluated, key), 0.0) << key << " in " << evaluated;
+    EXPECT_LE(metric(evaluated, key), 100.0) << key << " in " << evaluated;
+    // The same poses on the same raster: the same figures.
+    EXPECT_EQ(metric(evaluated, key), metric(planned, key)) << key;
+  }
+  const std::size_t rows = lines(readText(plan_dir + "/trajectory.csv")).size() - 1;
+  EXPECT_EQ(metric(evaluated, "pose_count"), static_cast<double>(rows));
+  // The polyline through the poses: the planned length, arcs replaced by short chords.
+  EXPECT_LE(metric(evaluated, "trajectory_length_m"), metric(planned, "trajectory_length_m"));
+  EXPECT_NEAR(metric(evaluated, "trajectory_length_m"), metric(planned, "trajectory_length_m"),
+              1e-3 * metric(planned, "trajectory_length_m"));
+  EXPECT_GT(metric(evaluated, "evaluation_time_s"), 0.0);
+}
+
+TEST(CoverageTool, EvaluatesAStraightSweepAsItsAnalyticArea) {
+  // 30 m square, default frustum sensor: W = 6 tan(1.135), L = 6 tan(0.26). A straight
+  // run from x = 5 to x = 25 along y = 15, with the columns in another order and an extra
+  // one, sees a W x (20 + L) rectangle.
+  const std::string path = writeMission("evaluate_square", mission(kSquare));
+  const std::string trajectory =
+      writeTrajectory("sweep", "yaw, note ,y,x\n0,a,15,5\n0,b,15,10.25\n0,c,15,17.5\n0,d,15,25\n");
+  const std::string out_dir = scratchDir() + "/evaluate_sweep_out";
+  const ToolRun run =
+      runTool("evaluate '" + path + "' --trajectory '" + trajectory + "' --out '" + out_dir + "'");
+  ASSERT_EQ(run.exit_status, 0) << (run.err_lines.empty() ? "" : run.err_lines[0]);
+  const std::string json = readText(out_dir + "/metrics.json");
+  const double width = 6.0 * std::tan(2.27 / 2.0);
+  const double length = 6.0 * std::tan(0.52 / 2.0);
+  const double expected = 100.0 * width * (20.0 + length) / 900.0;
+  EXPECT_NEAR(metric(json, "coverage_percent"), expected, 0.1) << json;
+  EXPECT_NEAR(metric(json, "coverage_loss_percent"), 100.0 - expected, 0.1) << json;
+  EXPECT_EQ(metric(json, "pose_count"), 4.0);
+  EXPECT_DOUBLE_EQ(metric(json, "trajectory_length_m"), 20.0);
+  // --set reaches the sensor: a narrower footprint sees less.
+  const ToolRun narrow = runTool("evaluate '" + path + "' --trajectory '" + trajectory +
+                                 "' --out '" + out_dir + "' --set lateral_fov=1.2");
+  ASSERT_EQ(narrow.exit_status, 0);
+  const double narrow_expected = 100.0 * 6.0 * std::tan(0.6) * (20.0 + length) / 900.0;
+  EXPECT_NEAR(metric(readText(out_dir + "/metrics.json"), "coverage_percent"), narrow_expected,
+              0.1);
+}
+
+TEST(CoverageTool, EvaluateRejectsBadInputWithOneLine) {
+  const std::string path = writeMission("evaluate_ok", mission(kSquareWithHole));
+  const std::string good = writeTrajectory("good", "x,y,yaw\n5,5,0\n9,5,0\n");
+  const std::string out_dir = scratchDir() + "/evaluate_invalid_out";
+  std::filesystem::remove_all(out_dir);
+  const auto evaluate = [&](const std::string& trajectory, const std::string& expected) {
+    expectInvalid(
+        "evaluate '" + path + "' --trajectory '" + trajectory + "' --out '" + out_dir + "'",
+        expected);
+    EXPECT_FALSE(std::filesystem::exists(out_dir + "/metrics.json"));
+  };
+  evaluate(scratchDir() + "/missing.csv", "missing.csv: no such file");
+  evaluate(writeTrajectory("bad_row", "x,y,yaw\n5,5,0\n6,abc,0\n"),
+           "bad_row.csv:3: column y: 'abc' is not a number");
+  evaluate(writeTrajectory("short_row", "x,y,yaw\n5,5,0\n\n6,5\n"),
+           "short_row.csv:4: 2 fields, but the header has 3");
+  evaluate(writeTrajectory("nan", "x,y,yaw\n5,5,0\n6,5,nan\n"),
+           "nan.csv:3: column yaw: 'nan' is not finite");
+  evaluate(writeTrajectory("empty", "x,y,yaw\n"), "empty.csv: the file has no rows");
+  evaluate(writeTrajectory("no_yaw", "x,y,t\n5,5,0\n"), "no_yaw.csv:1: the header has no 'yaw'");
+  evaluate(writeTrajectory("bad_kind", "t,x,y,yaw,kind\n0,5,5,0,segment\n1,6,5,0,jump\n"),
+           "bad_kind.csv:3: column kind: 'jump' is not segment, arc or rotation");
+  evaluate(writeTrajectory("time", "t,x,y,yaw\n1,5,5,0\n0.5,6,5,0\n"),
+           "time.csv:3: column t: 0.5 is before the previous row's time");
+  expectInvalid("evaluate '" + path + "' --out '" + out_dir + "'",
+                "--trajectory FILE.csv is required");
+  expectInvalid("evaluate '" + path + "' --trajectory '" + good + "'", "--out DIR is required");
+  expectInvalid("evaluate '" + path + "' --trajectory", "--trajectory needs a value");
+  expectInvalid("evaluate --trajectory '" + good + "' --out x", "no mission file given");
+  expectInvalid("evaluate '" + path + "' --trajectory '" + good + "' --out x --waypoints y",
+                "unknown option '--waypoints'");
+  // The mission is validated and cleaned as plan does it.
+  const std::string crossed =
+      writeMission("evaluate_crossed", mission("  hull: [[0, 0], [30, 30], [30, 0], [0, 30]]\n"));
+  expectInvalid("evaluate '" + crossed + "' --trajectory '" + good + "' --out '" + out_dir + "'",
+                "hull is self-intersecting");
+  const std::string walled =
+      writeMission("evaluate_walled", mission(kSquare, "wall_distance: 20\n"));
+  expectInvalid("evaluate '" + walled + "' --trajectory '" + good + "' --out '" + out_dir + "'",
+                "the offset free area is empty");
+  EXPECT_FALSE(std::filesystem::exists(out_dir + "/metrics.json"));
+  const ToolRun help = runTool("evaluate --help");
+  EXPECT_EQ(help.exit_status, 0);
+  EXPECT_NE(help.out.find("--trajectory FILE.csv"), std::string::npos);
 }
 
 }  // namespace

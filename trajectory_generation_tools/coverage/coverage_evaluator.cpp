@@ -22,6 +22,14 @@ const FrustumSensor& requireValid(const FrustumSensor& sensor) {
 
 }  // namespace
 
+RasterResolution reportingResolution() {
+  RasterResolution resolution;
+  resolution.cell_size = 0.0;
+  resolution.relative_accuracy = 1e-3;
+  resolution.min_cell_size = kReportingCellSize;
+  return resolution;
+}
+
 CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
                                      const PolygonWithHoles& offset_free_area,
                                      const FrustumSensor& sensor,

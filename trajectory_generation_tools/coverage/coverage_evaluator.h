@@ -20,6 +20,19 @@ struct CoverageReport {
   double reachable_coverage_percent = 0.0;
 };
 
+/// Cell edge (metres) of the rasters on which coverage_tool measures coverage: issue 5
+/// asks for cells of at most 5 cm, accurate to 0.1 % of the free area.
+constexpr double kReportingCellSize = 0.05;
+
+/// The resolution of the coverage figures that coverage_tool reports (INTERFACE section
+/// 6): the automatic cell size for a worst-case error of 0.1 % of the free area, but no
+/// finer than kReportingCellSize. Maps up to about 100 m across get 5 cm cells, whose
+/// error is far below 0.1 % (test/coverage/analytic_coverage_test.cpp) although the worst
+/// case (perimeter * cell / 2) is looser; larger maps get the coarser cells that the bound
+/// allows, which the 4 000 000-cell budget coarsens further on large maps (by 1 % on a
+/// square, more on long or ragged maps, whose worst case then exceeds 0.1 %).
+RasterResolution reportingResolution();
+
 /// Evaluates what a sensor sees of a map: rasterizes the free area, the offset free area
 /// and the reachable area once, then measures trajectories or waypoint paths on them.
 class CoverageEvaluator {

@@ -128,11 +128,17 @@ CoverageRaster CoverageRaster::covering(const PolygonWithHoles& region,
               << " must be finite and > 0";
       throw InvalidInputError(message.str());
     }
+    if (!(resolution.min_cell_size >= 0.0) || !std::isfinite(resolution.min_cell_size)) {
+      std::ostringstream message;
+      message << "coverage raster: minimum cell size " << resolution.min_cell_size
+              << " must be finite and >= 0";
+      throw InvalidInputError(message.str());
+    }
     double boundary_length = perimeter(region.hull);
     for (const Ring& hole : region.holes) boundary_length += perimeter(hole);
     cell_size = 2.0 * resolution.relative_accuracy * region_area / boundary_length;
     const double budget_cell_size = std::sqrt(extent.x() * extent.y() / budget);
-    cell_size = std::max(cell_size, budget_cell_size);
+    cell_size = std::max({cell_size, resolution.min_cell_size, budget_cell_size});
     while (cells(cell_size) > budget) cell_size *= kCellSizeGrowth;
   }
   const double columns = cellsAlong(extent.x(), cell_size);

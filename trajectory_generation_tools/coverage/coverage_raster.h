@@ -31,6 +31,11 @@ struct RasterResolution {
   /// mostly cancel, so the typical error stays far below the bound); an explicit cell
   /// size that needs more cells is rejected. At least 9 (3 x 3 cells).
   std::size_t max_cells = 4'000'000;
+  /// Finest automatic cell size in metres (0: no floor). The accuracy bound above is a
+  /// worst case that small maps meet only with very fine cells, whose count, and so the
+  /// evaluation time, grows with the inverse square of the size; a floor keeps them
+  /// affordable where a coarser grid is already accurate enough.
+  double min_cell_size = 0.0;
 };
 
 /// A grid of square cells over a bounding box, on which areas are sampled at the cell

@@ -1,0 +1,87 @@
+#include "polygon_coverage_ros_bridge/mission/command_line.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+#include <system_error>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+
+namespace kinematic_coverage {
+
+CommandArguments parseCommandArguments(const std::string& command,
+                                       const std::vector<std::string>& args,
+                                       const std::vector<RequiredOption>& required) {
+  const std::string prefix = "coverage_tool " + command + ": ";
+  const auto is_required = [&](const std::string& arg) {
+    return std::any_of(required.begin(), required.end(),
+                       [&](const RequiredOption& option) { return option.name == arg; });
+  };
+  CommandArguments parsed;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw InvalidInputError(prefix + arg + " needs a value");
+      return args[++i];
+    };
+    if (arg == "--help" || arg == "-h") {
+      parsed.help = true;
+    } else if (arg == "--set") {
+      parsed.overrides.push_back(value());
+    } else if (is_required(arg)) {
+      parsed.values[arg] = value();
+    } else if (arg.size() > 1 && arg[0] == '-') {
+      throw InvalidInputError(prefix + "unknown option '" + arg + "' (see coverage_tool " +
+                              command + " --help)");
+    } else if (parsed.mission_path.empty()) {
+      parsed.mission_path = arg;
+    } else {
+      throw InvalidInputError(prefix + "one mission file expected, got '" + parsed.mission_path +
+                              "' and '" + arg + "'");
+    }
+  }
+  if (parsed.help) return parsed;
+  if (parsed.mission_path.empty()) {
+    throw InvalidInputError(prefix + "no mission file given (see coverage_tool " + command +
+                            " --help)");
+  }
+  for (const RequiredOption& option : required) {
+    const auto it = parsed.values.find(option.name);
+    if (it == parsed.values.end() || it->second.empty()) {
+      throw InvalidInputError(prefix + option.name + " " + option.value + " is required");
+    }
+  }
+  return parsed;
+}
+
+Mission loadMission(const CommandArguments& arguments, std::ostream& out) {
+  const auto start = std::chrono::steady_clock::now();
+  Mission mission = MissionFileReader().read(arguments.mission_path, arguments.overrides);
+  out << "load: " << arguments.mission_path << ": hull of " << mission.polygon.hull.size()
+      << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id
+      << " (" << formatSeconds(secondsSince(start)) << ")" << std::endl;
+  return mission;
+}
+
+void createOutputDirectory(const std::string& dir) {
+  std::error_code code;
+  std::filesystem::create_directories(dir, code);
+  if (code || !std::filesystem::is_directory(dir)) {
+    throw InvalidInputError("cannot create the output directory " + dir +
+                            (code ? ": " + code.message() : ""));
+  }
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string formatSeconds(double seconds) {
+  std::ostringstream out;
+  out.precision(3);
+  out << std::fixed << seconds << " s";
+  return out.str();
+}
+
+}  // namespace kinematic_coverage

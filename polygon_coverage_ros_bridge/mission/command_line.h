@@ -1,0 +1,53 @@
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/mission/mission.h"
+
+namespace kinematic_coverage {
+
+/// The arguments of a coverage_tool command on a mission (INTERFACE section 7): one
+/// mission file, options that take a value (`--out DIR`, ...), `--set name=value`
+/// overrides in command-line order, and `--help`.
+struct CommandArguments {
+  std::string mission_path;
+  /// Each option's value by the option's name, e.g. "--out" -> "DIR".
+  std::map<std::string, std::string> values;
+  /// "name=value" of every `--set`, in order.
+  std::vector<std::string> overrides;
+  bool help = false;
+};
+
+/// An option that takes a value and that a command requires, e.g. `--out DIR`.
+struct RequiredOption {
+  std::string name;   ///< "--out"
+  std::string value;  ///< how the usage text names its value: "DIR"
+};
+
+/// Parses the arguments after the command's name `command` ("plan", "evaluate"): the
+/// `required` options, `--set` and `--help` in any order around one mission file. Throws
+/// InvalidInputError naming the problem: an option without its value, an unknown option,
+/// no mission file or two, or, unless `--help` is given, a required option missing or
+/// empty.
+CommandArguments parseCommandArguments(const std::string& command,
+                                       const std::vector<std::string>& args,
+                                       const std::vector<RequiredOption>& required);
+
+/// Reads the mission file of `arguments` with its overrides (MissionFileReader) and
+/// prints the "load: ..." progress line to `out`. Throws InvalidInputError as the reader.
+Mission loadMission(const CommandArguments& arguments, std::ostream& out);
+
+/// Creates the output directory `dir` and its parents; InvalidInputError when it cannot.
+void createOutputDirectory(const std::string& dir);
+
+/// Seconds since `start` on the steady clock, for stage timings.
+double secondsSince(std::chrono::steady_clock::time_point start);
+
+/// A duration for progress lines, to the millisecond: "0.016 s".
+std::string formatSeconds(double seconds);
+
+}  // namespace kinematic_coverage

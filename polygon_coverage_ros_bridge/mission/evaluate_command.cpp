@@ -1,0 +1,113 @@
+#include "polygon_coverage_ros_bridge/mission/evaluate_command.h"
+
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "polygon_coverage_ros_bridge/mission/command_line.h"
+#include "polygon_coverage_ros_bridge/mission/json_object.h"
+#include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+#include "trajectory_generation_tools/plot/coverage_plot.h"
+
+namespace kinematic_coverage {
+
+std::string EvaluateCommand::usage() {
+  return "usage: coverage_tool evaluate MISSION.yaml --trajectory FILE.csv --out DIR\n"
+         "                             [--set name=value ...]\n"
+         "  Measures the coverage of a trajectory (a CSV file with a header row; columns\n"
+         "  x, y, yaw required, t and kind optional) over the mission's polygon, with the\n"
+         "  mission's sensor, and writes DIR/metrics.json and DIR/plot.png. --set overrides a\n"
+         "  parameter of config/default.yaml (the value is read as YAML), after the mission\n"
+         "  file.\n";
+}
+
+void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& out,
+                          std::ostream& err) const {
+  const CommandArguments arguments =
+      parseCommandArguments("evaluate", args, {{"--trajectory", "FILE.csv"}, {"--out", "DIR"}});
+  if (arguments.help) {
+    out << usage();
+    return;
+  }
+  const std::string& trajectory_path = arguments.values.at("--trajectory");
+  const std::string& out_dir = arguments.values.at("--out");
+  // Progress goes to `out` as each stage finishes; warnings and notes go to `err` only
+  // once the command has succeeded, so that a failure prints just its one error line.
+  const Mission mission = loadMission(arguments, out);
+
+  auto stage_start = std::chrono::steady_clock::now();
+  const PoseTable table = PoseCsvReader().read(trajectory_path);
+  std::vector<Pose2> poses;
+  poses.reserve(table.rows.size());
+  double trajectory_length_m = 0.0;
+  for (const PoseRecord& row : table.rows) {
+    if (!poses.empty()) {
+      trajectory_length_m += (row.pose.position() - poses.back().position()).norm();
+    }
+    poses.push_back(row.pose);
+  }
+  out << "read: " << trajectory_path << ": " << poses.size() << " poses, " << trajectory_length_m
+      << " m (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
+
+  // The free area and offset free area as `plan` makes them (INTERFACE section 3).
+  const auto evaluation_start = std::chrono::steady_clock::now();
+  stage_start = evaluation_start;
+  PolygonValidator().validate(mission.polygon);
+  out << "validate: polygon valid (" << formatSeconds(secondsSince(stage_start)) << ")"
+      << std::endl;
+
+  stage_start = std::chrono::steady_clock::now();
+  const CleanedPolygon cleaned = PolygonCleaner().clean(mission.polygon);
+  out << "clean: free area " << area(cleaned.free_area) << " m^2, "
+      << cleaned.free_area.holes.size() << " holes, " << cleaned.warnings.size()
+      << " cleaning steps (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
+
+  stage_start = std::chrono::steady_clock::now();
+  const OffsetFreeArea offset =
+      computeOffsetFreeArea(cleaned.free_area, mission.parameters.wall_distance);
+  out << "offset: offset free area " << area(offset.area) << " m^2 with "
+      << offset.area.holes.size() << " holes (" << formatSeconds(secondsSince(stage_start)) << ")"
+      << std::endl;
+
+  const TrajectoryCoverage coverage =
+      measureTrajectoryCoverage(cleaned.free_area, offset.area, mission.parameters, poses);
+  out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
+      << ")" << std::endl;
+  const double evaluation_time_s = secondsSince(evaluation_start);
+
+  createOutputDirectory(out_dir);
+  const std::string metrics_path = (std::filesystem::path(out_dir) / "metrics.json").string();
+  JsonObject metrics;
+  setCoverageMetrics(coverage.report, metrics);
+  metrics.set("pose_count", static_cast<double>(poses.size()))
+      .set("trajectory_length_m", trajectory_length_m)
+      .set("evaluation_time_s", evaluation_time_s);
+  metrics.write(metrics_path);
+  const std::string plot_path = (std::filesystem::path(out_dir) / "plot.png").string();
+  CoveragePlotData plot;
+  plot.free_area = cleaned.free_area;
+  plot.offset_free_area = offset.area;
+  plot.heatmap = coverage.heatmap;
+  plot.trajectory = poses;
+  std::ostringstream figures;
+  figures.precision(4);
+  figures << "coverage " << coverage.report.coverage_percent << " %  |  loss "
+          << coverage.report.coverage_loss_percent << " %  |  " << poses.size() << " poses  |  "
+          << trajectory_length_m << " m";
+  plot.title_lines = {"Coverage of " + std::filesystem::path(trajectory_path).filename().string(),
+                      figures.str()};
+  CoveragePlot().writePng(plot, plot_path);
+
+  std::ostringstream notes;
+  for (const std::string& warning : cleaned.warnings) notes << "warning: " << warning << "\n";
+  for (const std::string& warning : offset.warnings) notes << "warning: " << warning << "\n";
+  err << notes.str();
+  out << "wrote " << metrics_path << " " << plot_path << "\n";
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/mission/json_object.h"
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
+
+namespace kinematic_coverage {
+
+/// The coverage of one trajectory as coverage_tool reports it, and how it was measured.
+struct TrajectoryCoverage {
+  CoverageReport report;
+  double cell_size_m = 0.0;  ///< edge of the raster's square cells
+  double duration_s = 0.0;   ///< rasterizing the areas, seeing the poses and the report
+  Heatmap heatmap;           ///< separate visits per cell, for plot.png
+};
+
+/// Measures the coverage (INTERFACE section 6) of a trajectory's sampled `poses` over a
+/// mission's cleaned free area, with the sensor that `parameters` describe, on the raster
+/// of reportingResolution(): the one measurement behind `plan`'s figures for its own
+/// trajectory and `evaluate`'s for any trajectory file, so that both agree on the same
+/// poses. `offset_free_area` only shapes the reachable area. Throws InvalidInputError for
+/// a non-finite pose, an invalid sensor or an offset free area that covers no cell.
+TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
+                                             const PolygonWithHoles& offset_free_area,
+                                             const PlannerParameters& parameters,
+                                             const std::vector<Pose2>& poses);
+
+/// The summary of a coverage stage's progress line, e.g. "99.977 % of the free area seen
+/// (coverage loss 0.023 %), 100 % of the reachable area, 5 cm cells".
+std::string coverageSummary(const TrajectoryCoverage& coverage);
+
+/// Sets `coverage_percent`, `coverage_loss_percent` and `reachable_coverage_percent` of
+/// metrics.json (INTERFACE section 7).
+void setCoverageMetrics(const CoverageReport& report, JsonObject& metrics);
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,3 @@
+kc_add_gtest(test_plot
+  test/plot/coverage_plot_test.cpp
+  LIBRARIES kc_plot PkgConfig::CAIRO)

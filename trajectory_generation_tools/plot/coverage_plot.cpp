@@ -1,0 +1,740 @@
+#include "trajectory_generation_tools/plot/coverage_plot.h"
+
+#include <cairo.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+
+namespace kinematic_coverage {
+namespace {
+
+/// Heatmap colours for 0, 1, 2, 3 and 4+ visits: red for never seen, then a light-to-dark
+/// sequence (ColorBrewer YlGnBu) for seen once and for overlap.
+constexpr std::array<PlotColour, 5> kVisitColours{
+    {{215, 48, 39}, {199, 233, 180}, {127, 205, 187}, {65, 182, 196}, {44, 127, 184}}};
+constexpr PlotColour kOutlineColour{45, 45, 45};
+constexpr PlotColour kOffsetAreaColour{80, 80, 80};
+constexpr PlotColour kWaypointColour{230, 97, 1};
+constexpr PlotColour kTrajectoryColour{20, 20, 20};
+constexpr PlotColour kStartColour{26, 152, 80};
+constexpr PlotColour kGoalColour{123, 50, 148};
+constexpr PlotColour kTextColour{25, 25, 25};
+constexpr PlotColour kSubtitleColour{70, 70, 70};
+
+/// The heatmap image's longest side, pixels: larger grids are sampled down (nearest cell),
+/// which keeps memory bounded and is still finer than any plot box.
+constexpr int kMaxHeatmapImageSide = 4096;
+/// Image width at which fonts, margins and line widths have their nominal size.
+constexpr double kNominalWidth = 1200.0;
+/// Default on-image distance between heading arrows, pixels, and the least one.
+constexpr double kDefaultArrowSpacingPixels = 90.0;
+constexpr double kMinArrowSpacingPixels = 12.0;
+/// Free margin around the drawn items, as a share of their larger extent.
+constexpr double kBoundsPadding = 0.04;
+/// Box height range, as a share of its width, when the image height follows the area.
+constexpr double kMinAutoAspect = 0.45;
+constexpr double kMaxAutoAspect = 1.4;
+/// Least box size, pixels, that leaves room for the plot after the margins.
+constexpr double kMinBoxSide = 100.0;
+/// On-image distance between axis ticks the tick step aims at, pixels.
+constexpr double kTickSpacingPixels = 110.0;
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
+};
+struct ContextDeleter {
+  void operator()(cairo_t* context) const { cairo_destroy(context); }
+};
+using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
+
+bool isFinite(const Point2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
+
+void checkRing(const Ring& ring, const std::string& what) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    if (!isFinite(ring[i])) {
+      throw InvalidInputError("coverage plot: non-finite vertex " + std::to_string(i) + " in " +
+                              what);
+    }
+  }
+}
+
+void checkArea(const PolygonWithHoles& area, const std::string& what) {
+  checkRing(area.hull, what + " hull");
+  for (std::size_t h = 0; h < area.holes.size(); ++h) {
+    checkRing(area.holes[h], what + " hole " + std::to_string(h));
+  }
+}
+
+void checkPoses(const std::vector<Pose2>& poses, const std::string& what) {
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const Pose2& pose = poses[i];
+    if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw)) {
+      throw InvalidInputError("coverage plot: non-finite pose " + std::to_string(i) + " in " +
+                              what);
+    }
+  }
+}
+
+void checkHeatmap(const Heatmap& heatmap) {
+  if (!isFinite(heatmap.origin) || !std::isfinite(heatmap.cell_size) || heatmap.cell_size <= 0.0) {
+    throw InvalidInputError(
+        "coverage plot: heatmap origin and cell size must be finite and the cell size > 0");
+  }
+  if (heatmap.columns <= 0 || heatmap.rows <= 0) {
+    throw InvalidInputError("coverage plot: heatmap grid is empty (" +
+                            std::to_string(heatmap.columns) + " x " + std::to_string(heatmap.rows) +
+                            " cells)");
+  }
+  const std::size_t cells =
+      static_cast<std::size_t>(heatmap.columns) * static_cast<std::size_t>(heatmap.rows);
+  if (heatmap.visits.size() != cells) {
+    throw InvalidInputError("coverage plot: heatmap has " + std::to_string(heatmap.visits.size()) +
+                            " visit counts for " + std::to_string(cells) + " cells");
+  }
+}
+
+void checkData(const CoveragePlotData& data) {
+  if (data.free_area.hull.size() < 3) {
+    throw InvalidInputError("coverage plot: free area hull has " +
+                            std::to_string(data.free_area.hull.size()) +
+                            " vertices, needs at least 3");
+  }
+  checkArea(data.free_area, "free area");
+  const auto [min_x, max_x] =
+      std::minmax_element(data.free_area.hull.begin(), data.free_area.hull.end(),
+                          [](const Point2& a, const Point2& b) { return a.x() < b.x(); });
+  const auto [min_y, max_y] =
+      std::minmax_element(data.free_area.hull.begin(), data.free_area.hull.end(),
+                          [](const Point2& a, const Point2& b) { return a.y() < b.y(); });
+  if (!(max_x->x() > min_x->x()) || !(max_y->y() > min_y->y())) {
+    throw InvalidInputError("coverage plot: free area hull has no extent in x or y");
+  }
+  if (data.offset_free_area) checkArea(*data.offset_free_area, "offset free area");
+  if (data.heatmap) checkHeatmap(*data.heatmap);
+  checkPoses(data.waypoints, "waypoint path");
+  checkPoses(data.trajectory, "trajectory");
+  if (data.start && !isFinite(*data.start)) {
+    throw InvalidInputError("coverage plot: non-finite start");
+  }
+  if (data.goal && !isFinite(*data.goal)) {
+    throw InvalidInputError("coverage plot: non-finite goal");
+  }
+}
+
+/// Axis-aligned bounds of points.
+struct Bounds {
+  Point2 min = Point2::Constant(std::numeric_limits<double>::infinity());
+  Point2 max = Point2::Constant(-std::numeric_limits<double>::infinity());
+
+  void add(const Point2& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
+};
+
+/// Bounds of everything drawn in the box except the heatmap, which may reach beyond the
+/// free area it is clipped to.
+Bounds drawnBounds(const CoveragePlotData& data) {
+  Bounds bounds;
+  for (const Point2& p : data.free_area.hull) bounds.add(p);
+  if (data.offset_free_area) {
+    for (const Point2& p : data.offset_free_area->hull) bounds.add(p);
+  }
+  for (const Pose2& pose : data.waypoints) bounds.add(pose.position());
+  for (const Pose2& pose : data.trajectory) bounds.add(pose.position());
+  if (data.start) bounds.add(*data.start);
+  if (data.goal) bounds.add(*data.goal);
+  return bounds;
+}
+
+/// Sizes that scale with the image width.
+struct Scale {
+  double factor;  ///< of lengths: margins, line widths, markers
+  double title;   ///< font sizes, pixels
+  double subtitle;
+  double tick;
+  double label;
+  double legend;
+};
+
+/// Sizes grow with the square root of the width, so that small images keep legible text
+/// and large ones give the extra room to the plot.
+Scale scaleFor(int width) {
+  const double f = std::sqrt(width / kNominalWidth);
+  return {f, 21.0 * f, 15.0 * f, 14.0 * f, 15.0 * f, 14.0 * f};
+}
+
+/// Height of the title block above the box, pixels.
+double titleBlockHeight(const std::vector<std::string>& lines, const Scale& scale) {
+  if (lines.empty()) return 26.0 * scale.factor;
+  double height = 18.0 * scale.factor + 1.35 * scale.title;
+  height += 1.35 * scale.subtitle * static_cast<double>(lines.size() - 1);
+  return height + 16.0 * scale.factor;
+}
+
+CoveragePlotLayout computeLayout(const CoveragePlotData& data, const CoveragePlotOptions& options) {
+  checkData(data);
+  Bounds bounds = drawnBounds(data);
+  const Point2 extent = bounds.max - bounds.min;
+  const double padding = kBoundsPadding * extent.maxCoeff();
+  bounds.min -= Point2::Constant(padding);
+  bounds.max += Point2::Constant(padding);
+  const Point2 span = bounds.max - bounds.min;
+  if (!std::isfinite(span.x()) || !std::isfinite(span.y())) {
+    throw InvalidInputError("coverage plot: coordinates too large to plot");
+  }
+
+  const Scale scale = scaleFor(options.width);
+  CoveragePlotLayout layout;
+  layout.width = options.width;
+  layout.box_left = std::round(92.0 * scale.factor);
+  layout.box_top = std::round(titleBlockHeight(data.title_lines, scale));
+  layout.box_width = std::round(options.width - layout.box_left - 240.0 * scale.factor);
+  const double bottom_margin = std::round(68.0 * scale.factor);
+  if (options.height == 0) {
+    const double aspect = std::clamp(span.y() / span.x(), kMinAutoAspect, kMaxAutoAspect);
+    layout.box_height = std::round(layout.box_width * aspect);
+    layout.height = static_cast<int>(layout.box_top + layout.box_height + bottom_margin);
+    if (layout.height > CoveragePlotOptions::kMaxSide) {
+      throw InvalidInputError("coverage plot: " + std::to_string(layout.height) +
+                              " pixels high, more than " +
+                              std::to_string(CoveragePlotOptions::kMaxSide));
+    }
+  } else {
+    layout.height = options.height;
+    layout.box_height = options.height - layout.box_top - bottom_margin;
+  }
+  if (layout.box_width < kMinBoxSide || layout.box_height < kMinBoxSide) {
+    throw InvalidInputError("coverage plot: " + std::to_string(layout.width) + " x " +
+                            std::to_string(layout.height) +
+                            " pixels leave no room for the plot after the title and axes");
+  }
+  layout.pixels_per_metre = std::min(layout.box_width / span.x(), layout.box_height / span.y());
+  const Point2 box_span = Point2(layout.box_width, layout.box_height) / layout.pixels_per_metre;
+  layout.box_world_min = 0.5 * (bounds.min + bounds.max) - 0.5 * box_span;
+  return layout;
+}
+
+void setColour(cairo_t* cr, const PlotColour& colour) {
+  cairo_set_source_rgb(cr, colour.red / 255.0, colour.green / 255.0, colour.blue / 255.0);
+}
+
+void moveTo(cairo_t* cr, const CoveragePlotLayout& layout, const Point2& world) {
+  const Point2 p = layout.toPixel(world);
+  cairo_move_to(cr, p.x(), p.y());
+}
+
+void lineTo(cairo_t* cr, const CoveragePlotLayout& layout, const Point2& world) {
+  const Point2 p = layout.toPixel(world);
+  cairo_line_to(cr, p.x(), p.y());
+}
+
+void ringPath(cairo_t* cr, const CoveragePlotLayout& layout, const Ring& ring) {
+  if (ring.empty()) return;
+  moveTo(cr, layout, ring.front());
+  for (std::size_t i = 1; i < ring.size(); ++i) lineTo(cr, layout, ring[i]);
+  cairo_close_path(cr);
+}
+
+/// The path of an area, to be filled or clipped with the even-odd rule.
+void areaPath(cairo_t* cr, const CoveragePlotLayout& layout, const PolygonWithHoles& area) {
+  ringPath(cr, layout, area.hull);
+  for (const Ring& hole : area.holes) ringPath(cr, layout, hole);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+}
+
+void posePath(cairo_t* cr, const CoveragePlotLayout& layout, const std::vector<Pose2>& poses) {
+  moveTo(cr, layout, poses.front().position());
+  for (std::size_t i = 1; i < poses.size(); ++i) lineTo(cr, layout, poses[i].position());
+}
+
+void setDash(cairo_t* cr, double on, double off) {
+  const std::array<double, 2> dashes{on, off};
+  cairo_set_dash(cr, dashes.data(), 2, 0.0);
+}
+
+std::uint32_t packedColour(const PlotColour& colour) {
+  return 0xff000000u | (std::uint32_t{colour.red} << 16) | (std::uint32_t{colour.green} << 8) |
+         std::uint32_t{colour.blue};
+}
+
+/// The heatmap as an image, one pixel per cell (sampled down beyond
+/// kMaxHeatmapImageSide), top row = the grid's last row.
+SurfacePtr heatmapImage(const Heatmap& heatmap) {
+  const int columns = std::min(heatmap.columns, kMaxHeatmapImageSide);
+  const int rows = std::min(heatmap.rows, kMaxHeatmapImageSide);
+  SurfacePtr image(cairo_image_surface_create(CAIRO_FORMAT_RGB24, columns, rows));
+  if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error("coverage plot: cannot allocate the heatmap image");
+  }
+  std::array<std::uint32_t, kVisitColours.size()> palette;
+  for (std::size_t i = 0; i < palette.size(); ++i) palette[i] = packedColour(kVisitColours[i]);
+  std::vector<std::size_t> cell_columns(columns);
+  for (int c = 0; c < columns; ++c) {
+    cell_columns[c] = static_cast<std::size_t>(c) * heatmap.columns / columns;
+  }
+  cairo_surface_flush(image.get());
+  unsigned char* pixels = cairo_image_surface_get_data(image.get());
+  const int stride = cairo_image_surface_get_stride(image.get());
+  const std::size_t last_class = palette.size() - 1;
+  for (int r = 0; r < rows; ++r) {
+    const std::size_t grid_row =
+        heatmap.rows - 1 - static_cast<std::size_t>(r) * heatmap.rows / rows;
+    const std::uint16_t* visits = heatmap.visits.data() + grid_row * heatmap.columns;
+    auto* line = reinterpret_cast<std::uint32_t*>(pixels + static_cast<std::size_t>(r) * stride);
+    for (int c = 0; c < columns; ++c) {
+      line[c] = palette[std::min<std::size_t>(visits[cell_columns[c]], last_class)];
+    }
+  }
+  cairo_surface_mark_dirty(image.get());
+  return image;
+}
+
+/// The free area: a light fill, the heatmap clipped to it, then the obstacles and outlines.
+void drawAreas(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
+               const Scale& scale) {
+  areaPath(cr, layout, data.free_area);
+  setColour(cr, kFreeAreaColour);
+  cairo_fill(cr);
+
+  if (data.heatmap) {
+    const Heatmap& heatmap = *data.heatmap;
+    const SurfacePtr image = heatmapImage(heatmap);
+    cairo_save(cr);
+    areaPath(cr, layout, data.free_area);
+    cairo_clip(cr);
+    const Point2 top_left =
+        layout.toPixel(heatmap.origin + Point2(0.0, heatmap.rows * heatmap.cell_size));
+    const double pixels_per_cell = layout.pixels_per_metre * heatmap.cell_size;
+    cairo_translate(cr, top_left.x(), top_left.y());
+    cairo_scale(cr, pixels_per_cell * heatmap.columns / cairo_image_surface_get_width(image.get()),
+                pixels_per_cell * heatmap.rows / cairo_image_surface_get_height(image.get()));
+    cairo_set_source_surface(cr, image.get(), 0.0, 0.0);
+    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
+    cairo_paint(cr);
+    cairo_restore(cr);
+  }
+
+  for (const Ring& hole : data.free_area.holes) ringPath(cr, layout, hole);
+  setColour(cr, kObstacleColour);
+  cairo_fill_preserve(cr);
+  setColour(cr, kOutlineColour);
+  cairo_set_line_width(cr, 1.2 * scale.factor);
+  cairo_stroke(cr);
+
+  ringPath(cr, layout, data.free_area.hull);
+  cairo_set_line_width(cr, 1.7 * scale.factor);
+  cairo_stroke(cr);
+
+  if (data.offset_free_area) {
+    areaPath(cr, layout, *data.offset_free_area);
+    setColour(cr, kOffsetAreaColour);
+    cairo_set_line_width(cr, 1.1 * scale.factor);
+    setDash(cr, 7.0 * scale.factor, 4.0 * scale.factor);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+  }
+}
+
+void drawWaypointPath(cairo_t* cr, const CoveragePlotLayout& layout,
+                      const std::vector<Pose2>& waypoints, const Scale& scale) {
+  if (waypoints.empty()) return;
+  setColour(cr, kWaypointColour);
+  if (waypoints.size() > 1) {
+    posePath(cr, layout, waypoints);
+    cairo_set_line_width(cr, 1.3 * scale.factor);
+    setDash(cr, 6.0 * scale.factor, 4.0 * scale.factor);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+  }
+  for (const Pose2& pose : waypoints) {
+    const Point2 p = layout.toPixel(pose.position());
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, p.x(), p.y(), 2.8 * scale.factor, 0.0, 2.0 * M_PI);
+  }
+  cairo_fill(cr);
+}
+
+/// A filled arrowhead centred on pixel `centre`, pointing along world heading `yaw`.
+void arrowPath(cairo_t* cr, const Point2& centre, double yaw, const Scale& scale) {
+  const Point2 along(std::cos(yaw), -std::sin(yaw));
+  const Point2 across(-along.y(), along.x());
+  const double length = 12.0 * scale.factor;
+  const double half_width = 4.5 * scale.factor;
+  const Point2 tip = centre + 0.5 * length * along;
+  const Point2 back = centre - 0.5 * length * along;
+  cairo_move_to(cr, tip.x(), tip.y());
+  cairo_line_to(cr, back.x() + half_width * across.x(), back.y() + half_width * across.y());
+  cairo_line_to(cr, back.x() + 0.3 * length * along.x(), back.y() + 0.3 * length * along.y());
+  cairo_line_to(cr, back.x() - half_width * across.x(), back.y() - half_width * across.y());
+  cairo_close_path(cr);
+}
+
+double wrappedAngle(double angle) { return std::remainder(angle, 2.0 * M_PI); }
+
+void drawTrajectory(cairo_t* cr, const CoveragePlotLayout& layout,
+                    const std::vector<Pose2>& trajectory, double arrow_spacing,
+                    const Scale& scale) {
+  if (trajectory.size() < 2) return;
+  setColour(cr, kTrajectoryColour);
+  posePath(cr, layout, trajectory);
+  cairo_set_line_width(cr, 1.8 * scale.factor);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_stroke(cr);
+
+  const double spacing =
+      arrow_spacing > 0.0
+          ? std::max(arrow_spacing, kMinArrowSpacingPixels / layout.pixels_per_metre)
+          : kDefaultArrowSpacingPixels * scale.factor / layout.pixels_per_metre;
+  double travelled = 0.0;
+  double next_arrow = 0.5 * spacing;
+  for (std::size_t i = 1; i < trajectory.size(); ++i) {
+    const Pose2& from = trajectory[i - 1];
+    const Pose2& to = trajectory[i];
+    const double length = (to.position() - from.position()).norm();
+    while (travelled + length >= next_arrow) {
+      const double t = (next_arrow - travelled) / length;
+      const Point2 position = from.position() + t * (to.position() - from.position());
+      const double yaw = from.yaw + t * wrappedAngle(to.yaw - from.yaw);
+      arrowPath(cr, layout.toPixel(position), yaw, scale);
+      next_arrow += spacing;
+    }
+    travelled += length;
+  }
+  cairo_fill(cr);
+}
+
+enum class Align { kStart, kCentre, kEnd };
+
+void selectFont(cairo_t* cr, double size, bool bold) {
+  cairo_select_font_face(cr, "sans", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+}
+
+/// Moves to where `text` starts so that it is aligned at (x, y) horizontally as `horizontal`
+/// says and vertically centred on y.
+void moveToText(cairo_t* cr, const std::string& text, double x, double y, Align horizontal) {
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, text.c_str(), &extents);
+  cairo_font_extents_t font;
+  cairo_font_extents(cr, &font);
+  double left = x - extents.x_bearing;
+  if (horizontal == Align::kCentre) left -= 0.5 * extents.width;
+  if (horizontal == Align::kEnd) left -= extents.width;
+  cairo_move_to(cr, left, y + 0.5 * (font.ascent - font.descent));
+}
+
+void showText(cairo_t* cr, const std::string& text, double x, double y, Align horizontal) {
+  moveToText(cr, text, x, y, horizontal);
+  cairo_show_text(cr, text.c_str());
+}
+
+/// Text with a white halo, readable over the heatmap and lines.
+void showHaloText(cairo_t* cr, const std::string& text, double x, double y, Align horizontal,
+                  const Scale& scale) {
+  moveToText(cr, text, x, y, horizontal);
+  cairo_text_path(cr, text.c_str());
+  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo_set_line_width(cr, 3.5 * scale.factor);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_stroke_preserve(cr);
+  setColour(cr, kTextColour);
+  cairo_fill(cr);
+}
+
+void startMarkerPath(cairo_t* cr, const Point2& centre, const Scale& scale) {
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, centre.x(), centre.y(), 7.0 * scale.factor, 0.0, 2.0 * M_PI);
+}
+
+void goalMarkerPath(cairo_t* cr, const Point2& centre, const Scale& scale) {
+  const double half = 6.5 * scale.factor;
+  cairo_rectangle(cr, centre.x() - half, centre.y() - half, 2.0 * half, 2.0 * half);
+}
+
+void fillMarker(cairo_t* cr, const PlotColour& colour, const Scale& scale) {
+  setColour(cr, colour);
+  cairo_fill_preserve(cr);
+  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo_set_line_width(cr, 1.5 * scale.factor);
+  cairo_stroke(cr);
+}
+
+/// Start (green disc, labelled above) and goal (purple square, labelled below).
+void drawMarkers(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
+                 const Scale& scale) {
+  selectFont(cr, scale.legend, true);
+  if (data.start) {
+    const Point2 p = layout.toPixel(*data.start);
+    startMarkerPath(cr, p, scale);
+    fillMarker(cr, kStartColour, scale);
+    showHaloText(cr, "start", p.x() + 10.0 * scale.factor, p.y() - 13.0 * scale.factor,
+                 Align::kStart, scale);
+  }
+  if (data.goal) {
+    const Point2 p = layout.toPixel(*data.goal);
+    goalMarkerPath(cr, p, scale);
+    fillMarker(cr, kGoalColour, scale);
+    showHaloText(cr, "goal", p.x() + 10.0 * scale.factor, p.y() + 14.0 * scale.factor,
+                 Align::kStart, scale);
+  }
+}
+
+/// The tick step of 1, 2 or 5 times a power of ten nearest (by ratio) to `range` divided
+/// into `target_count` steps.
+double niceStep(double range, double target_count) {
+  const double raw = range / std::max(target_count, 1.0);
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double best = magnitude;
+  for (const double multiple : {2.0, 5.0, 10.0}) {
+    const double step = multiple * magnitude;
+    if (std::abs(std::log(step / raw)) < std::abs(std::log(best / raw))) best = step;
+  }
+  return best;
+}
+
+/// Tick positions within [min, max], multiples of `step`.
+std::vector<double> ticks(double min, double max, double step) {
+  std::vector<double> values;
+  for (double k = std::ceil(min / step - 1e-9); k * step <= max + 1e-9 * step; k += 1.0) {
+    values.push_back(k * step);
+  }
+  return values;
+}
+
+std::string tickLabel(double value, double step) {
+  const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+  if (std::abs(value) < 1e-9 * step) value = 0.0;
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+  return text;
+}
+
+void drawAxes(cairo_t* cr, const CoveragePlotLayout& layout, const Scale& scale) {
+  const double left = layout.box_left;
+  const double top = layout.box_top;
+  const double right = left + layout.box_width;
+  const double bottom = top + layout.box_height;
+  const double tick_length = 6.0 * scale.factor;
+  const double line_width = 1.2 * scale.factor;
+  setColour(cr, kOutlineColour);
+  cairo_set_line_width(cr, line_width);
+  cairo_rectangle(cr, left, top, layout.box_width, layout.box_height);
+  cairo_stroke(cr);
+
+  const Point2 world_max =
+      layout.box_world_min + Point2(layout.box_width, layout.box_height) / layout.pixels_per_metre;
+  const double step = niceStep(
+      std::max(world_max.x() - layout.box_world_min.x(), world_max.y() - layout.box_world_min.y()),
+      std::max(layout.box_width, layout.box_height) / (kTickSpacingPixels * scale.factor));
+  selectFont(cr, scale.tick, false);
+  for (const double x : ticks(layout.box_world_min.x(), world_max.x(), step)) {
+    const double px = layout.toPixel(Point2(x, 0.0)).x();
+    cairo_move_to(cr, px, bottom);
+    cairo_line_to(cr, px, bottom + tick_length);
+    showText(cr, tickLabel(x, step), px, bottom + tick_length + 0.85 * scale.tick, Align::kCentre);
+  }
+  for (const double y : ticks(layout.box_world_min.y(), world_max.y(), step)) {
+    const double py = layout.toPixel(Point2(0.0, y)).y();
+    cairo_move_to(cr, left, py);
+    cairo_line_to(cr, left - tick_length, py);
+    showText(cr, tickLabel(y, step), left - tick_length - 4.0 * scale.factor, py, Align::kEnd);
+  }
+  cairo_stroke(cr);
+
+  selectFont(cr, scale.label, false);
+  showText(cr, "x [m]", 0.5 * (left + right), bottom + tick_length + 2.4 * scale.label,
+           Align::kCentre);
+  cairo_save(cr);
+  cairo_translate(cr, left - tick_length - 4.4 * scale.label, 0.5 * (top + bottom));
+  cairo_rotate(cr, -0.5 * M_PI);
+  showText(cr, "y [m]", 0.0, 0.0, Align::kCentre);
+  cairo_restore(cr);
+}
+
+void drawTitle(cairo_t* cr, const CoveragePlotLayout& layout, const std::vector<std::string>& lines,
+               const Scale& scale) {
+  const double centre = layout.box_left + 0.5 * layout.box_width;
+  double y = 18.0 * scale.factor + 0.6 * scale.title;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const bool title = i == 0;
+    selectFont(cr, title ? scale.title : scale.subtitle, title);
+    setColour(cr, title ? kTextColour : kSubtitleColour);
+    showText(cr, lines[i], centre, y, Align::kCentre);
+    y += 1.35 * (title ? 0.5 * (scale.title + scale.subtitle) : scale.subtitle);
+  }
+}
+
+/// The key to the lines and markers, then the heatmap's colour bar, right of the box.
+void drawLegend(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
+                const Scale& scale) {
+  const double f = scale.factor;
+  const double x = layout.box_left + layout.box_width + 24.0 * f;
+  const double sample_width = 34.0 * f;
+  const double label_x = x + sample_width + 10.0 * f;
+  const double row_height = 25.0 * f;
+  double y = layout.box_top + 0.5 * row_height;
+  auto label = [&](const std::string& text) {
+    selectFont(cr, scale.legend, false);
+    setColour(cr, kTextColour);
+    showText(cr, text, label_x, y, Align::kStart);
+    y += row_height;
+  };
+
+  if (data.trajectory.size() > 1) {
+    setColour(cr, kTrajectoryColour);
+    cairo_move_to(cr, x, y);
+    cairo_line_to(cr, x + sample_width, y);
+    cairo_set_line_width(cr, 1.8 * f);
+    cairo_stroke(cr);
+    arrowPath(cr, Point2(x + 0.5 * sample_width, y), 0.0, scale);
+    cairo_fill(cr);
+    label("trajectory");
+  }
+  if (!data.waypoints.empty()) {
+    setColour(cr, kWaypointColour);
+    cairo_move_to(cr, x, y);
+    cairo_line_to(cr, x + sample_width, y);
+    cairo_set_line_width(cr, 1.3 * f);
+    setDash(cr, 6.0 * f, 4.0 * f);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+    for (const double dot_x : {x + 2.0 * f, x + sample_width - 2.0 * f}) {
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, dot_x, y, 2.8 * f, 0.0, 2.0 * M_PI);
+    }
+    cairo_fill(cr);
+    label("waypoint path");
+  }
+  if (data.offset_free_area) {
+    setColour(cr, kOffsetAreaColour);
+    cairo_move_to(cr, x, y);
+    cairo_line_to(cr, x + sample_width, y);
+    cairo_set_line_width(cr, 1.1 * f);
+    setDash(cr, 7.0 * f, 4.0 * f);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+    label("offset free area");
+  }
+  if (!data.free_area.holes.empty()) {
+    cairo_rectangle(cr, x + 0.5 * (sample_width - 16.0 * f), y - 8.0 * f, 16.0 * f, 16.0 * f);
+    setColour(cr, kObstacleColour);
+    cairo_fill_preserve(cr);
+    setColour(cr, kOutlineColour);
+    cairo_set_line_width(cr, 1.2 * f);
+    cairo_stroke(cr);
+    label("obstacle");
+  }
+  if (data.start) {
+    startMarkerPath(cr, Point2(x + 0.5 * sample_width, y), scale);
+    fillMarker(cr, kStartColour, scale);
+    label("start");
+  }
+  if (data.goal) {
+    goalMarkerPath(cr, Point2(x + 0.5 * sample_width, y), scale);
+    fillMarker(cr, kGoalColour, scale);
+    label("goal");
+  }
+  if (!data.heatmap) return;
+
+  y += 0.6 * row_height;
+  selectFont(cr, scale.legend, true);
+  setColour(cr, kTextColour);
+  showText(cr, "visits", x, y, Align::kStart);
+  y += 0.8 * row_height;
+  const double swatch_width = 22.0 * f;
+  const double swatch_height = 24.0 * f;
+  const std::array<const char*, kVisitColours.size()> names{"0  unseen", "1  seen once", "2", "3",
+                                                            "4+"};
+  const double bar_top = y;
+  selectFont(cr, scale.legend, false);
+  for (std::size_t i = kVisitColours.size(); i-- > 0;) {
+    cairo_rectangle(cr, x, y, swatch_width, swatch_height);
+    setColour(cr, kVisitColours[i]);
+    cairo_fill(cr);
+    setColour(cr, kTextColour);
+    showText(cr, names[i], x + swatch_width + 8.0 * f, y + 0.5 * swatch_height, Align::kStart);
+    y += swatch_height;
+  }
+  setColour(cr, kOutlineColour);
+  cairo_set_line_width(cr, 1.0 * f);
+  cairo_rectangle(cr, x, bar_top, swatch_width, y - bar_top);
+  cairo_stroke(cr);
+}
+
+}  // namespace
+
+Point2 CoveragePlotLayout::toPixel(const Point2& world) const {
+  return {box_left + (world.x() - box_world_min.x()) * pixels_per_metre,
+          box_top + box_height - (world.y() - box_world_min.y()) * pixels_per_metre};
+}
+
+CoveragePlot::CoveragePlot(const CoveragePlotOptions& options) : options_(options) {
+  const auto in_range = [](int side) {
+    return side >= CoveragePlotOptions::kMinSide && side <= CoveragePlotOptions::kMaxSide;
+  };
+  if (!in_range(options.width) || (options.height != 0 && !in_range(options.height))) {
+    throw InvalidInputError("coverage plot: size " + std::to_string(options.width) + " x " +
+                            std::to_string(options.height) + " pixels, each side must be in [" +
+                            std::to_string(CoveragePlotOptions::kMinSide) + ", " +
+                            std::to_string(CoveragePlotOptions::kMaxSide) + "] (height 0: auto)");
+  }
+  if (!std::isfinite(options.arrow_spacing) || options.arrow_spacing < 0.0) {
+    throw InvalidInputError("coverage plot: arrow spacing must be finite and >= 0, got " +
+                            std::to_string(options.arrow_spacing));
+  }
+}
+
+CoveragePlotLayout CoveragePlot::layout(const CoveragePlotData& data) const {
+  return computeLayout(data, options_);
+}
+
+void CoveragePlot::writePng(const CoveragePlotData& data, const std::string& path) const {
+  const CoveragePlotLayout layout = computeLayout(data, options_);
+  const Scale scale = scaleFor(layout.width);
+  const SurfacePtr surface(
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height));
+  const ContextPtr context(cairo_create(surface.get()));
+  if (cairo_status(context.get()) != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error("coverage plot: cannot allocate a " + std::to_string(layout.width) +
+                             " x " + std::to_string(layout.height) + " image");
+  }
+  cairo_t* cr = context.get();
+  setColour(cr, kBackgroundColour);
+  cairo_paint(cr);
+
+  cairo_save(cr);
+  cairo_rectangle(cr, layout.box_left, layout.box_top, layout.box_width, layout.box_height);
+  cairo_clip(cr);
+  drawAreas(cr, layout, data, scale);
+  drawWaypointPath(cr, layout, data.waypoints, scale);
+  drawTrajectory(cr, layout, data.trajectory, options_.arrow_spacing, scale);
+  drawMarkers(cr, layout, data, scale);
+  cairo_restore(cr);
+
+  drawAxes(cr, layout, scale);
+  drawTitle(cr, layout, data.title_lines, scale);
+  drawLegend(cr, layout, data, scale);
+
+  cairo_surface_flush(surface.get());
+  const cairo_status_t status = cairo_surface_write_to_png(surface.get(), path.c_str());
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw InvalidInputError("coverage plot: cannot write '" + path +
+                            "': " + cairo_status_to_string(status));
+  }
+}
+
+PlotColour CoveragePlot::visitColour(std::uint16_t visits) {
+  return kVisitColours[std::min<std::size_t>(visits, kVisitColours.size() - 1)];
+}
+
+}  // namespace kinematic_coverage

@@ -1,0 +1,110 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "trajectory_generation_tools/coverage/seen_area.h"
+
+namespace kinematic_coverage {
+
+/// What a coverage plot shows: the map, the plan and what the sensor saw, as in the
+/// thesis's trajectory and heatmap figures (Fig. 4.2, Fig. 4.6).
+struct CoveragePlotData {
+  /// The raw free area: the hull outlined, the holes filled as obstacles. The hull needs
+  /// at least 3 vertices and a non-zero extent in x and y.
+  PolygonWithHoles free_area;
+  /// The free area shrunk by the clearance (INTERFACE section 4), outlined dashed.
+  std::optional<PolygonWithHoles> offset_free_area;
+  /// Visit counts (INTERFACE section 6), drawn over the free area only.
+  std::optional<Heatmap> heatmap;
+  /// The planner's waypoint path, a thin dashed polyline with a dot at each waypoint.
+  std::vector<Pose2> waypoints;
+  /// The trajectory as sampled poses, a solid polyline with heading arrows; sample it
+  /// densely (TrajectorySampler) so that arcs look round.
+  std::vector<Pose2> trajectory;
+  std::optional<Point2> start;
+  std::optional<Point2> goal;
+  /// Lines above the plot: the first is the title (bold), the others key metrics.
+  std::vector<std::string> title_lines;
+};
+
+/// Image size and drawing choices of a coverage plot.
+struct CoveragePlotOptions {
+  /// Image width, pixels, in [kMinSide, kMaxSide]; fonts, margins and line widths grow
+  /// with its square root.
+  int width = 1200;
+  /// Image height, pixels, in [kMinSide, kMaxSide]; 0 chooses it from the area's aspect.
+  int height = 0;
+  /// Arc length between heading arrows on the trajectory, metres; 0 puts one about every
+  /// 90 pixels of trajectory.
+  double arrow_spacing = 0.0;
+
+  static constexpr int kMinSide = 300;
+  static constexpr int kMaxSide = 16384;
+};
+
+/// An opaque sRGB colour, 8 bits per channel.
+struct PlotColour {
+  std::uint8_t red = 0;
+  std::uint8_t green = 0;
+  std::uint8_t blue = 0;
+};
+
+/// The fill of obstacles (holes of the free area).
+inline constexpr PlotColour kObstacleColour{158, 158, 158};
+/// The fill of the free area where no heatmap cell lies.
+inline constexpr PlotColour kFreeAreaColour{246, 246, 246};
+/// The image background, also outside the hull.
+inline constexpr PlotColour kBackgroundColour{255, 255, 255};
+
+/// Where a plot puts the world: the image size and the equal-aspect map from metres to
+/// pixels (x to the right, y downwards, pixel (i, j) covering [i, i+1) x [j, j+1)).
+struct CoveragePlotLayout {
+  int width = 0;
+  int height = 0;
+  /// The axes box, pixels.
+  double box_left = 0.0;
+  double box_top = 0.0;
+  double box_width = 0.0;
+  double box_height = 0.0;
+  /// Scale, the same along x and y.
+  double pixels_per_metre = 1.0;
+  /// The world point at the box's bottom-left corner.
+  Point2 box_world_min = Point2::Zero();
+
+  /// Image coordinates of a world point.
+  Point2 toPixel(const Point2& world) const;
+};
+
+/// Renders coverage plots to PNG files with cairo (`plot.png` of coverage_tool plan,
+/// evaluate and simulate, INTERFACE section 7): obstacles, the heatmap in discrete colours
+/// for 0, 1, 2, 3 and 4+ visits with its colour bar, paths, start and goal, title lines and
+/// axes in metres with an equal aspect ratio.
+class CoveragePlot {
+ public:
+  /// Throws InvalidInputError for a size out of range or a negative or non-finite arrow
+  /// spacing.
+  explicit CoveragePlot(const CoveragePlotOptions& options = {});
+
+  /// Size and world-to-pixel map of the plot of `data`. Throws InvalidInputError as
+  /// writePng does for bad data.
+  CoveragePlotLayout layout(const CoveragePlotData& data) const;
+
+  /// Renders `data` and writes it to `path` as PNG. Throws InvalidInputError for a hull
+  /// with fewer than 3 vertices or no extent, a non-finite coordinate, a heatmap whose
+  /// grid is empty, non-finite or not columns x rows in size, and naming `path` when the
+  /// file cannot be written.
+  void writePng(const CoveragePlotData& data, const std::string& path) const;
+
+  /// The heatmap colour of a cell seen `visits` times: red for unseen, then light to dark
+  /// for 1, 2, 3 and 4 or more.
+  static PlotColour visitColour(std::uint16_t visits);
+
+ private:
+  CoveragePlotOptions options_;
+};
+
+}  // namespace kinematic_coverage

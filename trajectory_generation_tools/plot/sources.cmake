@@ -1,0 +1,9 @@
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
+
+kc_add_stage_library(kc_plot
+  SOURCES
+    trajectory_generation_tools/plot/coverage_plot.cpp
+  DEPENDS kc_geometry kc_coverage)
+# Cairo stays out of the headers, so only this library links it.
+target_link_libraries(kc_plot PRIVATE PkgConfig::CAIRO)
