@@ -34,9 +34,9 @@ double median(std::vector<double> times) {
 }
 
 /// Times the stages of measureTrajectoryCoverage on one trajectory and prints its row.
-void benchmark(const char* name, const kinematic_coverage::Mission& mission,
-               const kinematic_coverage::PlannedMission& planned, int runs) {
-  using namespace kinematic_coverage;
+void benchmark(const char* name, const kinematic_coverage::core::Mission& mission,
+               const kinematic_coverage::core::PlannedMission& planned, int runs) {
+  using namespace kinematic_coverage::core;
   const GeneratedTrajectory trajectory =
       TrajectoryGenerator(mission.parameters).generate(planned.plan.waypoints, planned.free_area);
   std::vector<Pose2> poses;
@@ -80,7 +80,7 @@ void benchmark(const char* name, const kinematic_coverage::Mission& mission,
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace kinematic_coverage;
+  using namespace kinematic_coverage::core;
   int runs = 21;
   std::string mission_path = std::string(KC_MISSIONS_DIR) + "/lake_30x30.yaml";
   for (int i = 1; i < argc; ++i) {

@@ -21,10 +21,10 @@
 
 namespace {
 
-using kinematic_coverage::GtsplibProblem;
-using kinematic_coverage::GtsplibReader;
-using kinematic_coverage::GtspOptions;
-using kinematic_coverage::GtspSolution;
+using kinematic_coverage::core::GtsplibProblem;
+using kinematic_coverage::core::GtsplibReader;
+using kinematic_coverage::core::GtspOptions;
+using kinematic_coverage::core::GtspSolution;
 
 /// One line of optima.tsv.
 struct Reference {
@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
         GtspOptions run = options;
         run.seed = static_cast<unsigned>(seed);
         const auto start = std::chrono::steady_clock::now();
-        const GtspSolution solution = kinematic_coverage::solveGtsp(problem.instance, run);
+        const GtspSolution solution = kinematic_coverage::core::solveGtsp(problem.instance, run);
         time_sum += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const double gap = 100.0 * (solution.cost - reference.optimum) / reference.optimum;
         gap_sum += gap;

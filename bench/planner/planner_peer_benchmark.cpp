@@ -19,7 +19,7 @@
 
 namespace {
 
-using kinematic_coverage::CoveragePlan;
+using kinematic_coverage::core::CoveragePlan;
 
 /// One row of the peer's table in the README.
 struct PeerFigures {
@@ -87,19 +87,20 @@ int main(int argc, char** argv) {
   for (const std::string& path : missions) {
     const std::string name = std::filesystem::path(path).stem().string();
     try {
-      const auto mission = kinematic_coverage::MissionFileReader().read(path);
-      kinematic_coverage::PlannedMission planned;
+      const auto mission = kinematic_coverage::core::MissionFileReader().read(path);
+      kinematic_coverage::core::PlannedMission planned;
       std::vector<double> times;
       for (int run = 0; run < runs; ++run) {
-        planned = kinematic_coverage::planMission(mission);
+        planned = kinematic_coverage::core::planMission(mission);
         times.push_back(planned.planning_time_s);
       }
       const CoveragePlan& plan = planned.plan;
       std::sort(times.begin(), times.end());
       const double median_time = times[times.size() / 2];
-      const double seen = kinematic_coverage::waypointPathReachableCoveragePercent(
+      const double seen = kinematic_coverage::core::waypointPathReachableCoveragePercent(
           planned.free_area, plan.offset_free_area,
-          kinematic_coverage::FrustumSensor::fromParameters(mission.parameters), plan.waypoints);
+          kinematic_coverage::core::FrustumSensor::fromParameters(mission.parameters),
+          plan.waypoints);
       const auto it = peer.find(name);
       if (it == peer.end()) {
         std::printf("| %s | %zu | %zu | %.2f | %.2f | - | %.4f | %.2f |\n", name.c_str(),

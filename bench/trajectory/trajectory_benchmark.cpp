@@ -33,7 +33,7 @@ Summary summarize(std::vector<double> times) {
 }  // namespace
 
 int main() {
-  using kinematic_coverage::Point2;
+  using kinematic_coverage::core::Point2;
   constexpr int kLanes = 5000;
   constexpr int kRuns = 21;
   std::vector<Point2> waypoints;
@@ -43,25 +43,26 @@ int main() {
     waypoints.push_back({x, i % 2 == 0 ? 100.0 : 0.0});
   }
   const double width = 2.0 * (kLanes - 1);
-  kinematic_coverage::PolygonWithHoles area;
+  kinematic_coverage::core::PolygonWithHoles area;
   area.hull = {{-10, -10}, {width + 10, -10}, {width + 10, 110}, {-10, 110}};
   for (int k = 0; k < 20; ++k) {
     const double x = width * k / 20.0 + 3.0;
     const double y = k % 2 == 0 ? 103.0 : -7.0;  // beyond the lane ends, clear of the turns
     area.holes.push_back({{x, y}, {x, y + 4}, {x + 6, y + 4}, {x + 6, y}});
   }
-  kinematic_coverage::PlannerParameters parameters;
+  kinematic_coverage::core::PlannerParameters parameters;
   parameters.turning_radius = 1.0;
-  const kinematic_coverage::TrajectorySampler sampler(parameters);
-  const kinematic_coverage::TrajectoryTiming timing(parameters);
+  const kinematic_coverage::core::TrajectorySampler sampler(parameters);
+  const kinematic_coverage::core::TrajectoryTiming timing(parameters);
 
   std::vector<double> smooth_ms, sample_ms, time_ms, total_ms;
-  kinematic_coverage::SmoothedPath path;
-  std::vector<kinematic_coverage::TrajectoryPose> poses;
+  kinematic_coverage::core::SmoothedPath path;
+  std::vector<kinematic_coverage::core::TrajectoryPose> poses;
   double traversal_time_s = 0.0;
   for (int run = 0; run < kRuns; ++run) {
     const Clock::time_point start = Clock::now();
-    path = kinematic_coverage::PathSmoother(area, parameters.turning_radius).smooth(waypoints);
+    path =
+        kinematic_coverage::core::PathSmoother(area, parameters.turning_radius).smooth(waypoints);
     const Clock::time_point smoothed = Clock::now();
     sampler.sample(path.primitives, poses);
     const Clock::time_point sampled = Clock::now();

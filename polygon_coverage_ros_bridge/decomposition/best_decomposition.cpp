@@ -6,7 +6,7 @@
 
 #include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// The lane directions of a cell: the decomposition's own direction (always valid) and
@@ -60,4 +60,4 @@ Decomposition computeBestDecomposition(const PolygonWithHoles& area, Decompositi
   return best;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

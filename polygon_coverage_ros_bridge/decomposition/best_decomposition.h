@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/decomposition/sweep_line_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// A cell and the lane directions that sweep it without leaving it.
 struct Cell {
@@ -39,4 +39,4 @@ struct DecompositionOptions {
 Decomposition computeBestDecomposition(const PolygonWithHoles& area, DecompositionType type,
                                        const DecompositionOptions& options = {});
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 Point2 directionVector(double direction) { return {std::cos(direction), std::sin(direction)}; }
 
@@ -97,4 +97,4 @@ std::vector<double> candidateDirections(const std::vector<Ring>& rings, std::siz
   return result;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

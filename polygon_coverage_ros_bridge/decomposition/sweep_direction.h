@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Two directions closer than this (radians, modulo pi) count as one sweep direction.
 constexpr double kDirectionTolerance = 1e-3;
@@ -33,4 +33,4 @@ bool isMonotone(const Ring& ring, double direction);
 /// not give 2 000 decompositions).
 std::vector<double> candidateDirections(const std::vector<Ring>& rings, std::size_t max_count);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Relative tolerance: vertex positions along the sweep closer than this times the map
@@ -226,4 +226,4 @@ std::vector<Ring> SweepLineDecomposition::decompose(const PolygonWithHoles& poly
   return result;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

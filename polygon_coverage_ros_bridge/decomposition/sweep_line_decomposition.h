@@ -4,7 +4,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Which cells a sweep-line decomposition keeps.
 enum class DecompositionType {
@@ -31,4 +31,4 @@ class SweepLineDecomposition {
   DecompositionType type_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

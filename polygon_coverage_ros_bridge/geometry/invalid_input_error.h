@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Thrown for input that the contract rejects (INTERFACE section 3): bad geometry,
 /// parameters out of range, an impossible request. The message names the problem
@@ -13,4 +13,4 @@ class InvalidInputError : public std::runtime_error {
   explicit InvalidInputError(const std::string& message) : std::runtime_error(message) {}
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

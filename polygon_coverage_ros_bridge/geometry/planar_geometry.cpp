@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 double signedArea(const Ring& ring) {
   double twice_area = 0.0;
@@ -131,4 +131,4 @@ double wrapAngle(double angle) {
   return wrapped;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -2,7 +2,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Named tolerances for double geometry (metres); topology-deciding predicates use CGAL.
 constexpr double kLengthTolerance = 1e-9;
@@ -46,4 +46,4 @@ double headingOf(const Point2& a, const Point2& b);
 /// Wraps an angle into (-pi, pi].
 double wrapAngle(double angle);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

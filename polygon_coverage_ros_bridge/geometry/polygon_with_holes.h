@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// A point in the plane, metres.
 using Point2 = Eigen::Vector2d;
@@ -26,4 +26,4 @@ struct Pose2 {
   Point2 position() const { return {x, y}; }
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -14,7 +14,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using InexactKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -140,4 +140,4 @@ OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double w
   return result;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The offset free area (INTERFACE section 3) and what was dropped to get it.
 struct OffsetFreeArea {
@@ -22,4 +22,4 @@ struct OffsetFreeArea {
 /// nothing is left.
 OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 }  // namespace
@@ -122,4 +122,4 @@ double ClusterOptimizer::optimizeCycle(const std::vector<int>& clusters, std::ve
   return best;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// "Cluster optimization" of Gutin and Karapetyan: for a fixed order of the clusters, the
 /// best node of every cluster is a shortest path through the layered graph whose layers are
@@ -33,4 +33,4 @@ class ClusterOptimizer {
   std::vector<int> rotated_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <limits>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// Largest table (subsets x free nodes) the program may allocate: 400 MB of doubles.
@@ -191,4 +191,4 @@ GtspSolution ExactGtspSolver::solve() {
   return best;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Exact GTSP by dynamic programming over cluster subsets (Held-Karp generalized to
 /// clusters): value(S, v) is the cheapest path from the fixed first cluster through the
@@ -39,4 +39,4 @@ class ExactGtspSolver {
   std::vector<double> table_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

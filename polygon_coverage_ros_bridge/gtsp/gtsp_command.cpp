@@ -11,7 +11,7 @@
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsplib_reader.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 constexpr char kUsage[] = "usage: coverage_tool gtsp INSTANCE.gtsp [--seed N] [--time-limit S]";
@@ -83,4 +83,4 @@ int runGtspCommand(const std::vector<std::string>& args, std::ostream& out, std:
   }
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// `coverage_tool gtsp INSTANCE.gtsp [--seed N] [--time-limit S]` (INTERFACE section 7):
 /// args are the words after `gtsp`. Solves the GTSPLIB instance (cycle mode) and prints one
@@ -13,4 +13,4 @@ namespace kinematic_coverage {
 /// input (one line on err naming it), 1 for an internal error.
 int runGtspCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

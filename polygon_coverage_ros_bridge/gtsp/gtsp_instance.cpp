@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/gtsp/exact_gtsp_solver.h"
 #include "polygon_coverage_ros_bridge/gtsp/memetic_gtsp_solver.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 [[noreturn]] void reject(const std::string& message) {
@@ -119,4 +119,4 @@ GtspSolution solveGtsp(const GtspInstance& instance, const GtspOptions& options)
   return heuristic.solve();
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// A generalized travelling salesman instance: visit exactly one node of every cluster.
 /// Cycle mode (start_cluster = goal_cluster = -1): a closed tour. Path mode (both >= 0,
@@ -72,4 +72,4 @@ double gtspTourCost(const GtspInstance& instance, const std::vector<int>& nodes)
 /// InvalidInputError for an invalid instance or warm start.
 GtspSolution solveGtsp(const GtspInstance& instance, const GtspOptions& options);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 #include <limits>
 #include <numeric>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// Improvements smaller than this fraction of the largest edge cost are ignored, so that
@@ -299,4 +299,4 @@ double GtspLocalSearch::improve(std::vector<int>& sequence, Clock::time_point de
   return current;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

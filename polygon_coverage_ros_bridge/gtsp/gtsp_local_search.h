@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/gtsp/cluster_optimizer.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Local search for GTSP tours in the style of Gutin and Karapetyan's memetic algorithm:
 /// cluster reinsertion with the best node of the moved cluster, or-opt (segments of 2 and
@@ -74,4 +74,4 @@ class GtspLocalSearch {
   ClusterOptimizer optimizer_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -10,7 +10,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Largest DIMENSION accepted: the explicit cost matrix must fit in memory.
@@ -353,4 +353,4 @@ GtsplibProblem GtsplibReader::readFile(const std::string& path) {
   return parse(in, path);
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

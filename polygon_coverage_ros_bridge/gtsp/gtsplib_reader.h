@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// A GTSPLIB problem: its name, TYPE (GTSP or AGTSP) and the cycle-mode instance with
 /// integer costs (node i of the file is node i-1 of the instance).
@@ -30,4 +30,4 @@ class GtsplibReader {
   static GtsplibProblem readFile(const std::string& path);
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

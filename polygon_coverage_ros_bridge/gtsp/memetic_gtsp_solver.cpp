@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Default number of cluster neighbours that local search moves consider.
@@ -210,4 +210,4 @@ GtspSolution MemeticGtspSolver::solve() {
   return toSolution(population.front());
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

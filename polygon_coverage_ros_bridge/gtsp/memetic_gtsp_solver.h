@@ -7,7 +7,7 @@
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_local_search.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Memetic GTSP heuristic after Gutin and Karapetyan (Natural Computing 9(1), 2010): a
 /// population of locally optimal tours (cluster order + one node per cluster), children by
@@ -63,4 +63,4 @@ class MemeticGtspSolver {
   Clock::time_point deadline_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

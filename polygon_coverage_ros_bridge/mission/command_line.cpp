@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 CommandArguments parseCommandArguments(const std::string& command,
                                        const std::vector<std::string>& args,
@@ -84,4 +84,4 @@ std::string formatSeconds(double seconds) {
   return out.str();
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/mission/mission.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The arguments of a coverage_tool command on a mission (INTERFACE section 7): one
 /// mission file, options that take a value (`--out DIR`, ...), `--set name=value`
@@ -50,4 +50,4 @@ double secondsSince(std::chrono::steady_clock::time_point start);
 /// A duration for progress lines, to the millisecond: "0.016 s".
 std::string formatSeconds(double seconds);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -14,7 +14,7 @@
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 std::string EvaluateCommand::usage() {
   return "usage: coverage_tool evaluate MISSION.yaml --trajectory FILE.csv --out DIR\n"
@@ -110,4 +110,4 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   out << "wrote " << metrics_path << " " << plot_path << "\n";
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// `coverage_tool evaluate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value
 /// ...]` (INTERFACE section 7): the coverage of any trajectory, such as a robot's actual
@@ -27,4 +27,4 @@ class EvaluateCommand {
   void run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) const;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -7,7 +7,7 @@
 #include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
 #include "polygon_coverage_ros_bridge/mission/text_file_writer.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 std::string quoted(const std::string& text) {
@@ -92,4 +92,4 @@ std::string JsonObject::toString() const {
 
 void JsonObject::write(const std::string& path) const { writeTextFile(path, toString() + "\n"); }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// A JSON object of numbers and nested objects, for `metrics.json` (INTERFACE section 7),
 /// written without an external library. Keys keep their insertion order and are escaped
@@ -38,4 +38,4 @@ class JsonObject {
   std::vector<Entry> entries_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

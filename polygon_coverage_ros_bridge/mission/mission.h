@@ -5,7 +5,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// A coverage mission as a mission file describes it (INTERFACE section 7): the raw area
 /// (not yet validated or cleaned), where the robot starts and ends, and the parameters.
@@ -17,4 +17,4 @@ struct Mission {
   PlannerParameters parameters;  ///< defaults, then the file's keys, then the overrides
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

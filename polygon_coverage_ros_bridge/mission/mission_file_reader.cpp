@@ -14,7 +14,7 @@
 #include "polygon_coverage_ros_bridge/validation/point_format.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// One parameter: its name and where PlannerParameters holds it.
@@ -345,4 +345,4 @@ std::vector<std::string> MissionFileReader::parameterNames() {
   return names;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

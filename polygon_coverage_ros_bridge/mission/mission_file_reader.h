@@ -6,7 +6,7 @@
 
 #include "polygon_coverage_ros_bridge/mission/mission.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Reads mission files (INTERFACE section 7) with yaml-cpp:
 ///
@@ -60,4 +60,4 @@ class MissionFileReader {
   static std::vector<std::string> parameterNames();
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

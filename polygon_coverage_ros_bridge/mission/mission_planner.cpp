@@ -7,7 +7,7 @@
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -50,4 +50,4 @@ PlannedMission planMission(const Mission& mission, const StageCallback& on_stage
   return planned;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/mission/mission.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// A mission planned end to end, with what every consumer reports.
 struct PlannedMission {
@@ -26,4 +26,4 @@ struct PlannedMission {
 /// InvalidInputError for invalid input or an impossible request.
 PlannedMission planMission(const Mission& mission, const StageCallback& on_stage = {});
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -16,7 +16,7 @@
 #include "trajectory_generation_tools/trajectory/trajectory_csv_writer.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 std::string PlanCommand::usage() {
   return "usage: coverage_tool plan MISSION.yaml --out DIR [--set name=value ...]\n"
@@ -121,4 +121,4 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
       << plot_path << "\n";
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

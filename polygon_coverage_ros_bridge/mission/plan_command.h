@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// `coverage_tool plan MISSION.yaml --out DIR [--set name=value ...]` (INTERFACE section
 /// 7): loads the mission, validates and cleans the polygon, plans with CoveragePlanner,
@@ -26,4 +26,4 @@ class PlanCommand {
   void run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) const;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -12,7 +12,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 std::string trim(const std::string& text) {
@@ -128,4 +128,4 @@ PoseTable PoseCsvReader::parse(const std::string& text, const std::string& sourc
   return table;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -6,7 +6,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// One row of a trajectory or visited-poses file.
 struct PoseRecord {
@@ -44,4 +44,4 @@ class PoseCsvReader {
   PoseTable parse(const std::string& text, const std::string& source_name) const;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

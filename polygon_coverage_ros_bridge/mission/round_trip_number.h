@@ -4,7 +4,7 @@
 #include <string>
 #include <system_error>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The shortest decimal text that reads back as exactly `value`, for CSV and JSON
 /// outputs: "0.1", not "0.10000000000000001". `value` must be finite.
@@ -14,4 +14,4 @@ inline std::string formatRoundTrip(double value) {
   return std::string(text, result.ptr);
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

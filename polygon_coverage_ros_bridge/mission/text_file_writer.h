@@ -7,7 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Writes `text` to `path`, replacing the file. A file that cannot be written (missing
 /// directory, no permission, full disk) is an impossible request: InvalidInputError.
@@ -20,4 +20,4 @@ inline void writeTextFile(const std::string& path, const std::string& text) {
   }
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

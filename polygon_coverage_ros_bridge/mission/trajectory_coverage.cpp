@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
                                              const PolygonWithHoles& offset_free_area,
@@ -41,4 +41,4 @@ void setCoverageMetrics(const CoverageReport& report, JsonObject& metrics) {
       .set("reachable_coverage_percent", report.reachable_coverage_percent);
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The coverage of one trajectory as coverage_tool reports it, and how it was measured.
 struct TrajectoryCoverage {
@@ -37,4 +37,4 @@ std::string coverageSummary(const TrajectoryCoverage& coverage);
 /// metrics.json (INTERFACE section 7).
 void setCoverageMetrics(const CoverageReport& report, JsonObject& metrics);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -7,7 +7,7 @@
 #include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
 #include "polygon_coverage_ros_bridge/mission/text_file_writer.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 std::string WaypointCsvWriter::format(const std::vector<Pose2>& waypoints) const {
   std::string text = "x,y,yaw\n";
@@ -26,4 +26,4 @@ void WaypointCsvWriter::write(const std::string& path, const std::vector<Pose2>&
   writeTextFile(path, format(waypoints));
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

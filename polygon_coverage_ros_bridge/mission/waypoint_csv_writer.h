@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Writes `waypoints.csv` (INTERFACE section 7): a header row `x,y,yaw`, then one row per
 /// waypoint, yaw wrapped into (-pi, pi], numbers in shortest round-trip form.
@@ -18,4 +18,4 @@ class WaypointCsvWriter {
   void write(const std::string& path, const std::vector<Pose2>& waypoints) const;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

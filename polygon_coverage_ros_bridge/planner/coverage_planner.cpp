@@ -18,7 +18,7 @@
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -166,7 +166,7 @@ CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Poin
   const Point2 goal_inside = entryPoint(free_area, area, goal, "goal", tolerance);
   {
     std::ostringstream summary;
-    summary << "offset free area " << kinematic_coverage::area(area) << " m^2 with "
+    summary << "offset free area " << kinematic_coverage::core::area(area) << " m^2 with "
             << area.holes.size() << " holes";
     stage("offset", t, summary.str());
   }
@@ -316,4 +316,4 @@ CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Poin
   return plan;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// One stage of planning, for log lines and status messages.
 struct PlanningStage {
@@ -61,4 +61,4 @@ class CoveragePlanner {
   PlannerParameters parameters_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Every parameter of INTERFACE section 5, with its default. The same names are the keys
 /// of mission files, `--set name=value`, config/default.yaml and the nodes' private
@@ -29,4 +29,4 @@ struct PlannerParameters {
   double alpha = 2.0;                                ///< m, alpha-shape parameter
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Tolerance as a fraction of the map's extent (the brief's ~1e-9 relative).
@@ -230,7 +230,7 @@ bool BoundaryGrid::visitEdgesAlong(const Point2& a, const Point2& b, Visit&& vis
 }
 
 bool BoundaryGrid::contains(const Point2& p) const {
-  return p.allFinite() && kinematic_coverage::contains(polygon_, p, tolerance_);
+  return p.allFinite() && kinematic_coverage::core::contains(polygon_, p, tolerance_);
 }
 
 BoundaryGrid::Contact BoundaryGrid::contactOf(const Point2& p) const {
@@ -378,4 +378,4 @@ std::vector<int> BoundaryGrid::bendClusters() const {
   return result;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

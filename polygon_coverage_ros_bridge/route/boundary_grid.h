@@ -4,7 +4,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The boundary of a polygon with holes, its edges bucketed in a uniform grid, answering
 /// fast whether a straight segment stays inside the closed polygon: the visibility test
@@ -104,4 +104,4 @@ class BoundaryGrid {
   std::vector<int> cell_edges_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

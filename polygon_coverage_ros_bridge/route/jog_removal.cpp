@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 JogRemoval::JogRemoval(const VisibilityGraph& graph, double short_leg, double max_deviation)
     : graph_(graph), short_leg_(short_leg), max_deviation_(max_deviation) {
@@ -76,4 +76,4 @@ std::vector<Point2> JogRemoval::apply(const std::vector<Point2>& path,
   return points;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

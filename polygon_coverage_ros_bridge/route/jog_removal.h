@@ -5,7 +5,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Removes the short jogs of a waypoint path that no robot with a turning radius can
 /// smooth (issue 4): where lanes of neighbouring cells or a lane and its transition meet a
@@ -38,4 +38,4 @@ class JogRemoval {
   double max_deviation_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

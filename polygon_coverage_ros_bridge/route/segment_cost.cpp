@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 SegmentCost::SegmentCost(const PlannerParameters& parameters)
     : kind_(Kind::kDistance), v_max_(parameters.v_max), a_max_(parameters.a_max) {
@@ -68,4 +68,4 @@ double pathLength(const std::vector<Point2>& path) {
   return total;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

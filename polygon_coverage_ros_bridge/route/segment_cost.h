@@ -5,7 +5,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The cost of driving one straight segment under `cost_function` (INTERFACE section 5),
 /// the edge weight of the planner's transitions and of its generalized TSP.
@@ -41,4 +41,4 @@ class SegmentCost {
 /// The length of a polyline, metres (0 for fewer than two points).
 double pathLength(const std::vector<Point2>& path);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -7,7 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 constexpr double kUnreachable = std::numeric_limits<double>::infinity();
@@ -278,4 +278,4 @@ std::vector<Point2> VisibilityGraph::queryPath(std::size_t i, std::size_t j) con
   return pathBetween(query_points_.at(i), query_points_.at(j));
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/route/boundary_grid.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Cheapest routes between points of a polygon with holes (the offset free area), for
 /// the transitions between sweep patterns (issue 2, "shortest paths in the offset free
@@ -105,4 +105,4 @@ class VisibilityGraph {
   std::vector<QueryPoint> query_points_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 FrustumSensor::FrustumSensor(double width, double length, double lateral_overlap)
     : width_(width), length_(length), sweep_distance_((1.0 - lateral_overlap) * width) {}
@@ -26,4 +26,4 @@ Ring FrustumSensor::footprint(const Pose2& pose) const {
           centre + half_along + half_across, centre - half_along + half_across};
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

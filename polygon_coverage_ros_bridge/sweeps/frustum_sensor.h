@@ -3,7 +3,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The sensor's footprint on the bottom (INTERFACE section 6): a rectangle centred on the
 /// pose, `width` across the heading and `length` along it. A frustum sensor at distance d
@@ -30,4 +30,4 @@ class FrustumSensor {
   double sweep_distance_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

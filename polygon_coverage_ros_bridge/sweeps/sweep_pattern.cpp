@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Lanes are kept this far (relative to the map's scale) inside the cell's extreme
@@ -212,4 +212,4 @@ std::vector<SweepPattern> SweepPatternGenerator::patterns(const Ring& cell, doub
   return result;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

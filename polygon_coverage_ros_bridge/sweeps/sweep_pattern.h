@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// One way to sweep a cell: lanes parallel to `direction`, visited in order, joined at
 /// alternating ends (boustrophedon).
@@ -66,4 +66,4 @@ class SweepPatternGenerator {
   double vertex_tolerance_ = 0.0;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -12,7 +12,7 @@
 #include "polygon_coverage_ros_bridge/mission/evaluate_command.h"
 #include "polygon_coverage_ros_bridge/mission/plan_command.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 constexpr int kExitSuccess = 0;
@@ -72,10 +72,10 @@ int runCommand(const std::vector<std::string>& args) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core
 
 int main(int argc, char** argv) {
-  using namespace kinematic_coverage;
+  using namespace kinematic_coverage::core;
   try {
     return runCommand(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const InvalidInputError& error) {

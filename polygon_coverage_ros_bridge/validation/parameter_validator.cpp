@@ -7,7 +7,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/validation/point_format.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 void requirePositive(const char* name, double value, const char* unit) {
@@ -64,4 +64,4 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   requirePositive("alpha", p.alpha, "m");
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -2,7 +2,7 @@
 
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Checks planner parameters against their ranges (INTERFACE section 3): turning_radius,
 /// sensor_distance, v_max, a_max, yaw_rate_max, the sampling distances and angle,
@@ -16,4 +16,4 @@ class ParameterValidator {
   void validate(const PlannerParameters& parameters) const;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// A number for an error message or a log line: up to 10 significant digits, so that
 /// UTM-sized coordinates stay readable ("5234567.89", not "5.23457e+06").
@@ -21,4 +21,4 @@ inline std::string formatPoint(const Point2& point) {
   return "(" + formatNumber(point.x()) + ", " + formatNumber(point.y()) + ")";
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -18,7 +18,7 @@
 #include "polygon_coverage_ros_bridge/validation/point_format.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
@@ -286,4 +286,4 @@ CleanedPolygon PolygonCleaner::clean(const PolygonWithHoles& raw) const {
   return cleaned;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The free area made from a raw polygon, and one line per cleaning step applied.
 struct CleanedPolygon {
@@ -30,4 +30,4 @@ class PolygonCleaner {
   CleanedPolygon clean(const PolygonWithHoles& raw) const;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

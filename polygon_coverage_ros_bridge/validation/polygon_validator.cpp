@@ -16,7 +16,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/validation/point_format.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -226,4 +226,4 @@ void PolygonValidator::validateEndpoint(const std::string& name, const Point2& p
   }
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

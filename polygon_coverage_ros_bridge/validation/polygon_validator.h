@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Size limits of the input the package accepts (INTERFACE section 3: "inputs over the
 /// size limits the package documents" are invalid input). They keep the exact-arithmetic
@@ -44,4 +44,4 @@ class PolygonValidator {
   void validateRing(const Ring& ring, const std::string& ring_name) const;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

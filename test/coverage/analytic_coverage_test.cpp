@@ -11,7 +11,7 @@
 
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// The free area: a 40 m square; the offset free area 1 m inside it.
@@ -180,4 +180,4 @@ TEST(AnalyticCoverage, SampledTurnInPlaceSeesTheUnionOfItsFootprints) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -15,7 +15,7 @@
 #include "test/support/random_polygons.h"
 #include "trajectory_generation_tools/coverage/reachable_area.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// The axis-parallel rectangle [x0, x1] x [y0, y1]; counter-clockwise, or clockwise for a hole.
@@ -225,4 +225,4 @@ TEST(CoverageEvaluator, LargeMapIsCovered) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -12,7 +12,7 @@
 #include "test/support/random_polygons.h"
 #include "test/support/test_shapes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using testing::turnedSquare;
@@ -192,4 +192,4 @@ TEST(CoverageRaster, RejectsInvalidInput) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

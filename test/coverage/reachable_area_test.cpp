@@ -11,7 +11,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "test/support/test_shapes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using testing::turnedSquare;
@@ -115,4 +115,4 @@ TEST(ReachableArea, RejectsInvalidInput) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

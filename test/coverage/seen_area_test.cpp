@@ -9,7 +9,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Index of the cell containing `p` (assumed inside the grid).
@@ -319,4 +319,4 @@ TEST(SeenArea, DegenerateTrajectories) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -7,7 +7,7 @@
 #include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 TEST(BestDecomposition, LongRectangleIsSweptAlongItsLength) {
@@ -52,4 +52,4 @@ TEST(BestDecomposition, BoustrophedonNeedsNoMoreAltitudeThanTrapezoidal) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 TEST(SweepDirection, FrameRoundTripAndDirectionMapsToY) {
@@ -49,4 +49,4 @@ TEST(SweepDirection, CandidatesDeduplicatedAndBounded) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

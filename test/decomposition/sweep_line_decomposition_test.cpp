@@ -9,7 +9,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "test/support/random_polygons.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// The properties every decomposition must have: the cells tile the area (areas add
@@ -102,4 +102,4 @@ TEST(SweepLineDecomposition, RandomMapsTileTheArea) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

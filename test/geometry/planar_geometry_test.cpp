@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 PolygonWithHoles squareWithHole() {
@@ -49,4 +49,4 @@ TEST(PlanarGeometry, DistanceToSegmentDegenerate) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 int run(const std::vector<std::string>& args, std::string* out, std::string* err) {
@@ -63,4 +63,4 @@ TEST(GtspCommand, InvalidInputExitsTwoWithOneLine) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

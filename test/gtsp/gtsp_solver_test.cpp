@@ -12,7 +12,7 @@
 #include "polygon_coverage_ros_bridge/gtsp/gtsplib_reader.h"
 #include "test/gtsp/random_gtsp_instance.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using testing::bruteForceGtspCost;
@@ -256,4 +256,4 @@ TEST(GtspSolver, ReachesGtsplibOptima) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

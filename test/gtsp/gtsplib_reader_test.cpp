@@ -7,7 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 GtsplibProblem parseText(const std::string& text) {
@@ -158,4 +158,4 @@ TEST(GtsplibReader, ReadsTheBenchmarkInstances) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

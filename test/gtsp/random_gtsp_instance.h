@@ -7,7 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace testing {
 
 /// A random asymmetric instance: nodes shuffled into `clusters` non-empty clusters of at
@@ -118,4 +118,4 @@ inline double bruteForceGtspCost(const GtspInstance& instance) {
 }
 
 }  // namespace testing
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

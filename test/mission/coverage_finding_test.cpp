@@ -13,7 +13,7 @@
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// A shipped mission planned and turned into a trajectory, smoothed or not.
@@ -103,4 +103,4 @@ TEST(CoverageFinding, ReportedFiguresAgreeWithAFineRaster) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -11,7 +11,7 @@
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 const char* const kMission = R"(frame_id: lake
@@ -292,4 +292,4 @@ TEST(ShippedMissions, LoadValidateAndClean) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -11,7 +11,7 @@
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
 #include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 std::string csvError(const std::string& text) {
@@ -98,4 +98,4 @@ TEST(JsonObject, EscapesKeysAndRejectsNonFiniteNumbers) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

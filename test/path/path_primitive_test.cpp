@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 TEST(PathPrimitive, SegmentLengthAndPoses) {
@@ -50,4 +50,4 @@ TEST(PathPrimitive, RotationTurnsOnTheSpot) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -11,7 +11,7 @@
 #include "test/planner/plan_properties.h"
 #include "test/support/random_polygons.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 const PolygonWithHoles kLake = {
@@ -128,4 +128,4 @@ TEST(CoveragePlanner, RandomMapsAreCoveredInsideTheOffsetArea) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -10,7 +10,7 @@
 #include "test/planner/plan_properties.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// The number of lanes the planner lays in the decomposition it chose.
@@ -97,4 +97,4 @@ TEST(MissionPlans, Lake7x5HasAtLeastFiveSweeps) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -5,7 +5,7 @@
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan,
                      const PlannerParameters& parameters, const Point2& start, const Point2& goal) {
@@ -38,4 +38,4 @@ void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan
   EXPECT_GE(covered, 99.0);
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

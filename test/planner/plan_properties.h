@@ -5,7 +5,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Legs may leave the offset free area by this much (Issue 2).
 constexpr double kLegTolerance = 1e-6;
@@ -17,4 +17,4 @@ constexpr double kLegTolerance = 1e-6;
 void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan,
                      const PlannerParameters& parameters, const Point2& start, const Point2& goal);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

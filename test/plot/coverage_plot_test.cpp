@@ -11,7 +11,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Visits of the test heatmap's cells: 0 left of x = 5, 1 right of x = 15 below y = 8,
@@ -229,4 +229,4 @@ TEST(CoveragePlotTest, UnwritablePathIsNamedInTheError) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -11,7 +11,7 @@
 #include "test/route/route_test_maps.h"
 #include "test/support/random_polygons.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 PolygonWithHoles squareWithHole() {
@@ -277,4 +277,4 @@ TEST(BoundaryGrid, AgreesWithPlanarGeometryOnRandomSegments) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -9,7 +9,7 @@
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "test/route/route_test_maps.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// A 20 m square with a square hole [8, 12]^2, distance cost.
@@ -143,4 +143,4 @@ TEST(JogRemoval, RandomPathsStayInsideAndNearTheOriginal) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -10,7 +10,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "test/support/random_polygons.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace testing {
 
 /// A square map [0, size]^2 with up to `max_holes` disjoint convex holes (clockwise),
@@ -207,4 +207,4 @@ inline std::vector<Point2> boundaryPoints(std::mt19937& rng, const PolygonWithHo
 }
 
 }  // namespace testing
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

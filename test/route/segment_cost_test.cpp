@@ -8,7 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 PlannerParameters withCost(const std::string& cost_function) {
@@ -101,4 +101,4 @@ TEST(SegmentCost, RejectsBadParameters) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

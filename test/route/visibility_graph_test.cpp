@@ -15,7 +15,7 @@
 #include "test/route/route_test_maps.h"
 #include "test/support/random_polygons.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 SegmentCost costOf(const std::string& cost_function) {
@@ -394,4 +394,4 @@ TEST(VisibilityGraph, TimingOfALargeHull) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -7,7 +7,7 @@
 #include "test/smoothing/smoothing_oracle.h"
 #include "test/support/random_polygons.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 TEST(BoundaryEdgeIndex, EmptyAreaIsTheFreePlane) {
@@ -59,4 +59,4 @@ TEST(BoundaryEdgeIndex, AgreesWithBruteForceOnRandomMaps) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

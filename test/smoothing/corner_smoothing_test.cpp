@@ -13,7 +13,7 @@
 #include "trajectory_generation_tools/smoothing/outer_smoothing_bisector.h"
 #include "trajectory_generation_tools/smoothing/outer_smoothing_tangent.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using testing::expectG1OnLegs;
@@ -371,4 +371,4 @@ TEST(CornerSmoothingProperties, HundredThousandRandomCorners) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -9,7 +9,7 @@
 #include "test/smoothing/smoothing_oracle.h"
 #include "trajectory_generation_tools/smoothing/corner_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 Ring squareHull(const Point2& centre, double half) {
@@ -194,4 +194,4 @@ TEST(PathSmootherProperties, RandomPathsAreContinuousAndFree) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -12,7 +12,7 @@
 #include "trajectory_generation_tools/smoothing/corner.h"
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace testing {
 
 /// Independent checks of smoothings, built on planar_geometry only (not on the module's
@@ -170,4 +170,4 @@ inline Verdict judge(const PolygonWithHoles& area, const Corner& corner,
 }
 
 }  // namespace testing
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace testing {
 
 /// A star-shaped random ring around `centre` (counter-clockwise), radii in [r_min, r_max].
@@ -73,4 +73,4 @@ inline PolygonWithHoles randomMap(std::mt19937& rng, double size, int max_holes,
 }
 
 }  // namespace testing
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

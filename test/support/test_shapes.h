@@ -4,7 +4,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace testing {
 
 /// A square of side `side` centred on `centre`, turned by `angle`, counter-clockwise.
@@ -17,4 +17,4 @@ inline Ring turnedSquare(const Point2& centre, double side, double angle) {
 }
 
 }  // namespace testing
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

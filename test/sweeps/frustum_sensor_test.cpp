@@ -6,7 +6,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 TEST(FrustumSensor, ThesisFootprint) {
@@ -39,4 +39,4 @@ TEST(FrustumSensor, FootprintIsCentredRotatedRectangle) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -10,7 +10,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "test/support/random_polygons.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 std::vector<Point2> straight(const Point2& a, const Point2& b) { return {a, b}; }
@@ -155,4 +155,4 @@ TEST(SweepPattern, RandomCellsHaveValidLanes) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

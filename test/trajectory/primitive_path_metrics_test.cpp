@@ -9,7 +9,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/trajectory/primitive_distance.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// The distance from many points of the arc to [a, b]: an upper bound of the exact one,
@@ -124,4 +124,4 @@ TEST(PrimitivePathMetrics, ClearanceEqualsTheSmallestPrimitiveDistance) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -9,7 +9,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 std::vector<PathPrimitive> build(const std::vector<Point2>& waypoints) {
@@ -107,4 +107,4 @@ TEST(SegmentPathBuilder, RejectsNonFiniteWaypoints) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

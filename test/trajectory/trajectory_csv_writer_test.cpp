@@ -14,7 +14,7 @@
 #include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
 #include "trajectory_generation_tools/trajectory/trajectory_timing.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 TrajectoryPose pose(double t, double x, double y, double yaw, PrimitiveKind kind) {
@@ -78,4 +78,4 @@ TEST(TrajectoryCsvWriter, UnwritableFileIsInvalidInput) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

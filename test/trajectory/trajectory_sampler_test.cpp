@@ -10,7 +10,7 @@
 #include "test/trajectory/trajectory_test_paths.h"
 #include "trajectory_generation_tools/trajectory/segment_path_builder.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using testing::expectSamplingContract;
@@ -168,4 +168,4 @@ TEST(TrajectorySampler, RejectsBadIntervalsAndBrokenPaths) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

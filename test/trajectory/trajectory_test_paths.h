@@ -10,7 +10,7 @@
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace testing {
 
 /// A random G1-continuous chain of `count` segments and arcs (alternating, random
@@ -112,4 +112,4 @@ inline void expectSamplingContract(const std::vector<PathPrimitive>& path,
 }
 
 }  // namespace testing
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

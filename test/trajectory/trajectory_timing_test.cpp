@@ -12,7 +12,7 @@
 #include "trajectory_generation_tools/trajectory/segment_path_builder.h"
 #include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// The planner's rest-to-rest trapezoidal time of a straight segment (segment_cost.h).
@@ -274,4 +274,4 @@ TEST(TrajectoryTiming, RejectsBadRates) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

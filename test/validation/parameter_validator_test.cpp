@@ -9,7 +9,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 std::string errorOf(const std::function<void(PlannerParameters&)>& change) {
@@ -94,4 +94,4 @@ TEST(ParameterValidator, RejectsUnknownNames) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

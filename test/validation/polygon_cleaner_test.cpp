@@ -10,7 +10,7 @@
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "test/support/random_polygons.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 Ring square(double x0, double y0, double size) {
@@ -222,4 +222,4 @@ TEST(PolygonCleaner, FreeAreaMatchesTheRawPolygonOnRandomOverlappingHoles) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

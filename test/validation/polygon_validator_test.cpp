@@ -10,7 +10,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "test/support/random_polygons.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 Ring square(double x0, double y0, double size) {
@@ -216,4 +216,4 @@ TEST(PolygonValidator, AcceptsRandomMaps) {
 }
 
 }  // namespace
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

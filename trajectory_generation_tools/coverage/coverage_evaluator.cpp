@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "trajectory_generation_tools/coverage/reachable_area.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 const FrustumSensor& requireValid(const FrustumSensor& sensor) {
@@ -44,8 +44,8 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
             << " m raster";
     throw InvalidInputError(message.str());
   }
-  reachable_area_ =
-      kinematic_coverage::reachableArea(raster_, free_area_, offset_free_area_, sensor_.length());
+  reachable_area_ = kinematic_coverage::core::reachableArea(raster_, free_area_, offset_free_area_,
+                                                            sensor_.length());
 }
 
 SeenArea CoverageEvaluator::seeTrajectory(const std::vector<Pose2>& poses) const {
@@ -85,4 +85,4 @@ double waypointPathReachableCoveragePercent(const PolygonWithHoles& free_area,
       .coveragePercent(evaluator.reachableArea());
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

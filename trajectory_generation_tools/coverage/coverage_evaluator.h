@@ -8,7 +8,7 @@
 #include "trajectory_generation_tools/coverage/seen_area.h"
 #include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The coverage figures of one trajectory (INTERFACE sections 3 and 6).
 struct CoverageReport {
@@ -78,4 +78,4 @@ double waypointPathReachableCoveragePercent(const PolygonWithHoles& free_area,
                                             const RasterResolution& resolution = {},
                                             double rotation_step = kDefaultRotationStep);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -9,7 +9,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Largest coordinate magnitude (metres) accepted, far beyond any map, so that no
@@ -86,7 +86,7 @@ CoverageRaster CoverageRaster::covering(const PolygonWithHoles& region,
   if (region.hull.size() < 3) {
     throw InvalidInputError("coverage raster: the region's hull has fewer than 3 vertices");
   }
-  const double region_area = kinematic_coverage::area(region);
+  const double region_area = kinematic_coverage::core::area(region);
   if (!(region_area > 0.0)) {
     throw InvalidInputError("coverage raster: the region has no area");
   }
@@ -250,4 +250,4 @@ std::size_t CoverageRaster::countCells(const CellMask& mask) {
       std::count_if(mask.begin(), mask.end(), [](std::uint8_t value) { return value != 0; }));
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -6,7 +6,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// One value per raster cell, row-major from the grid's minimum corner: 1 where the cell's
 /// centre lies in the area the mask stands for, 0 elsewhere.
@@ -98,4 +98,4 @@ class CoverageRaster {
   int rows_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

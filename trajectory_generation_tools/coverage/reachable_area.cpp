@@ -8,7 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 void requireSize(const CoverageRaster& raster, const CellMask& mask, const char* what) {
@@ -178,4 +178,4 @@ CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,
   return reachable;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -2,7 +2,7 @@
 
 #include "trajectory_generation_tools/coverage/coverage_raster.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The cells within `radius` of the area that the set cells of `mask` stand for: a cell
 /// is set when its centre lies within radius + cell_size / 2 of a set cell's centre (the
@@ -18,4 +18,4 @@ CellMask dilateMask(const CoverageRaster& raster, const CellMask& mask, double r
 CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,
                        const CellMask& offset_free_area, double footprint_length);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

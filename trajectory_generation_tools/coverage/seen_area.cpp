@@ -10,7 +10,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Visits at which a cell's count saturates.
@@ -181,4 +181,4 @@ Heatmap SeenArea::heatmap() const {
   return {raster_.origin(), raster_.cellSize(), raster_.columns(), raster_.rows(), visits_};
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -10,7 +10,7 @@
 #include "trajectory_generation_tools/coverage/coverage_raster.h"
 #include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The heatmap of INTERFACE section 6 as a grid, for plots: `visits[index]` is how many
 /// separate times the sensor saw the cell, saturating at 65535 (row-major from `origin`,
@@ -89,4 +89,4 @@ class SeenArea {
   std::vector<std::uint16_t> visits_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

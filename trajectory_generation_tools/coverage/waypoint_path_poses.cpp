@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Appends the poses of an in-place rotation at `position` from `from` to `to` (the
@@ -61,4 +61,4 @@ std::vector<Pose2> waypointPathPoses(const std::vector<Pose2>& waypoints, double
   return poses;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

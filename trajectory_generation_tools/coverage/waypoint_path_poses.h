@@ -4,7 +4,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Two consecutive poses closer than this (metres) are at the same position: a waypoint
 /// path skips the second; a trajectory sees their two footprints, not the convex hull of
@@ -26,4 +26,4 @@ constexpr double kDefaultRotationStep = 0.2;
 std::vector<Pose2> waypointPathPoses(const std::vector<Pose2>& waypoints,
                                      double rotation_step = kDefaultRotationStep);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 PathPrimitive PathPrimitive::segment(const Point2& from, const Point2& to) {
   PathPrimitive primitive;
@@ -79,4 +79,4 @@ Pose2 PathPrimitive::poseAt(double fraction) const {
   return {};
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -2,7 +2,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// What a primitive is: a straight segment, a circular arc, or a turn on the spot.
 enum class PrimitiveKind { kSegment, kArc, kRotation };
@@ -65,4 +65,4 @@ class PathPrimitive {
   double sweep_ = 0.0;              ///< arc: signed sweep; rotation: signed turn
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -12,7 +12,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Heatmap colours for 0, 1, 2, 3 and 4+ visits: red for never seen, then a light-to-dark
@@ -737,4 +737,4 @@ PlotColour CoveragePlot::visitColour(std::uint16_t visits) {
   return kVisitColours[std::min<std::size_t>(visits, kVisitColours.size() - 1)];
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/coverage/seen_area.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// What a coverage plot shows: the map, the plan and what the sensor saw, as in the
 /// thesis's trajectory and heatmap figures (Fig. 4.2, Fig. 4.6).
@@ -107,4 +107,4 @@ class CoveragePlot {
   CoveragePlotOptions options_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -253,4 +253,4 @@ bool BoundaryEdgeIndex::inside(const Point2& p) const {
   return has_hull_ ? odd : !odd;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

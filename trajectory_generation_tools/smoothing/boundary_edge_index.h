@@ -6,7 +6,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Clearance (m) a smoothing's arcs and segments must keep from the raw hull and holes.
 /// Decision: touching is a collision; a primitive is free only when every point of it is
@@ -64,4 +64,4 @@ class BoundaryEdgeIndex {
   std::vector<std::uint32_t> cell_edges_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -2,7 +2,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// One corner A, B, C of a waypoint path as Algorithm 1 sees it: the robot comes from A,
 /// turns at B and heads for C. A is a waypoint or, when the previous corner was smoothed,
@@ -18,4 +18,4 @@ struct Corner {
   Point2 incoming = Point2::Zero();
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

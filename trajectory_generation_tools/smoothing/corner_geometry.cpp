@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 bool finite(const Point2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
@@ -63,4 +63,4 @@ Point2 CornerGeometry::mirrored(const Point2& p) const {
   return b_ + 2.0 * rel.dot(inner_bisector_) * inner_bisector_ - rel;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

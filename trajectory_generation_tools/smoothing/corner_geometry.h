@@ -4,7 +4,7 @@
 
 #include "trajectory_generation_tools/smoothing/corner.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Below this heading change (rad) a corner is straight: no turn, nothing to smooth.
 constexpr double kStraightTurnTolerance = 1e-9;
@@ -73,4 +73,4 @@ class CornerGeometry {
   double scale_ = 1.0;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 #include "trajectory_generation_tools/smoothing/outer_smoothing_bisector.h"
 #include "trajectory_generation_tools/smoothing/outer_smoothing_tangent.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 std::optional<CornerSmoothing> CornerSmoother::smooth(const Corner& corner) const {
   using Variant = std::optional<CornerSmoothing> (*)(const Corner&);
@@ -17,4 +17,4 @@ std::optional<CornerSmoothing> CornerSmoother::smooth(const Corner& corner) cons
   return std::nullopt;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -7,7 +7,7 @@
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
 #include "trajectory_generation_tools/smoothing/smoothing_feasibility.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Algorithm 1 for one corner: inner smoothing, then outer smoothing with the minimum at
 /// the bisector boundary, then at the tangent intersection boundary; the first feasible
@@ -30,4 +30,4 @@ class CornerSmoother {
   SmoothingFeasibility feasibility_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 
 #include "trajectory_generation_tools/path/path_primitive.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The arcs that replace one sharp corner (one arc for inner smoothing, three for the outer
 /// smoothings), with where they leave the incoming leg and join the outgoing one.
@@ -15,4 +15,4 @@ struct CornerSmoothing {
   double exit_distance = 0.0;       ///< |B I_last|: where the last arc joins the leg [B, C]
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 
 #include "trajectory_generation_tools/smoothing/corner_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 std::optional<CornerSmoothing> InnerSmoothing::compute(const Corner& corner) {
   const std::optional<CornerGeometry> geometry = CornerGeometry::of(corner);
@@ -37,4 +37,4 @@ std::optional<CornerSmoothing> InnerSmoothing::compute(const Corner& corner) {
   return smoothing;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

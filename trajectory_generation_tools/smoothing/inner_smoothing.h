@@ -5,7 +5,7 @@
 #include "trajectory_generation_tools/smoothing/corner.h"
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Inner smoothing (thesis 3.2.1, Alg. 2 and 3, Eq. 3.1 and 3.2): one arc of the circle of
 /// radius r inscribed in the angle ABC, segment-arc-segment.
@@ -16,4 +16,4 @@ class InnerSmoothing {
   static std::optional<CornerSmoothing> compute(const Corner& corner);
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// A first-arc sweep within this much (rad) below zero is rounding and snaps to zero.
@@ -49,4 +49,4 @@ std::optional<CornerSmoothing> OuterArcChain::build(const CornerGeometry& g, con
   return smoothing;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

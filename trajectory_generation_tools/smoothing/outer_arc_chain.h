@@ -5,7 +5,7 @@
 #include "trajectory_generation_tools/smoothing/corner_geometry.h"
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The three tangent arcs of an outer smoothing ("further arc generation similarly to
 /// Alg. 5", Alg. 5 and 8) from the circle centres O1, O2, O3 of radius r.
@@ -21,4 +21,4 @@ class OuterArcChain {
                                               SmoothingVariant variant);
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

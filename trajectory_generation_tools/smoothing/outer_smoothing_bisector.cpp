@@ -5,7 +5,7 @@
 #include "trajectory_generation_tools/smoothing/corner_geometry.h"
 #include "trajectory_generation_tools/smoothing/outer_arc_chain.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Relative slack (times r^2) for a negative discriminant that is only rounding.
@@ -46,4 +46,4 @@ std::optional<CornerSmoothing> OuterSmoothingBisector::compute(const Corner& cor
   return OuterArcChain::build(g, o1, o2, o3, SmoothingVariant::kOuterBisector);
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

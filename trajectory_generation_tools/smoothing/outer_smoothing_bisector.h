@@ -5,7 +5,7 @@
 #include "trajectory_generation_tools/smoothing/corner.h"
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Outer smoothing with the minimum at the bisector boundary (thesis 3.2.2, Alg. 4 and 5,
 /// Eq. 3.3 and 3.4): three arcs, the middle circle's centre on the bisector at distance r
@@ -17,4 +17,4 @@ class OuterSmoothingBisector {
   static std::optional<CornerSmoothing> compute(const Corner& corner);
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

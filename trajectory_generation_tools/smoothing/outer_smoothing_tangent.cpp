@@ -5,7 +5,7 @@
 #include "trajectory_generation_tools/smoothing/corner_geometry.h"
 #include "trajectory_generation_tools/smoothing/outer_arc_chain.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 std::optional<CornerSmoothing> OuterSmoothingTangent::compute(const Corner& corner) {
   const std::optional<CornerGeometry> geometry = CornerGeometry::of(corner);
@@ -43,4 +43,4 @@ std::optional<CornerSmoothing> OuterSmoothingTangent::compute(const Corner& corn
   return OuterArcChain::build(g, o1, o2, o3, SmoothingVariant::kOuterTangent);
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -5,7 +5,7 @@
 #include "trajectory_generation_tools/smoothing/corner.h"
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Outer smoothing with the minimum at the tangent intersection boundary (thesis 3.2.2,
 /// Alg. 6 to 8, Eq. 3.5 to 3.7), for legs too short for the bisector variant: the outer
@@ -18,4 +18,4 @@ class OuterSmoothingTangent {
   static std::optional<CornerSmoothing> compute(const Corner& corner);
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

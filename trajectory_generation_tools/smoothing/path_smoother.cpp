@@ -7,7 +7,7 @@
 #include "trajectory_generation_tools/smoothing/corner_geometry.h"
 #include "trajectory_generation_tools/smoothing/corner_smoother.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Joining segments no longer than this (m) are left out; the next primitive then starts
@@ -116,4 +116,4 @@ SmoothedPath PathSmoother::build(const std::vector<Point2>& waypoints) const {
   return path;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

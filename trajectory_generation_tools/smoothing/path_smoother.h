@@ -6,7 +6,7 @@
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/smoothing/boundary_edge_index.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Waypoints closer than this (m) to the previous kept one are duplicates and dropped.
 constexpr double kDuplicateWaypointDistance = 1e-9;
@@ -55,4 +55,4 @@ class PathSmoother {
   double radius_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 
 #include "trajectory_generation_tools/smoothing/corner_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 bool SmoothingFeasibility::feasible(const Corner& corner, const CornerSmoothing& smoothing) const {
   const std::optional<CornerGeometry> geometry = CornerGeometry::of(corner);
@@ -30,4 +30,4 @@ bool SmoothingFeasibility::feasible(const Corner& corner, const CornerSmoothing&
   return index_.inside(corner.a);
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 #include "trajectory_generation_tools/smoothing/corner.h"
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// The feasibility test of Algorithm 1 (thesis 3.2): continuity and freedom from collision.
 class SmoothingFeasibility {
@@ -25,4 +25,4 @@ class SmoothingFeasibility {
   const BoundaryEdgeIndex& index_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

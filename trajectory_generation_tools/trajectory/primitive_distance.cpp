@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 double segmentToSegment(const Point2& p0, const Point2& p1, const Point2& a, const Point2& b) {
@@ -99,4 +99,4 @@ double distancePrimitiveToSegment(const PathPrimitive& primitive, const Point2& 
   return 0.0;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

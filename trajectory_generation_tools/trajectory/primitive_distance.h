@@ -3,7 +3,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Angles within this (radians) of an arc's angular range count as on the arc.
 constexpr double kArcAngleTolerance = 1e-12;
@@ -22,4 +22,4 @@ double distancePointToPrimitive(const Point2& p, const PathPrimitive& primitive)
 /// (within kArcAngleTolerance). Only meaningful for arcs.
 bool arcContainsAngle(const PathPrimitive& arc, double angle);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

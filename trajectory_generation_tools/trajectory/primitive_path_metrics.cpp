@@ -6,7 +6,7 @@
 
 #include "trajectory_generation_tools/trajectory/primitive_distance.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// An axis-aligned box, for a cheap lower bound on distances.
@@ -80,4 +80,4 @@ double primitivePathClearance(const std::vector<PathPrimitive>& path,
   return clearance;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

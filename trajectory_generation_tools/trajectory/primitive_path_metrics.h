@@ -5,7 +5,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// `trajectory_length_m` (INTERFACE section 7): the sum of the primitives' exact lengths
 /// (rotations add nothing).
@@ -22,4 +22,4 @@ double primitivePathMaxCurvature(const std::vector<PathPrimitive>& path);
 double primitivePathClearance(const std::vector<PathPrimitive>& path,
                               const PolygonWithHoles& free_area);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

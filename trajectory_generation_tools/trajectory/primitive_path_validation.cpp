@@ -5,7 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 bool isFinite(const Point2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
@@ -46,4 +46,4 @@ void validatePrimitivePath(const std::vector<PathPrimitive>& path) {
   }
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -4,7 +4,7 @@
 
 #include "trajectory_generation_tools/path/path_primitive.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Primitives' ends further apart than this (metres) break a path's continuity.
 constexpr double kJoinPositionTolerance = 1e-6;
@@ -24,4 +24,4 @@ bool isDegenerate(const PathPrimitive& primitive);
 /// consecutive primitives whose end and start are more than kJoinPositionTolerance apart.
 void validatePrimitivePath(const std::vector<PathPrimitive>& path);
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

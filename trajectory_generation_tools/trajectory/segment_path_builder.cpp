@@ -7,7 +7,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/trajectory/primitive_path_validation.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 std::vector<PathPrimitive> SegmentPathBuilder::build(const std::vector<Pose2>& waypoints) const {
   std::vector<Pose2> distinct;
@@ -56,4 +56,4 @@ std::vector<PathPrimitive> SegmentPathBuilder::build(const std::vector<Point2>& 
   return build(poses);
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

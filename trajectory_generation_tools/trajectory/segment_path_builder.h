@@ -5,7 +5,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Builds the path of `smoothing: false` (INTERFACE section 5) from a waypoint path:
 /// straight segments joined by in-place rotations wherever the heading changes, so a
@@ -28,4 +28,4 @@ class SegmentPathBuilder {
   std::vector<PathPrimitive> build(const std::vector<Point2>& waypoints) const;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

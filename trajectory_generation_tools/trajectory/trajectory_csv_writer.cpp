@@ -7,7 +7,7 @@
 #include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
 #include "polygon_coverage_ros_bridge/mission/text_file_writer.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 const char* TrajectoryCsvWriter::kindName(PrimitiveKind kind) {
   switch (kind) {
@@ -49,4 +49,4 @@ void TrajectoryCsvWriter::write(const std::string& path,
   writeTextFile(path, format(poses));
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -5,7 +5,7 @@
 
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Writes `trajectory.csv` (INTERFACE section 7): a header row `t,x,y,yaw,kind`, then one
 /// row per pose, yaw wrapped into (-pi, pi], kind `segment`, `arc` or `rotation`, numbers
@@ -22,4 +22,4 @@ class TrajectoryCsvWriter {
   static const char* kindName(PrimitiveKind kind);
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -9,7 +9,7 @@
 #include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
 #include "trajectory_generation_tools/trajectory/trajectory_timing.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// A primitive's ends count as in the free area within this distance (metres).
@@ -55,4 +55,4 @@ GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& wayp
   return trajectory;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -8,7 +8,7 @@
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// A drivable, timed trajectory and the figures reported about it (INTERFACE section 7).
 struct GeneratedTrajectory {
@@ -39,4 +39,4 @@ class TrajectoryGenerator {
   PlannerParameters parameters_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -5,7 +5,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// One sampled pose of a trajectory (a row of `trajectory.csv`, INTERFACE section 7), with
 /// where on the primitive path it lies so that timing can date it.
@@ -26,4 +26,4 @@ struct TrajectoryPose {
   Pose2 pose() const { return {x, y, yaw}; }
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

@@ -10,7 +10,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/trajectory/primitive_path_validation.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 /// Arc poses are recomputed from the angle this often (see appendPoses).
@@ -179,4 +179,4 @@ void TrajectorySampler::sample(const std::vector<PathPrimitive>& path,
   }
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

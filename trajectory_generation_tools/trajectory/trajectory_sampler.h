@@ -7,7 +7,7 @@
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// Samples a primitive path into trajectory poses (Thesis section 3.3: a pose at a fixed
 /// interval along the path, a finer one on arcs; INTERFACE section 7).
@@ -51,4 +51,4 @@ class TrajectorySampler {
   double rotation_sampling_angle_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

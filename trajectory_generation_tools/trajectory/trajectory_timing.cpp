@@ -8,7 +8,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/trajectory/primitive_path_validation.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 namespace {
 
 double checkedRate(double value, const std::string& name) {
@@ -173,4 +173,4 @@ double TrajectoryTiming::assignTimes(const std::vector<PathPrimitive>& path,
   return timings.empty() ? 0.0 : timings.back().start_time_s + timings.back().duration_s;
 }
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core

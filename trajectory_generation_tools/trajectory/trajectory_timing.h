@@ -6,7 +6,7 @@
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
 
-namespace kinematic_coverage {
+namespace kinematic_coverage::core {
 
 /// How one primitive of a path is driven: when it starts, how long it takes, and its
 /// speeds (m/s; all 0 for a rotation or a degenerate primitive).
@@ -85,4 +85,4 @@ class TrajectoryTiming {
   double yaw_rate_max_;
 };
 
-}  // namespace kinematic_coverage
+}  // namespace kinematic_coverage::core
