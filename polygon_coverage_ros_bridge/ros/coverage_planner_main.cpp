@@ -1,0 +1,12 @@
+// The coverage_planner node (INTERFACE section 4).
+
+#include <ros/ros.h>
+
+#include "polygon_coverage_ros_bridge/ros/coverage_planner_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "coverage_planner");
+  kinematic_coverage::nodes::CoveragePlannerNode node(ros::NodeHandle(), ros::NodeHandle("~"));
+  ros::spin();
+  return 0;
+}

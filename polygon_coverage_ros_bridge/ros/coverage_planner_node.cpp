@@ -1,0 +1,179 @@
+#include "polygon_coverage_ros_bridge/ros/coverage_planner_node.h"
+
+#include <geometry_msgs/PoseArray.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <chrono>
+#include <sstream>
+#include <vector>
+
+#include "kinematic_coverage/PlanStatus.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/ros/message_conversion.h"
+#include "polygon_coverage_ros_bridge/ros/plan_markers.h"
+#include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
+
+namespace kinematic_coverage::nodes {
+namespace {
+
+/// How long a start or goal in another frame waits for its transform.
+const ros::Duration kTransformTimeout(0.5);
+
+/// The planner's stages in order, so that a failure names the stage it happened in.
+const std::vector<std::string> kStages = {"validate", "clean",       "offset", "decompose",
+                                          "sweeps",   "transitions", "solve",  "path"};
+
+std::string nextStage(const std::string& finished) {
+  for (std::size_t i = 0; i + 1 < kStages.size(); ++i) {
+    if (kStages[i] == finished) return kStages[i + 1];
+  }
+  return finished.empty() ? kStages.front() : finished;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+CoveragePlannerNode::CoveragePlannerNode(const ros::NodeHandle& node,
+                                         const ros::NodeHandle& private_node)
+    : node_(node), private_node_(private_node), tf_listener_(tf_buffer_) {
+  waypoint_publisher_ = node_.advertise<geometry_msgs::PoseArray>("waypoint_list", 1, true);
+  marker_publisher_ = private_node_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
+  status_publisher_ = private_node_.advertise<kinematic_coverage::PlanStatus>("status", 10, true);
+  polygon_subscriber_ = node_.subscribe("polygon", 1, &CoveragePlannerNode::onPolygon, this);
+  start_subscriber_ = node_.subscribe("start", 1, &CoveragePlannerNode::onStart, this);
+  goal_subscriber_ = node_.subscribe("goal", 1, &CoveragePlannerNode::onGoal, this);
+  activate_subscriber_ = node_.subscribe("activate", 1, &CoveragePlannerNode::onActivate, this);
+  plan_service_ = private_node_.advertiseService("plan", &CoveragePlannerNode::onPlanService, this);
+  ROS_INFO("coverage_planner: waiting for polygon, start and goal (plan_on_receive: %s)",
+           private_node_.param("plan_on_receive", false) ? "true" : "false");
+}
+
+void CoveragePlannerNode::onPolygon(
+    const kinematic_coverage::PolygonWithHolesStamped::ConstPtr& message) {
+  polygon_ = *message;
+  ROS_INFO("coverage_planner: polygon received (%zu hull vertices, %zu holes, frame %s)",
+           message->polygon.hull.points.size(), message->polygon.holes.size(),
+           message->header.frame_id.c_str());
+  planIfReceiving();
+}
+
+void CoveragePlannerNode::onStart(const geometry_msgs::PointStamped::ConstPtr& message) {
+  start_ = *message;
+  ROS_INFO("coverage_planner: start (%g, %g) received", message->point.x, message->point.y);
+  planIfReceiving();
+}
+
+void CoveragePlannerNode::onGoal(const geometry_msgs::PointStamped::ConstPtr& message) {
+  goal_ = *message;
+  ROS_INFO("coverage_planner: goal (%g, %g) received", message->point.x, message->point.y);
+  planIfReceiving();
+}
+
+void CoveragePlannerNode::onActivate(const std_msgs::Empty::ConstPtr&) {
+  std::string message;
+  plan(message);
+}
+
+bool CoveragePlannerNode::onPlanService(std_srvs::Trigger::Request&,
+                                        std_srvs::Trigger::Response& response) {
+  response.success = plan(response.message);
+  return true;
+}
+
+void CoveragePlannerNode::planIfReceiving() {
+  if (!private_node_.param("plan_on_receive", false)) return;
+  if (!polygon_ || !start_ || !goal_) return;
+  std::string message;
+  plan(message);
+}
+
+geometry_msgs::PointStamped CoveragePlannerNode::inPolygonFrame(
+    const geometry_msgs::PointStamped& point, const std::string& what) const {
+  const std::string& frame = polygon_->header.frame_id;
+  if (point.header.frame_id.empty() || frame.empty() || point.header.frame_id == frame) {
+    return point;
+  }
+  try {
+    geometry_msgs::PointStamped latest = point;
+    latest.header.stamp = ros::Time(0);  // the newest transform: start and goal are places
+    return tf_buffer_.transform(latest, frame, kTransformTimeout);
+  } catch (const tf2::TransformException& error) {
+    throw core::InvalidInputError(what + " is in frame '" + point.header.frame_id +
+                                  "' and no transform to the polygon's frame '" + frame +
+                                  "' is available: " + error.what());
+  }
+}
+
+bool CoveragePlannerNode::plan(std::string& message) {
+  const auto start_time = std::chrono::steady_clock::now();
+  std::string finished;
+  try {
+    if (!polygon_ || !start_ || !goal_) {
+      std::string missing;
+      for (const auto& [known, name] :
+           {std::pair<bool, const char*>{polygon_.has_value(), "polygon"},
+            {start_.has_value(), "start"},
+            {goal_.has_value(), "goal"}}) {
+        if (!known) missing += std::string(missing.empty() ? "" : ", ") + name;
+      }
+      throw core::InvalidInputError("cannot plan yet: no " + missing + " received");
+    }
+    core::Mission mission;
+    mission.frame_id = polygon_->header.frame_id.empty() ? "map" : polygon_->header.frame_id;
+    mission.polygon = fromMessage(polygon_->polygon);
+    mission.start = fromMessage(inPolygonFrame(*start_, "start").point);
+    mission.goal = fromMessage(inPolygonFrame(*goal_, "goal").point);
+    mission.parameters = readPlannerParameters(private_node_);
+    const core::PlannedMission planned =
+        core::planMission(mission, [&](const core::PlanningStage& stage) {
+          finished = stage.name;
+          ROS_INFO("coverage_planner: %s: %s (%.3f s)", stage.name.c_str(), stage.summary.c_str(),
+                   stage.duration_s);
+        });
+    for (const std::string& warning : planned.warnings) {
+      ROS_WARN("coverage_planner: %s", warning.c_str());
+    }
+    std_msgs::Header header;
+    header.frame_id = mission.frame_id;
+    header.stamp = ros::Time::now();
+    waypoint_publisher_.publish(toPoseArray(planned.plan.waypoints, header));
+    marker_publisher_.publish(
+        planMarkers(planned.free_area, planned.plan, mission.start, mission.goal, header));
+    std::ostringstream summary;
+    summary << planned.plan.waypoints.size() << " waypoints, " << planned.plan.cells.size()
+            << " cells, " << planned.plan.path_length_m << " m, time cost "
+            << planned.plan.time_cost_s << " s";
+    message = summary.str();
+    ROS_INFO("coverage_planner: published %s (planning took %.3f s)", message.c_str(),
+             planned.planning_time_s);
+    publishStatus("plan", true, message, secondsSince(start_time));
+    return true;
+  } catch (const core::InvalidInputError& error) {
+    message = error.what();
+  } catch (const std::exception& error) {
+    message = std::string("internal error: ") + error.what();
+  }
+  const std::string stage = nextStage(finished);
+  ROS_ERROR("coverage_planner: %s: %s", stage.c_str(), message.c_str());
+  publishStatus(stage, false, message, secondsSince(start_time));
+  return false;
+}
+
+void CoveragePlannerNode::publishStatus(const std::string& stage, bool success,
+                                        const std::string& message, double duration_s) {
+  kinematic_coverage::PlanStatus status;
+  status.header.stamp = ros::Time::now();
+  status.header.frame_id = polygon_ ? polygon_->header.frame_id : std::string();
+  status.stage = stage;
+  status.success = success;
+  status.message = message;
+  status.duration_s = duration_s;
+  status_publisher_.publish(status);
+}
+
+}  // namespace kinematic_coverage::nodes

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseArray.h>
+#include <nav_msgs/Path.h>
+#include <std_msgs/Header.h>
+
+#include <vector>
+
+#include "kinematic_coverage/PolygonWithHolesStamped.h"
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "trajectory_generation_tools/trajectory/trajectory_pose.h"
+
+namespace kinematic_coverage::nodes {
+
+/// The core's polygon from a message (z ignored, INTERFACE section 2). Non-finite
+/// coordinates pass through: PolygonValidator names them.
+core::PolygonWithHoles fromMessage(const ::kinematic_coverage::PolygonWithHoles& message);
+
+/// A polygon message in `frame_id`.
+::kinematic_coverage::PolygonWithHolesStamped toMessage(const core::PolygonWithHoles& polygon,
+                                                        const std_msgs::Header& header);
+
+/// A point message's x and y.
+core::Point2 fromMessage(const geometry_msgs::Point& point);
+
+/// Poses as a PoseArray: positions at z = 0, orientations the headings as yaw quaternions
+/// (INTERFACE section 4).
+geometry_msgs::PoseArray toPoseArray(const std::vector<core::Pose2>& poses,
+                                     const std_msgs::Header& header);
+
+/// The x, y and yaw of each pose of a PoseArray.
+std::vector<core::Pose2> fromPoseArray(const geometry_msgs::PoseArray& message);
+
+/// Trajectory poses as a PoseArray (headings as yaw quaternions).
+geometry_msgs::PoseArray toPoseArray(const std::vector<core::TrajectoryPose>& poses,
+                                     const std_msgs::Header& header);
+
+/// Trajectory poses as a nav_msgs/Path: the header as given (stamped with the time of
+/// planning), each pose stamped with that time plus its planned time offset t.
+nav_msgs::Path toPath(const std::vector<core::TrajectoryPose>& poses,
+                      const std_msgs::Header& header);
+
+/// The yaw of a quaternion message (0 for a zero quaternion).
+double yawOf(const geometry_msgs::Quaternion& orientation);
+
+}  // namespace kinematic_coverage::nodes

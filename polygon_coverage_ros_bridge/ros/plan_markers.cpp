@@ -1,0 +1,99 @@
+#include "polygon_coverage_ros_bridge/ros/plan_markers.h"
+
+#include <geometry_msgs/Point.h>
+
+namespace kinematic_coverage::nodes {
+namespace {
+
+geometry_msgs::Point point(const core::Point2& p, double z = 0.0) {
+  geometry_msgs::Point message;
+  message.x = p.x();
+  message.y = p.y();
+  message.z = z;
+  return message;
+}
+
+visualization_msgs::Marker baseMarker(const std::string& ns, int id, int type,
+                                      const std_msgs::Header& header, float red, float green,
+                                      float blue, double scale) {
+  visualization_msgs::Marker marker;
+  marker.header = header;
+  marker.ns = ns;
+  marker.id = id;
+  marker.type = type;
+  marker.action = visualization_msgs::Marker::ADD;
+  marker.pose.orientation.w = 1.0;
+  marker.scale.x = scale;
+  marker.scale.y = scale;
+  marker.scale.z = scale;
+  marker.color.r = red;
+  marker.color.g = green;
+  marker.color.b = blue;
+  marker.color.a = 1.0f;
+  return marker;
+}
+
+}  // namespace
+
+visualization_msgs::Marker ringMarker(const core::Ring& ring, const std::string& ns, int id,
+                                      const std_msgs::Header& header, float red, float green,
+                                      float blue, double width) {
+  visualization_msgs::Marker marker =
+      baseMarker(ns, id, visualization_msgs::Marker::LINE_STRIP, header, red, green, blue, width);
+  for (const core::Point2& p : ring) marker.points.push_back(point(p));
+  if (!ring.empty()) marker.points.push_back(point(ring.front()));
+  return marker;
+}
+
+visualization_msgs::Marker deleteAllMarker(const std_msgs::Header& header) {
+  visualization_msgs::Marker marker;
+  marker.header = header;
+  marker.action = visualization_msgs::Marker::DELETEALL;
+  return marker;
+}
+
+visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_area,
+                                            const core::CoveragePlan& plan,
+                                            const core::Point2& start, const core::Point2& goal,
+                                            const std_msgs::Header& header) {
+  visualization_msgs::MarkerArray markers;
+  markers.markers.push_back(deleteAllMarker(header));
+  markers.markers.push_back(
+      ringMarker(free_area.hull, "polygon", 0, header, 0.1f, 0.1f, 0.1f, 0.1));
+  int id = 1;
+  for (const core::Ring& hole : free_area.holes) {
+    markers.markers.push_back(ringMarker(hole, "polygon", id++, header, 0.4f, 0.4f, 0.4f, 0.1));
+  }
+  id = 0;
+  markers.markers.push_back(ringMarker(plan.offset_free_area.hull, "offset_free_area", id++, header,
+                                       0.6f, 0.6f, 0.6f, 0.04));
+  for (const core::Ring& hole : plan.offset_free_area.holes) {
+    markers.markers.push_back(
+        ringMarker(hole, "offset_free_area", id++, header, 0.6f, 0.6f, 0.6f, 0.04));
+  }
+  id = 0;
+  for (const core::Ring& cell : plan.cells) {
+    markers.markers.push_back(ringMarker(cell, "cells", id++, header, 0.2f, 0.5f, 0.9f, 0.05));
+  }
+  visualization_msgs::Marker path = baseMarker(
+      "waypoint_path", 0, visualization_msgs::Marker::LINE_STRIP, header, 0.95f, 0.45f, 0.1f, 0.08);
+  visualization_msgs::Marker waypoints = baseMarker(
+      "waypoints", 0, visualization_msgs::Marker::SPHERE_LIST, header, 0.95f, 0.45f, 0.1f, 0.25);
+  for (const core::Pose2& pose : plan.waypoints) {
+    path.points.push_back(point(pose.position(), 0.01));
+    waypoints.points.push_back(point(pose.position(), 0.01));
+  }
+  markers.markers.push_back(path);
+  markers.markers.push_back(waypoints);
+  visualization_msgs::Marker start_marker = baseMarker(
+      "start_goal", 0, visualization_msgs::Marker::SPHERE, header, 0.1f, 0.7f, 0.2f, 0.6);
+  start_marker.pose.position = point(start);
+  visualization_msgs::Marker goal_marker =
+      baseMarker("start_goal", 1, visualization_msgs::Marker::CUBE, header, 0.5f, 0.2f, 0.6f, 0.6);
+  goal_marker.pose.position = point(goal);
+  markers.markers.push_back(start_marker);
+  markers.markers.push_back(goal_marker);
+  return markers;
+}
+
+}  // namespace kinematic_coverage::nodes

@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""Issue 6 rostest: the lake mission through mission_publisher, coverage_planner and
+smooth_trajectory_generator. The received trajectory lies in the free area, is
+continuous, starts at the start and ends at the goal; both ~status report success."""
+
+import math
+import sys
+import unittest
+
+import rospy
+import rostest
+from geometry_msgs.msg import PoseArray
+from kinematic_coverage.msg import PlanStatus
+from nav_msgs.msg import Path
+
+sys.path.insert(0, __file__.rsplit('/', 1)[0])
+from ros_test_support import Collector, inside_ring, load_mission, strictly_inside_hole, yaw_of  # noqa: E402
+
+TIMEOUT_S = 60.0
+
+
+class PipelineLakeTest(unittest.TestCase):
+
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('pipeline_lake_test')
+        cls.mission = load_mission(rospy.get_param('~mission'))
+        cls.waypoints = Collector('waypoint_list', PoseArray)
+        cls.trajectory = Collector('trajectory', PoseArray)
+        cls.path = Collector('trajectory_path', Path)
+        cls.planner_status = Collector('coverage_planner/status', PlanStatus)
+        cls.smoother_status = Collector('smooth_trajectory_generator/status', PlanStatus)
+        for collector in (cls.waypoints, cls.trajectory, cls.path, cls.planner_status,
+                          cls.smoother_status):
+            collector.wait_for(1, TIMEOUT_S)
+
+    def test_status_reports_success(self):
+        self.assertTrue(self.planner_status.messages, 'no coverage_planner/status')
+        self.assertTrue(self.planner_status.messages[-1].success,
+                        self.planner_status.messages[-1].message)
+        self.assertTrue(self.smoother_status.messages, 'no smooth_trajectory_generator/status')
+        last = self.smoother_status.messages[-1]
+        self.assertTrue(last.success, last.message)
+        self.assertEqual(last.stage, 'smooth')
+
+    def test_waypoints_start_and_end_at_the_mission_points(self):
+        self.assertTrue(self.waypoints.messages, 'no waypoint_list')
+        poses = self.waypoints.messages[-1].poses
+        self.assertGreaterEqual(len(poses), 2)
+        self.assertEqual(self.waypoints.messages[-1].header.frame_id, self.mission['frame_id'])
+        start, goal = self.mission['start'], self.mission['goal']
+        self.assertAlmostEqual(poses[0].position.x, start[0], places=6)
+        self.assertAlmostEqual(poses[0].position.y, start[1], places=6)
+        self.assertAlmostEqual(poses[-1].position.x, goal[0], places=6)
+        self.assertAlmostEqual(poses[-1].position.y, goal[1], places=6)
+        # The yaw of each waypoint is the heading of the leg leaving it.
+        for a, b in zip(poses, poses[1:]):
+            heading = math.atan2(b.position.y - a.position.y, b.position.x - a.position.x)
+            difference = math.remainder(yaw_of(a.orientation) - heading, 2 * math.pi)
+            self.assertLess(abs(difference), 1e-6)
+
+    def test_trajectory_is_continuous_inside_and_from_start_to_goal(self):
+        self.assertTrue(self.trajectory.messages, 'no trajectory')
+        message = self.trajectory.messages[-1]
+        poses = message.poses
+        self.assertGreater(len(poses), 100)
+        self.assertEqual(message.header.frame_id, self.mission['frame_id'])
+        start, goal = self.mission['start'], self.mission['goal']
+        self.assertLess(math.hypot(poses[0].position.x - start[0], poses[0].position.y - start[1]),
+                        1e-6)
+        self.assertLess(math.hypot(poses[-1].position.x - goal[0], poses[-1].position.y - goal[1]),
+                        1e-6)
+        step_limit = max(self.mission['segment_sampling_distance'],
+                         self.mission['arc_sampling_distance']) + 1e-6
+        hull = self.mission['polygon']['hull']
+        holes = self.mission['polygon']['holes']
+        for i, (a, b) in enumerate(zip(poses, poses[1:])):
+            step = math.hypot(b.position.x - a.position.x, b.position.y - a.position.y)
+            self.assertLessEqual(step, step_limit, 'poses %d and %d' % (i, i + 1))
+        for i, pose in enumerate(poses):
+            point = (pose.position.x, pose.position.y)
+            self.assertTrue(inside_ring(point, hull), 'pose %d outside the hull' % i)
+            self.assertFalse(strictly_inside_hole(point, holes), 'pose %d inside a hole' % i)
+
+    def test_trajectory_path_is_stamped_with_planned_times(self):
+        self.assertTrue(self.path.messages, 'no trajectory_path')
+        path = self.path.messages[-1]
+        self.assertEqual(len(path.poses), len(self.trajectory.messages[-1].poses))
+        self.assertEqual(path.poses[0].header.stamp, path.header.stamp)
+        stamps = [pose.header.stamp.to_sec() for pose in path.poses]
+        self.assertTrue(all(b >= a for a, b in zip(stamps, stamps[1:])))
+        self.assertGreater(stamps[-1] - stamps[0], 60.0)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('kinematic_coverage', 'pipeline_lake', PipelineLakeTest)

@@ -1,0 +1,153 @@
+#!/usr/bin/python3
+"""Issue 6 rostest: bad input, the ~plan service, replanning on a changed polygon and
+start/goal in another frame, against a running coverage_planner and
+smooth_trajectory_generator."""
+
+import math
+import sys
+import time
+import unittest
+
+import rospy
+import rostest
+from geometry_msgs.msg import Point32, PointStamped, PoseArray, Polygon
+from kinematic_coverage.msg import PlanStatus, PolygonWithHolesStamped
+from rosgraph_msgs.msg import Log
+from std_msgs.msg import Empty
+from std_srvs.srv import Trigger
+
+sys.path.insert(0, __file__.rsplit('/', 1)[0])
+from ros_test_support import Collector, strictly_inside_hole  # noqa: E402
+
+TIMEOUT_S = 30.0
+SQUARE = [(0, 0), (30, 0), (30, 30), (0, 30)]
+
+
+def ring(points):
+    return Polygon(points=[Point32(x=x, y=y, z=0.0) for x, y in points])
+
+
+def polygon_message(hull, holes=(), frame='map'):
+    message = PolygonWithHolesStamped()
+    message.header.frame_id = frame
+    message.header.stamp = rospy.Time.now()
+    message.polygon.hull = ring(hull)
+    message.polygon.holes = [ring(hole) for hole in holes]
+    return message
+
+
+def point_message(x, y, frame='map'):
+    message = PointStamped()
+    message.header.frame_id = frame
+    message.header.stamp = rospy.Time.now()
+    message.point.x = x
+    message.point.y = y
+    return message
+
+
+class PlannerRequestsTest(unittest.TestCase):
+
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('planner_requests_test')
+        cls.polygon = rospy.Publisher('polygon', PolygonWithHolesStamped, queue_size=1, latch=True)
+        cls.start = rospy.Publisher('start', PointStamped, queue_size=1, latch=True)
+        cls.goal = rospy.Publisher('goal', PointStamped, queue_size=1, latch=True)
+        cls.activate = rospy.Publisher('activate', Empty, queue_size=1)
+        cls.waypoints = Collector('waypoint_list', PoseArray)
+        cls.trajectory = Collector('trajectory', PoseArray)
+        cls.status = Collector('coverage_planner/status', PlanStatus)
+        cls.log = Collector('/rosout', Log)
+        rospy.wait_for_service('coverage_planner/plan', TIMEOUT_S)
+        cls.plan_service = rospy.ServiceProxy('coverage_planner/plan', Trigger)
+        while cls.activate.get_num_connections() == 0 and not rospy.is_shutdown():
+            time.sleep(0.05)
+
+    def send(self, hull=SQUARE, holes=(), start=(1, 1), goal=(29, 29), start_frame='map'):
+        """Publishes a mission, activates the planner and returns its status, the number
+        of coverage_planner ROS_ERRORs and of waypoint lists published for it."""
+        statuses = len(self.status.messages)
+        waypoints = len(self.waypoints.messages)
+        self.polygon.publish(polygon_message(hull, holes))
+        self.start.publish(point_message(start[0], start[1], start_frame))
+        self.goal.publish(point_message(goal[0], goal[1]))
+        time.sleep(0.5)  # the latched inputs reach the node before activate
+        errors = self.planner_errors()
+        self.activate.publish(Empty())
+        self.assertTrue(self.status.wait_for(statuses + 1, TIMEOUT_S), 'no status')
+        if not self.status.messages[-1].success:
+            # The node's ROS_ERROR reaches /rosout a moment after its status.
+            deadline = time.time() + 10.0
+            while self.planner_errors() == errors and time.time() < deadline:
+                time.sleep(0.05)
+        time.sleep(1.0)  # a second error or a waypoint list would have arrived by now
+        return (self.status.messages[-1], self.planner_errors() - errors,
+                len(self.waypoints.messages) - waypoints)
+
+    def planner_errors(self):
+        return sum(1 for entry in self.log.messages
+                   if entry.level == Log.ERROR and entry.name == '/coverage_planner')
+
+    def test_1_invalid_input_is_rejected_and_the_next_mission_planned(self):
+        nan = float('nan')
+        cases = {
+            'self-intersecting': dict(hull=[(0, 0), (30, 30), (30, 0), (0, 30)]),
+            'non-finite': dict(hull=[(0, 0), (30, 0), (30, nan), (0, 30)]),
+            'fewer than 3': dict(hull=[(0, 0), (30, 0)]),
+            'zero area': dict(hull=[(0, 0), (10, 0), (20, 0)]),
+            'hole outside': dict(holes=[[(40, 40), (45, 40), (45, 45)]]),
+            'empty offset': dict(hull=[(0, 0), (1.5, 0), (1.5, 1.5), (0, 1.5)], start=(0.5, 0.5),
+                                 goal=(1, 1)),
+            'start in hole': dict(holes=[[(10, 10), (20, 10), (20, 20), (10, 20)]],
+                                  start=(15, 15)),
+            'unknown frame': dict(start_frame='nowhere'),
+        }
+        for name, case in cases.items():
+            status, errors, published = self.send(**case)
+            self.assertFalse(status.success, name)
+            self.assertTrue(status.message, name)
+            self.assertEqual(errors, 1, '%s: one ROS_ERROR expected; log: %s' % (
+                name, [(entry.name, entry.level) for entry in self.log.messages][-5:]))
+            self.assertEqual(published, 0, '%s: nothing may be published' % name)
+        rospy.set_param('coverage_planner/lateral_overlap', 1.5)
+        status, errors, published = self.send()
+        rospy.set_param('coverage_planner/lateral_overlap', 0.4)
+        self.assertFalse(status.success)
+        self.assertIn('lateral_overlap', status.message)
+        self.assertEqual((errors, published), (1, 0))
+        status, errors, published = self.send()
+        self.assertTrue(status.success, status.message)
+        self.assertEqual((errors, published), (0, 1))
+
+    def test_2_plan_service_answers_and_a_changed_polygon_replaces_the_output(self):
+        self.send()
+        first = self.waypoints.messages[-1]
+        hole = [(12, 8), (18, 8), (18, 22), (12, 22)]
+        count = len(self.waypoints.messages)
+        trajectories = len(self.trajectory.messages)
+        self.polygon.publish(polygon_message(SQUARE, [hole]))
+        time.sleep(0.5)
+        answer = self.plan_service()
+        self.assertTrue(answer.success, answer.message)
+        self.assertIn('waypoints', answer.message)
+        self.assertTrue(self.waypoints.wait_for(count + 1, TIMEOUT_S))
+        second = self.waypoints.messages[-1]
+        self.assertGreater(second.header.stamp, first.header.stamp)
+        for pose in second.poses:
+            self.assertFalse(strictly_inside_hole((pose.position.x, pose.position.y), [hole]))
+        # The smoother follows with a trajectory around the new hole.
+        self.assertTrue(self.trajectory.wait_for(trajectories + 1, TIMEOUT_S))
+        for pose in self.trajectory.messages[-1].poses:
+            self.assertFalse(strictly_inside_hole((pose.position.x, pose.position.y), [hole]))
+
+    def test_3_start_in_another_frame_is_transformed(self):
+        # boat is map shifted by (10, 5): (-8, -3) in boat is (2, 2) in map.
+        status, errors, published = self.send(start=(-8, -3), start_frame='boat')
+        self.assertTrue(status.success, status.message)
+        first = self.waypoints.messages[-1].poses[0].position
+        self.assertLess(math.hypot(first.x - 2.0, first.y - 2.0), 1e-5)
+        self.assertEqual(self.waypoints.messages[-1].header.frame_id, 'map')
+
+
+if __name__ == '__main__':
+    rostest.rosrun('kinematic_coverage', 'planner_requests', PlannerRequestsTest)

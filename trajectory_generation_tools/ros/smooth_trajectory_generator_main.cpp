@@ -1,0 +1,13 @@
+// The smooth_trajectory_generator node (INTERFACE section 4).
+
+#include <ros/ros.h>
+
+#include "trajectory_generation_tools/ros/smooth_trajectory_generator_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "smooth_trajectory_generator");
+  kinematic_coverage::nodes::SmoothTrajectoryGeneratorNode node(ros::NodeHandle(),
+                                                                ros::NodeHandle("~"));
+  ros::spin();
+  return 0;
+}

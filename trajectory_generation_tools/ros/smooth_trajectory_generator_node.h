@@ -1,0 +1,49 @@
+#pragma once
+
+#include <geometry_msgs/PoseArray.h>
+#include <ros/ros.h>
+
+#include <optional>
+#include <string>
+
+#include "kinematic_coverage/PolygonWithHolesStamped.h"
+
+namespace kinematic_coverage::nodes {
+
+/// The `smooth_trajectory_generator` node (INTERFACE section 4): smooths every
+/// `waypoint_list` it receives against the newest of `polygon` and `updated_polygon`
+/// (Algorithm 1 with the raw hull and holes), samples and times it with the core's
+/// TrajectoryGenerator, and publishes `trajectory`, `trajectory_path` (stamped with the
+/// time of planning plus each pose's time offset), `~markers` and `~status`. A waypoint
+/// list that arrives before any polygon waits for one. Bad input gives one ROS_ERROR, a
+/// failed status and no output; the node keeps running.
+class SmoothTrajectoryGeneratorNode {
+ public:
+  /// Topics are relative to `node`; ~markers and ~status and the parameters (read at every
+  /// request) are under `private_node`.
+  SmoothTrajectoryGeneratorNode(const ros::NodeHandle& node, const ros::NodeHandle& private_node);
+
+ private:
+  void onPolygon(const kinematic_coverage::PolygonWithHolesStamped::ConstPtr& message);
+  void onWaypoints(const geometry_msgs::PoseArray::ConstPtr& message);
+
+  /// Smooths the pending waypoint list against the newest polygon and publishes.
+  void generate();
+
+  void publishStatus(bool success, const std::string& message, double duration_s,
+                     const std::string& frame_id);
+
+  ros::NodeHandle node_;
+  ros::NodeHandle private_node_;
+  ros::Subscriber polygon_subscriber_;
+  ros::Subscriber updated_polygon_subscriber_;
+  ros::Subscriber waypoint_subscriber_;
+  ros::Publisher trajectory_publisher_;
+  ros::Publisher path_publisher_;
+  ros::Publisher marker_publisher_;
+  ros::Publisher status_publisher_;
+  std::optional<kinematic_coverage::PolygonWithHolesStamped> polygon_;
+  std::optional<geometry_msgs::PoseArray> waypoints_;
+};
+
+}  // namespace kinematic_coverage::nodes

@@ -1,0 +1,84 @@
+#include "trajectory_generation_tools/ros/trajectory_markers.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "polygon_coverage_ros_bridge/ros/plan_markers.h"
+
+namespace kinematic_coverage::nodes {
+namespace {
+
+/// Arcs are drawn as chords of at most this angle (rad).
+constexpr double kArcDrawingStep = 0.1;
+
+geometry_msgs::Point point(const core::Point2& p) {
+  geometry_msgs::Point message;
+  message.x = p.x();
+  message.y = p.y();
+  message.z = 0.02;
+  return message;
+}
+
+visualization_msgs::Marker lineList(const std::string& ns, const std_msgs::Header& header,
+                                    float red, float green, float blue) {
+  visualization_msgs::Marker marker;
+  marker.header = header;
+  marker.ns = ns;
+  marker.id = 0;
+  marker.type = visualization_msgs::Marker::LINE_LIST;
+  marker.action = visualization_msgs::Marker::ADD;
+  marker.pose.orientation.w = 1.0;
+  marker.scale.x = 0.08;
+  marker.color.r = red;
+  marker.color.g = green;
+  marker.color.b = blue;
+  marker.color.a = 1.0f;
+  return marker;
+}
+
+}  // namespace
+
+visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPrimitive>& path,
+                                                  const std_msgs::Header& header) {
+  visualization_msgs::Marker segments = lineList("segments", header, 0.3f, 0.3f, 0.3f);
+  visualization_msgs::Marker inner = lineList("arcs_inner", header, 0.1f, 0.7f, 0.2f);
+  visualization_msgs::Marker bisector = lineList("arcs_outer_bisector", header, 0.1f, 0.3f, 0.9f);
+  visualization_msgs::Marker tangent = lineList("arcs_outer_tangent", header, 0.8f, 0.1f, 0.8f);
+  visualization_msgs::Marker rotations = lineList("rotations", header, 0.9f, 0.1f, 0.1f);
+  rotations.type = visualization_msgs::Marker::SPHERE_LIST;
+  rotations.scale.x = rotations.scale.y = rotations.scale.z = 0.3;
+  for (const core::PathPrimitive& primitive : path) {
+    switch (primitive.kind()) {
+      case core::PrimitiveKind::kSegment:
+        segments.points.push_back(point(primitive.start()));
+        segments.points.push_back(point(primitive.end()));
+        break;
+      case core::PrimitiveKind::kRotation:
+        rotations.points.push_back(point(primitive.start()));
+        break;
+      case core::PrimitiveKind::kArc: {
+        visualization_msgs::Marker& marker =
+            primitive.variant() == core::SmoothingVariant::kOuterBisector  ? bisector
+            : primitive.variant() == core::SmoothingVariant::kOuterTangent ? tangent
+                                                                           : inner;
+        const int steps =
+            std::max(1, static_cast<int>(std::ceil(std::abs(primitive.sweep()) / kArcDrawingStep)));
+        for (int i = 0; i < steps; ++i) {
+          marker.points.push_back(
+              point(primitive.poseAt(static_cast<double>(i) / steps).position()));
+          marker.points.push_back(
+              point(primitive.poseAt(static_cast<double>(i + 1) / steps).position()));
+        }
+        break;
+      }
+    }
+  }
+  visualization_msgs::MarkerArray markers;
+  markers.markers.push_back(deleteAllMarker(header));
+  for (visualization_msgs::Marker* marker : {&segments, &inner, &bisector, &tangent, &rotations}) {
+    if (!marker->points.empty()) markers.markers.push_back(*marker);
+  }
+  return markers;
+}
+
+}  // namespace kinematic_coverage::nodes
