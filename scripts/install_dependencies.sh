@@ -10,7 +10,8 @@ packages=(
   ros-message-generation ros-message-runtime
   libstd-msgs-dev ros-std-msgs python3-std-msgs libstd-srvs-dev ros-std-srvs python3-std-srvs
   libgeometry-msgs-dev ros-geometry-msgs python3-geometry-msgs
-  libnav-msgs-dev ros-nav-msgs libvisualization-msgs-dev ros-visualization-msgs
+  libnav-msgs-dev ros-nav-msgs python3-nav-msgs
+  libvisualization-msgs-dev ros-visualization-msgs python3-visualization-msgs python3-rosservice
   libtf2-ros-dev libtf2-geometry-msgs-dev tf2-tools rosbash
   libcgal-dev libeigen3-dev libyaml-cpp-dev libgtest-dev libbenchmark-dev libcairo2-dev
   librviz-dev rviz pluginlib-dev qtbase5-dev

@@ -3,4 +3,11 @@ if(catkin_FOUND)
   find_package(rostest REQUIRED)
   add_rostest(test/ros/pipeline_lake.test DEPENDENCIES ${KC_NODE_TARGETS})
   add_rostest(test/ros/planner_requests.test DEPENDENCIES ${KC_NODE_TARGETS})
+  # The launch files name only packages and arguments that exist.
+  find_package(roslaunch REQUIRED)
+  roslaunch_add_file_check(launch)
+  # `catkin_make install`: the installed nodes run mission.launch from the install space.
+  add_test(NAME install_space
+    COMMAND ${PROJECT_SOURCE_DIR}/test/ros/install_space_test.sh ${CMAKE_BINARY_DIR})
+  set_tests_properties(install_space PROPERTIES TIMEOUT 180)
 endif()
