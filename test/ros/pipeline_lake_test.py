@@ -12,6 +12,7 @@ import rostest
 from geometry_msgs.msg import PoseArray
 from kinematic_coverage.msg import PlanStatus
 from nav_msgs.msg import Path
+from visualization_msgs.msg import MarkerArray
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
 from ros_test_support import Collector, inside_ring, load_mission, strictly_inside_hole, yaw_of  # noqa: E402
@@ -30,8 +31,10 @@ class PipelineLakeTest(unittest.TestCase):
         cls.path = Collector('trajectory_path', Path)
         cls.planner_status = Collector('coverage_planner/status', PlanStatus)
         cls.smoother_status = Collector('smooth_trajectory_generator/status', PlanStatus)
+        cls.planner_markers = Collector('coverage_planner/markers', MarkerArray)
+        cls.smoother_markers = Collector('smooth_trajectory_generator/markers', MarkerArray)
         for collector in (cls.waypoints, cls.trajectory, cls.path, cls.planner_status,
-                          cls.smoother_status):
+                          cls.smoother_status, cls.planner_markers, cls.smoother_markers):
             collector.wait_for(1, TIMEOUT_S)
 
     def test_status_reports_success(self):
@@ -90,6 +93,21 @@ class PipelineLakeTest(unittest.TestCase):
         stamps = [pose.header.stamp.to_sec() for pose in path.poses]
         self.assertTrue(all(b >= a for a, b in zip(stamps, stamps[1:])))
         self.assertGreater(stamps[-1] - stamps[0], 60.0)
+
+    def test_markers_show_what_the_nodes_computed(self):
+        self.assertTrue(self.planner_markers.messages, 'no coverage_planner/markers')
+        planner = {marker.ns for marker in self.planner_markers.messages[-1].markers}
+        for namespace in ('polygon', 'offset_free_area', 'cells', 'waypoint_path', 'waypoints',
+                          'start_goal'):
+            self.assertIn(namespace, planner)
+        self.assertTrue(self.smoother_markers.messages, 'no smooth_trajectory_generator/markers')
+        markers = self.smoother_markers.messages[-1].markers
+        smoother = {marker.ns for marker in markers}
+        for namespace in ('segments', 'arcs_inner', 'coverage_heatmap'):
+            self.assertIn(namespace, smoother)
+        heatmap = next(marker for marker in markers if marker.ns == 'coverage_heatmap')
+        self.assertGreater(len(heatmap.points), 1000)
+        self.assertEqual(len(heatmap.colors), len(heatmap.points))
 
 
 if __name__ == '__main__':

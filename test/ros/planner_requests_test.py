@@ -101,6 +101,10 @@ class PlannerRequestsTest(unittest.TestCase):
             'start in hole': dict(holes=[[(10, 10), (20, 10), (20, 20), (10, 20)]],
                                   start=(15, 15)),
             'unknown frame': dict(start_frame='nowhere'),
+            'over the size limit': dict(hull=[
+                (15 + 14 * math.cos(2 * math.pi * i / 100001),
+                 15 + 14 * math.sin(2 * math.pi * i / 100001)) for i in range(100001)],
+                start=(15, 15), goal=(16, 16)),
         }
         for name, case in cases.items():
             status, errors, published = self.send(**case)

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <sstream>
+#include <vector>
 
 #include "kinematic_coverage/PlanStatus.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -12,6 +13,7 @@
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+#include "trajectory_generation_tools/ros/heatmap_markers.h"
 #include "trajectory_generation_tools/ros/trajectory_markers.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
@@ -76,7 +78,14 @@ void SmoothTrajectoryGeneratorNode::generate() {
     header.stamp = ros::Time::now();
     trajectory_publisher_.publish(toPoseArray(trajectory.poses, header));
     path_publisher_.publish(toPath(trajectory.poses, header));
-    marker_publisher_.publish(trajectoryMarkers(trajectory.path, header));
+    visualization_msgs::MarkerArray markers = trajectoryMarkers(trajectory.path, header);
+    std::vector<core::Pose2> poses;
+    poses.reserve(trajectory.poses.size());
+    for (const core::TrajectoryPose& pose : trajectory.poses) {
+      poses.push_back({pose.x, pose.y, pose.yaw});
+    }
+    markers.markers.push_back(heatmapMarker(cleaned.free_area, poses, parameters, header));
+    marker_publisher_.publish(markers);
     const core::SmoothingStatistics& turns = trajectory.statistics;
     std::ostringstream summary;
     summary << turns.turns_smoothed << " of " << turns.turns_total << " turns smoothed (inner "

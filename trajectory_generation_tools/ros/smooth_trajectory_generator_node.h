@@ -14,7 +14,8 @@ namespace kinematic_coverage::nodes {
 /// `waypoint_list` it receives against the newest of `polygon` and `updated_polygon`
 /// (Algorithm 1 with the raw hull and holes), samples and times it with the core's
 /// TrajectoryGenerator, and publishes `trajectory`, `trajectory_path` (stamped with the
-/// time of planning plus each pose's time offset), `~markers` and `~status`. A waypoint
+/// time of planning plus each pose's time offset), `~markers` (the smoothed path by
+/// variant and the coverage heatmap) and `~status`. A waypoint
 /// list that arrives before any polygon waits for one. Bad input gives one ROS_ERROR, a
 /// failed status and no output; the node keeps running.
 class SmoothTrajectoryGeneratorNode {
