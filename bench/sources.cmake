@@ -2,4 +2,5 @@
 include(bench/coverage/sources.cmake OPTIONAL)
 include(bench/gtsp/sources.cmake OPTIONAL)
 include(bench/planner/sources.cmake OPTIONAL)
+include(bench/replanning/sources.cmake OPTIONAL)
 include(bench/trajectory/sources.cmake OPTIONAL)

@@ -15,7 +15,7 @@ packages=(
   libtf2-ros-dev libtf2-geometry-msgs-dev tf2-tools rosbash
   libcgal-dev libeigen3-dev libyaml-cpp-dev libgtest-dev libbenchmark-dev libcairo2-dev
   librviz-dev rviz pluginlib-dev qtbase5-dev
-  xvfb xauth xdotool x11-utils
+  xvfb xauth xdotool x11-utils imagemagick
 )
 
 missing=()

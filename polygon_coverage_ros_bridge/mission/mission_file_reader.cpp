@@ -46,7 +46,18 @@ const std::vector<ParameterField>& parameterFields() {
       {"arc_sampling_distance", &P::arc_sampling_distance},
       {"rotation_sampling_angle", &P::rotation_sampling_angle},
       {"replanning_method", &P::replanning_method},
+      {"replanning_sliver_fraction", &P::replanning_sliver_fraction},
+      {"replanning_min_area", &P::replanning_min_area},
+      {"replanning_simplify_tolerance", &P::replanning_simplify_tolerance},
       {"alpha", &P::alpha},
+      {"yaw_gain", &P::yaw_gain},
+      {"position_gain", &P::position_gain},
+      {"position_tolerance", &P::position_tolerance},
+      {"yaw_tolerance", &P::yaw_tolerance},
+      {"current_x", &P::current_x},
+      {"current_y", &P::current_y},
+      {"sim_dt", &P::sim_dt},
+      {"sim_time_limit", &P::sim_time_limit},
   };
   return fields;
 }

@@ -9,6 +9,7 @@
 #include "polygon_coverage_ros_bridge/mission/command_line.h"
 #include "polygon_coverage_ros_bridge/mission/json_object.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
 #include "polygon_coverage_ros_bridge/validation/point_format.h"
@@ -48,77 +49,23 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
   std::ostringstream notes;
   for (const std::string& warning : planned.warnings) notes << "warning: " << warning << "\n";
 
-  const auto stage_start = std::chrono::steady_clock::now();
-  const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(mission.parameters).generate(plan.waypoints, planned.free_area);
-  const SmoothingStatistics& turns = trajectory.statistics;
-  out << (mission.parameters.smoothing ? "smooth: " : "trajectory: ") << turns.turns_smoothed
-      << " of " << turns.turns_total << " turns smoothed (inner " << turns.inner
-      << ", outer bisector " << turns.outer_bisector << ", outer tangent " << turns.outer_tangent
-      << "), " << trajectory.poses.size() << " poses, " << formatNumber(trajectory.traversal_time_s)
-      << " s (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
-
-  // Coverage of the poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so
-  // that `coverage_tool evaluate` of that file reports the same figures.
-  std::vector<Pose2> poses;
-  poses.reserve(trajectory.poses.size());
-  for (const TrajectoryPose& pose : trajectory.poses) {
-    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
-  }
-  const TrajectoryCoverage coverage = measureTrajectoryCoverage(
-      planned.free_area, plan.offset_free_area, mission.parameters, poses);
-  out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
-      << ")" << std::endl;
-
-  createOutputDirectory(out_dir);
-  const std::filesystem::path dir(out_dir);
-  const std::string waypoints_path = (dir / "waypoints.csv").string();
-  const std::string trajectory_path = (dir / "trajectory.csv").string();
-  const std::string metrics_path = (dir / "metrics.json").string();
-  const std::string plot_path = (dir / "plot.png").string();
-  WaypointCsvWriter().write(waypoints_path, plan.waypoints);
-  TrajectoryCsvWriter().write(trajectory_path, trajectory.poses);
-  JsonObject metrics;
-  metrics.set("planning_time_s", planning_time_s)
-      .set("cells", static_cast<double>(plan.cells.size()))
-      .set("waypoint_count", static_cast<double>(plan.waypoints.size()))
-      .set("path_length_m", plan.path_length_m)
-      .set("time_cost_s", plan.time_cost_s)
-      .set("trajectory_length_m", trajectory.trajectory_length_m)
-      .set("traversal_time_s", trajectory.traversal_time_s)
-      .set("max_curvature", trajectory.max_curvature)
-      .set("turns_total", static_cast<double>(turns.turns_total))
-      .set("turns_smoothed", static_cast<double>(turns.turns_smoothed));
-  setCoverageMetrics(coverage.report, metrics);
-  if (std::isfinite(trajectory.min_obstacle_clearance_m)) {
-    metrics.set("min_obstacle_clearance_m", trajectory.min_obstacle_clearance_m);
-  }
-  metrics.write(metrics_path);
-
-  CoveragePlotData plot;
-  plot.free_area = planned.free_area;
-  plot.offset_free_area = plan.offset_free_area;
-  plot.heatmap = coverage.heatmap;
-  plot.waypoints = plan.waypoints;
-  plot.trajectory = poses;
-  plot.start = mission.start;
-  plot.goal = mission.goal;
-  std::ostringstream title;
-  title << "Coverage plan: " << std::filesystem::path(arguments.mission_path).filename().string()
-        << (mission.parameters.smoothing ? " (smoothed)" : " (unsmoothed)");
-  std::ostringstream figures;
-  figures.precision(4);
-  figures << "coverage " << coverage.report.coverage_percent << " %  |  loss "
-          << coverage.report.coverage_loss_percent << " %  |  " << turns.turns_smoothed << " of "
-          << turns.turns_total << " turns smoothed  |  " << trajectory.trajectory_length_m
-          << " m  |  " << trajectory.traversal_time_s << " s";
-  plot.title_lines = {title.str(), figures.str()};
-  CoveragePlot().writePng(plot, plot_path);
+  PlanOutputRequest request;
+  request.parameters = &mission.parameters;
+  request.free_area = &planned.free_area;
+  request.plan = &plan;
+  request.planning_time_s = planning_time_s;
+  request.start = mission.start;
+  request.goal = mission.goal;
+  request.title =
+      "Coverage plan: " + std::filesystem::path(arguments.mission_path).filename().string() +
+      (mission.parameters.smoothing ? " (smoothed)" : " (unsmoothed)");
+  const std::vector<std::string> written = writePlanOutputs(request, out_dir, out);
   err << notes.str();
   out << "write: " << plan.waypoints.size() << " waypoints, planning took "
       << formatSeconds(planning_time_s) << "\n";
-  out << "wrote " << waypoints_path << " " << trajectory_path << " " << metrics_path << " "
-      << plot_path << "\n";
+  out << "wrote";
+  for (const std::string& path : written) out << " " << path;
+  out << "\n";
 }
 
 }  // namespace kinematic_coverage::core

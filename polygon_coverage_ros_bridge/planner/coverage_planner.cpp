@@ -10,6 +10,7 @@
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/region_intersection.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 #include "polygon_coverage_ros_bridge/route/jog_removal.h"
@@ -31,6 +32,9 @@ constexpr double kRelativeDuplicateTolerance = 1e-9;
 constexpr double kRelativeInsideTolerance = 1e-9;
 /// Clusters up to which the GTSP is solved exactly (Issue 2: exact up to 14 clusters).
 constexpr int kExactClusterLimit = 14;
+/// Parts of a coverage region smaller than this share of a square sweep distance are
+/// left out: rounding leftovers of the Boolean operations, not area to sweep.
+constexpr double kMinPartShare = 1e-4;
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -145,6 +149,20 @@ CoveragePlanner::CoveragePlanner(PlannerParameters parameters)
 
 CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Point2& start,
                                    const Point2& goal, const StageCallback& on_stage) const {
+  return planParts(free_area, nullptr, start, goal, on_stage);
+}
+
+CoveragePlan CoveragePlanner::planRegion(const PolygonWithHoles& free_area,
+                                         const std::vector<PolygonWithHoles>& coverage_region,
+                                         const Point2& start, const Point2& goal,
+                                         const StageCallback& on_stage) const {
+  return planParts(free_area, &coverage_region, start, goal, on_stage);
+}
+
+CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
+                                        const std::vector<PolygonWithHoles>* coverage_region,
+                                        const Point2& start, const Point2& goal,
+                                        const StageCallback& on_stage) const {
   const Clock::time_point planning_start = Clock::now();
   CoveragePlan plan;
   auto stage = [&](const std::string& name, Clock::time_point since, std::string summary) {
@@ -171,17 +189,41 @@ CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Poin
     stage("offset", t, summary.str());
   }
 
-  // Cell decomposition over candidate directions.
+  // The parts to cover: the whole offset free area, or its parts inside the region.
+  std::vector<PolygonWithHoles> parts;
+  if (coverage_region == nullptr) {
+    parts.push_back(area);
+  } else {
+    t = Clock::now();
+    const FrustumSensor region_sensor = FrustumSensor::fromParameters(parameters_);
+    parts = intersectWithRegions(
+        area, *coverage_region,
+        kMinPartShare * region_sensor.sweepDistance() * region_sensor.sweepDistance());
+    double parts_area = 0.0;
+    for (const PolygonWithHoles& part : parts) parts_area += kinematic_coverage::core::area(part);
+    std::ostringstream summary;
+    summary << parts.size() << " parts of the offset free area to cover, " << parts_area << " m^2";
+    stage("region", t, summary.str());
+  }
+
+  // Cell decomposition over candidate directions, per part.
   t = Clock::now();
   const DecompositionType type = parameters_.decomposition_type == "trapezoidal"
                                      ? DecompositionType::kTrapezoidal
                                      : DecompositionType::kBoustrophedon;
-  const Decomposition decomposition = computeBestDecomposition(area, type);
-  for (const Cell& cell : decomposition.cells) plan.cells.push_back(cell.polygon);
+  std::vector<Decomposition> decompositions;
+  std::size_t directions_tried = 0;
+  std::size_t cell_count = 0;
+  for (const PolygonWithHoles& part : parts) {
+    decompositions.push_back(computeBestDecomposition(part, type));
+    directions_tried = std::max(directions_tried, decompositions.back().directions_tried);
+    cell_count += decompositions.back().cells.size();
+    for (const Cell& cell : decompositions.back().cells) plan.cells.push_back(cell.polygon);
+  }
   {
     std::ostringstream summary;
-    summary << decomposition.cells.size() << " " << parameters_.decomposition_type
-            << " cells, best of " << decomposition.directions_tried << " directions";
+    summary << cell_count << " " << parameters_.decomposition_type << " cells, best of "
+            << directions_tried << " directions";
     stage("decompose", t, summary.str());
   }
 
@@ -190,22 +232,24 @@ CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Poin
   const SegmentCost segment_cost(parameters_);
   const VisibilityGraph graph(area, segment_cost);
   const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
-  const SweepPatternGenerator generator(
-      sensor, SweepPatternGenerator::laneEndInset(sensor, parameters_.wall_distance), area);
   const TransitionPath transition = [&](const Point2& a, const Point2& b) {
     return graph.shortestPath(a, b);
   };
   std::vector<SweepPattern> patterns;
   std::vector<std::vector<int>> clusters = {{0}, {1}};  // start, goal
-  for (const Cell& cell : decomposition.cells) {
-    std::vector<int> cluster;
-    for (double direction : cell.sweep_directions) {
-      for (SweepPattern& pattern : generator.patterns(cell.polygon, direction, transition)) {
-        cluster.push_back(static_cast<int>(patterns.size()) + 2);
-        patterns.push_back(std::move(pattern));
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const SweepPatternGenerator generator(
+        sensor, SweepPatternGenerator::laneEndInset(sensor, parameters_.wall_distance), parts[k]);
+    for (const Cell& cell : decompositions[k].cells) {
+      std::vector<int> cluster;
+      for (double direction : cell.sweep_directions) {
+        for (SweepPattern& pattern : generator.patterns(cell.polygon, direction, transition)) {
+          cluster.push_back(static_cast<int>(patterns.size()) + 2);
+          patterns.push_back(std::move(pattern));
+        }
       }
+      clusters.push_back(std::move(cluster));
     }
-    clusters.push_back(std::move(cluster));
   }
   {
     std::ostringstream summary;

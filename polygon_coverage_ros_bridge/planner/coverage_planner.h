@@ -57,6 +57,20 @@ class CoveragePlanner {
   CoveragePlan plan(const PolygonWithHoles& free_area, const Point2& start, const Point2& goal,
                     const StageCallback& on_stage = {}) const;
 
+  /// As plan(), covering only the parts of the offset free area inside `coverage_region`
+  /// (replanning, issue 8: the area still to see). The parts, however many, are swept in
+  /// one generalized TSP; transitions use the whole offset free area. With nothing to
+  /// cover, the path goes from start to goal.
+  CoveragePlan planRegion(const PolygonWithHoles& free_area,
+                          const std::vector<PolygonWithHoles>& coverage_region, const Point2& start,
+                          const Point2& goal, const StageCallback& on_stage = {}) const;
+
+ private:
+  /// Both entry points: the whole offset free area when `coverage_region` is null.
+  CoveragePlan planParts(const PolygonWithHoles& free_area,
+                         const std::vector<PolygonWithHoles>* coverage_region, const Point2& start,
+                         const Point2& goal, const StageCallback& on_stage) const;
+
  private:
   PlannerParameters parameters_;
 };

@@ -26,7 +26,20 @@ struct PlannerParameters {
   double arc_sampling_distance = 0.1;                ///< m
   double rotation_sampling_angle = 0.2;              ///< rad
   std::string replanning_method = "footprint";       ///< "convex_hull", "concave_hull", "footprint"
-  double alpha = 2.0;                                ///< m, alpha-shape parameter
+  double replanning_sliver_fraction =
+      0.2;                           ///< remaining parts narrower than this x sweep spacing go
+  double replanning_min_area = 1.0;  ///< m^2, smaller remaining parts go
+  double replanning_simplify_tolerance = 0.1;  ///< m, boundary simplification of the remaining area
+  double alpha = 2.0;                          ///< m, alpha-shape parameter
+  // The robot model of `coverage_tool simulate` and auv_simulator (TrajectoryFollower).
+  double yaw_gain = 5.0;             ///< 1/s: yaw-rate command per rad of heading error
+  double position_gain = 1.5;        ///< 1/s: surge-speed command per m to the target
+  double position_tolerance = 0.05;  ///< m: a position target counts as reached within it
+  double yaw_tolerance = 0.05;       ///< rad: a turn-in-place target is reached within it
+  double current_x = 0.0;            ///< m/s: constant water current along x
+  double current_y = 0.0;            ///< m/s: constant water current along y
+  double sim_dt = 0.1;               ///< s: simulation time step
+  double sim_time_limit = 36000.0;   ///< s: simulated time after which a run gives up
 };
 
 }  // namespace kinematic_coverage::core

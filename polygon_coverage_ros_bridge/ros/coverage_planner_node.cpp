@@ -166,14 +166,8 @@ bool CoveragePlannerNode::plan(std::string& message) {
 
 void CoveragePlannerNode::publishStatus(const std::string& stage, bool success,
                                         const std::string& message, double duration_s) {
-  kinematic_coverage::PlanStatus status;
-  status.header.stamp = ros::Time::now();
-  status.header.frame_id = polygon_ ? polygon_->header.frame_id : std::string();
-  status.stage = stage;
-  status.success = success;
-  status.message = message;
-  status.duration_s = duration_s;
-  status_publisher_.publish(status);
+  status_publisher_.publish(statusMessage(stage, success, message, duration_s,
+                                          polygon_ ? polygon_->header.frame_id : std::string()));
 }
 
 }  // namespace kinematic_coverage::nodes

@@ -104,6 +104,19 @@ nav_msgs::Path toPath(const std::vector<core::TrajectoryPose>& poses,
   return path;
 }
 
+::kinematic_coverage::PlanStatus statusMessage(const std::string& stage, bool success,
+                                               const std::string& message, double duration_s,
+                                               const std::string& frame_id) {
+  ::kinematic_coverage::PlanStatus status;
+  status.header.stamp = ros::Time::now();
+  status.header.frame_id = frame_id;
+  status.stage = stage;
+  status.success = success;
+  status.message = message;
+  status.duration_s = duration_s;
+  return status;
+}
+
 double yawOf(const geometry_msgs::Quaternion& orientation) {
   tf2::Quaternion quaternion;
   tf2::fromMsg(orientation, quaternion);

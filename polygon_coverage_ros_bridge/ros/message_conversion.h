@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "kinematic_coverage/PlanStatus.h"
 #include "kinematic_coverage/PolygonWithHolesStamped.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
@@ -40,6 +41,11 @@ geometry_msgs::PoseArray toPoseArray(const std::vector<core::TrajectoryPose>& po
 /// planning), each pose stamped with that time plus its planned time offset t.
 nav_msgs::Path toPath(const std::vector<core::TrajectoryPose>& poses,
                       const std_msgs::Header& header);
+
+/// A `~status` message (INTERFACE section 2) stamped now, in `frame_id`.
+::kinematic_coverage::PlanStatus statusMessage(const std::string& stage, bool success,
+                                               const std::string& message, double duration_s,
+                                               const std::string& frame_id);
 
 /// The yaw of a quaternion message (0 for a zero quaternion).
 double yawOf(const geometry_msgs::Quaternion& orientation);

@@ -11,6 +11,8 @@
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_command.h"
 #include "polygon_coverage_ros_bridge/mission/evaluate_command.h"
 #include "polygon_coverage_ros_bridge/mission/plan_command.h"
+#include "polygon_coverage_ros_bridge/mission/replan_command.h"
+#include "polygon_coverage_ros_bridge/mission/simulate_command.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -26,10 +28,11 @@ const char* const kUsage =
     "      plan a coverage path: DIR/waypoints.csv, trajectory.csv, metrics.json, plot.png\n"
     "  evaluate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value ...]\n"
     "      coverage of a trajectory (x,y,yaw[,t,kind] CSV): DIR/metrics.json, DIR/plot.png\n"
-    "  replan MISSION.yaml --updated UPDATED.yaml --visited FILE.csv --out DIR\n"
-    "      replan the remaining area after obstacles moved (not available yet: issue 8)\n"
+    "  replan MISSION.yaml --updated UPDATED.yaml --visited FILE.csv --out DIR [--set ...]\n"
+    "      replan the remaining area after obstacles moved: the files of plan and\n"
+    "      DIR/remaining.yaml\n"
     "  simulate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value ...]\n"
-    "      a robot model follows a trajectory (not available yet: issue 9)\n"
+    "      a robot model follows a trajectory: DIR/actual.csv, metrics.json, plot.png\n"
     "  gtsp INSTANCE.gtsp [--seed N] [--time-limit S]\n"
     "      solve a GTSPLIB instance; prints one JSON line\n"
     "Run coverage_tool COMMAND --help for a command's options.\n"
@@ -63,10 +66,12 @@ int runCommand(const std::vector<std::string>& args) {
     return kExitSuccess;
   }
   if (command == "replan") {
-    throw InvalidInputError("not available yet: coverage_tool replan arrives with issue 8");
+    ReplanCommand().run(rest, std::cout, std::cerr);
+    return kExitSuccess;
   }
   if (command == "simulate") {
-    throw InvalidInputError("not available yet: coverage_tool simulate arrives with issue 9");
+    SimulateCommand().run(rest, std::cout, std::cerr);
+    return kExitSuccess;
   }
   throw InvalidInputError("unknown command '" + command + "' (see coverage_tool --help)");
 }

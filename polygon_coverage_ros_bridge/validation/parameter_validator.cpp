@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -61,7 +62,42 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   requirePositive("rotation_sampling_angle", p.rotation_sampling_angle, "rad");
   requireOneOf("replanning_method", p.replanning_method,
                {"convex_hull", "concave_hull", "footprint"});
+  if (!(std::isfinite(p.replanning_sliver_fraction) && p.replanning_sliver_fraction >= 0.0 &&
+        p.replanning_sliver_fraction < 1.0)) {
+    throw InvalidInputError(
+        "replanning_sliver_fraction = " + formatNumber(p.replanning_sliver_fraction) +
+        " is out of range: it must be in [0, 1)");
+  }
+  for (const auto& [name, value, unit] :
+       {std::tuple<const char*, double, const char*>{"replanning_min_area", p.replanning_min_area,
+                                                     "m^2"},
+        {"replanning_simplify_tolerance", p.replanning_simplify_tolerance, "m"}}) {
+    if (!(std::isfinite(value) && value >= 0.0)) {
+      throw InvalidInputError(std::string(name) + " = " + formatNumber(value) +
+                              " is out of range: it must be a finite number >= 0 (" + unit + ")");
+    }
+  }
   requirePositive("alpha", p.alpha, "m");
+  requirePositive("yaw_gain", p.yaw_gain, "1/s");
+  requirePositive("position_gain", p.position_gain, "1/s");
+  requirePositive("position_tolerance", p.position_tolerance, "m");
+  requireOpenAngle("yaw_tolerance", p.yaw_tolerance);
+  for (const auto& [name, value] :
+       {std::pair<const char*, double>{"current_x", p.current_x}, {"current_y", p.current_y}}) {
+    if (!std::isfinite(value)) {
+      throw InvalidInputError(std::string(name) + " = " + formatNumber(value) +
+                              " is out of range: it must be a finite number (m/s)");
+    }
+  }
+  requirePositive("sim_dt", p.sim_dt, "s");
+  requirePositive("sim_time_limit", p.sim_time_limit, "s");
+  // The discrete yaw controller turns yaw_gain * sim_dt of the heading error per step: above
+  // 1 it overshoots the heading it aims at and oscillates.
+  if (p.yaw_gain * p.sim_dt > 1.0) {
+    throw InvalidInputError("yaw_gain = " + formatNumber(p.yaw_gain) +
+                            " with sim_dt = " + formatNumber(p.sim_dt) +
+                            " is out of range: yaw_gain * sim_dt must be <= 1");
+  }
 }
 
 }  // namespace kinematic_coverage::core

@@ -8,7 +8,9 @@ namespace kinematic_coverage::core {
 /// sensor_distance, v_max, a_max, yaw_rate_max, the sampling distances and angle,
 /// lateral_footprint and alpha > 0; wall_distance >= 0; lateral_overlap in [0, 1);
 /// lateral_fov and onward_fov in (0, pi); every number finite; every name-valued
-/// parameter one of its values.
+/// parameter one of its values. The robot model's yaw_gain, position_gain,
+/// position_tolerance, sim_dt and sim_time_limit > 0, yaw_tolerance in (0, pi), the
+/// current finite, and yaw_gain * sim_dt <= 1.
 class ParameterValidator {
  public:
   /// Throws InvalidInputError naming the first parameter out of range, its value and the

@@ -83,7 +83,18 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"arc_sampling_distance", "0.05"},
       {"rotation_sampling_angle", "0.1"},
       {"replanning_method", "convex_hull"},
-      {"alpha", "6"}};
+      {"replanning_sliver_fraction", "0.3"},
+      {"replanning_min_area", "2.5"},
+      {"replanning_simplify_tolerance", "0.25"},
+      {"alpha", "6"},
+      {"yaw_gain", "3"},
+      {"position_gain", "0.8"},
+      {"position_tolerance", "0.2"},
+      {"yaw_tolerance", "0.1"},
+      {"current_x", "-0.05"},
+      {"current_y", "0.15"},
+      {"sim_dt", "0.2"},
+      {"sim_time_limit", "600"}};
   EXPECT_EQ(values.size(), MissionFileReader::parameterNames().size());
   std::string yaml = base;
   for (const auto& [key, value] : values) yaml += key + ": " + value + "\n";
@@ -97,6 +108,9 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.sensor_model, "line");
   EXPECT_EQ(p.lateral_fov, 1.1);
   EXPECT_EQ(p.onward_fov, 0.3);
+  EXPECT_EQ(p.replanning_sliver_fraction, 0.3);
+  EXPECT_EQ(p.replanning_min_area, 2.5);
+  EXPECT_EQ(p.replanning_simplify_tolerance, 0.25);
   EXPECT_EQ(p.lateral_footprint, 4.5);
   EXPECT_EQ(p.sensor_distance, 7.0);
   EXPECT_EQ(p.lateral_overlap, 0.25);
@@ -107,6 +121,14 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.rotation_sampling_angle, 0.1);
   EXPECT_EQ(p.replanning_method, "convex_hull");
   EXPECT_EQ(p.alpha, 6.0);
+  EXPECT_EQ(p.yaw_gain, 3.0);
+  EXPECT_EQ(p.position_gain, 0.8);
+  EXPECT_EQ(p.position_tolerance, 0.2);
+  EXPECT_EQ(p.yaw_tolerance, 0.1);
+  EXPECT_EQ(p.current_x, -0.05);
+  EXPECT_EQ(p.current_y, 0.15);
+  EXPECT_EQ(p.sim_dt, 0.2);
+  EXPECT_EQ(p.sim_time_limit, 600.0);
 }
 
 TEST(MissionFileReader, AppliesOverridesAfterTheFile) {
@@ -262,6 +284,14 @@ TEST(DefaultYaml, EqualsTheBuiltInDefaults) {
   EXPECT_EQ(loaded.rotation_sampling_angle, d.rotation_sampling_angle);
   EXPECT_EQ(loaded.replanning_method, d.replanning_method);
   EXPECT_EQ(loaded.alpha, d.alpha);
+  EXPECT_EQ(loaded.yaw_gain, d.yaw_gain);
+  EXPECT_EQ(loaded.position_gain, d.position_gain);
+  EXPECT_EQ(loaded.position_tolerance, d.position_tolerance);
+  EXPECT_EQ(loaded.yaw_tolerance, d.yaw_tolerance);
+  EXPECT_EQ(loaded.current_x, d.current_x);
+  EXPECT_EQ(loaded.current_y, d.current_y);
+  EXPECT_EQ(loaded.sim_dt, d.sim_dt);
+  EXPECT_EQ(loaded.sim_time_limit, d.sim_time_limit);
   // Every parameter is written out, not just defaulted.
   std::ifstream in(path);
   std::stringstream text;

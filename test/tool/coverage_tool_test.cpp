@@ -140,9 +140,8 @@ TEST(CoverageTool, RejectsBadCommandLines) {
   expectInvalid("plan a.yaml b.yaml --out x", "one mission file expected");
   expectInvalid("plan a.yaml --bogus --out x", "unknown option '--bogus'");
   expectInvalid("plan '" + scratchDir() + "/missing.yaml' --out x", "missing.yaml: no such file");
-  expectInvalid("replan m.yaml", "not available yet: coverage_tool replan arrives with issue 8");
-  expectInvalid("simulate m.yaml",
-                "not available yet: coverage_tool simulate arrives with issue 9");
+  expectInvalid("replan m.yaml", "--updated UPDATED.yaml is required");
+  expectInvalid("simulate m.yaml", "--trajectory FILE.csv is required");
 }
 
 TEST(CoverageTool, PrintsHelp) {
@@ -366,6 +365,176 @@ TEST(CoverageTool, EvaluateRejectsBadInputWithOneLine) {
   const ToolRun help = runTool("evaluate --help");
   EXPECT_EQ(help.exit_status, 0);
   EXPECT_NE(help.out.find("--trajectory FILE.csv"), std::string::npos);
+}
+
+/// The keys of a one-line JSON object and of its nested objects, in order.
+std::vector<std::string> jsonKeys(const std::string& json) {
+  std::vector<std::string> keys;
+  for (std::size_t at = json.find('"'); at != std::string::npos; at = json.find('"', at)) {
+    const std::size_t end = json.find('"', at + 1);
+    keys.push_back(json.substr(at + 1, end - at - 1));
+    at = end + 1;
+  }
+  return keys;
+}
+
+/// Issue 9: the robot model follows plan's trajectory; simulate writes actual.csv, the
+/// metrics.json keys of INTERFACE section 7 and plot.png.
+TEST(CoverageTool, SimulatesPlansTrajectoryAndWritesItsFiles) {
+  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml";
+  const std::string plan_dir = scratchDir() + "/simulate_plan_out";
+  const std::string out_dir = scratchDir() + "/simulate_out";
+  std::filesystem::remove_all(plan_dir);
+  std::filesystem::remove_all(out_dir);
+  ASSERT_EQ(runTool("plan '" + lake + "' --out '" + plan_dir + "'").exit_status, 0);
+  const std::string trajectory = plan_dir + "/trajectory.csv";
+  const ToolRun run =
+      runTool("simulate '" + lake + "' --trajectory '" + trajectory + "' --out '" + out_dir + "'");
+  ASSERT_EQ(run.exit_status, 0) << (run.err_lines.empty() ? "" : run.err_lines[0]);
+  EXPECT_TRUE(run.err_lines.empty()) << run.err_lines.front();
+  const std::vector<std::string> out_lines = lines(run.out);
+  ASSERT_FALSE(out_lines.empty());
+  EXPECT_EQ(out_lines.back(), "wrote " + out_dir + "/actual.csv " + out_dir + "/metrics.json " +
+                                  out_dir + "/plot.png");
+  EXPECT_EQ(readText(out_dir + "/plot.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
+
+  const std::string json = readText(out_dir + "/metrics.json");
+  EXPECT_EQ(jsonKeys(json), (std::vector<std::string>{
+                                "traversal_time_s", "tracking_error_sum_m", "tracking_error_mean_m",
+                                "tracking_error_percentiles_m", "1", "5", "10", "25", "50", "75",
+                                "90", "95", "99", "coverage_percent", "coverage_loss_percent"}))
+      << json;
+  double previous = 0.0;
+  for (const char* percentile : {"1", "5", "10", "25", "50", "75", "90", "95", "99"}) {
+    const double value = metric(json, percentile);
+    EXPECT_GE(value, previous) << percentile;
+    previous = value;
+  }
+  EXPECT_LE(metric(json, "tracking_error_mean_m"), metric(json, "99"));
+  EXPECT_NEAR(metric(json, "coverage_percent") + metric(json, "coverage_loss_percent"), 100.0,
+              1e-9);
+  EXPECT_GT(metric(json, "coverage_percent"), 99.0);
+
+  // actual.csv: a row per step from the trajectory's first pose at t = 0 to the last at
+  // traversal_time_s, sim_dt apart; the error sum is the mean times the steps.
+  const std::vector<std::string> actual = lines(readText(out_dir + "/actual.csv"));
+  ASSERT_GT(actual.size(), 100u);
+  EXPECT_EQ(actual[0], "t,x,y,yaw");
+  const std::vector<std::string> desired = lines(readText(trajectory));
+  const std::string first_pose = desired[1].substr(0, desired[1].rfind(','));
+  EXPECT_EQ(actual[1], first_pose);
+  const double last_t = std::stod(actual.back().substr(0, actual.back().find(',')));
+  EXPECT_DOUBLE_EQ(last_t, metric(json, "traversal_time_s"));
+  EXPECT_NEAR(last_t, 0.1 * static_cast<double>(actual.size() - 2), 1e-6);
+  EXPECT_NEAR(metric(json, "tracking_error_sum_m"),
+              metric(json, "tracking_error_mean_m") * static_cast<double>(actual.size() - 2),
+              1e-6 * metric(json, "tracking_error_sum_m"));
+
+  // --set reaches the robot: a current makes it track worse.
+  const ToolRun drift =
+      runTool("simulate '" + lake + "' --trajectory '" + trajectory + "' --out '" + out_dir +
+              "' --set current_x=0.2 --set current_y=0.1");
+  ASSERT_EQ(drift.exit_status, 0);
+  EXPECT_GT(metric(readText(out_dir + "/metrics.json"), "tracking_error_mean_m"),
+            10.0 * metric(json, "tracking_error_mean_m"));
+}
+
+TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {
+  const std::string path = writeMission("simulate_ok", mission(kSquareWithHole));
+  const std::string good = writeTrajectory("simulate_good", "x,y,yaw\n5,5,0\n9,5,0\n");
+  const std::string out_dir = scratchDir() + "/simulate_invalid_out";
+  std::filesystem::remove_all(out_dir);
+  const auto simulate = [&](const std::string& trajectory, const std::string& options,
+                            const std::string& expected) {
+    expectInvalid("simulate '" + path + "' --trajectory '" + trajectory + "' --out '" + out_dir +
+                      "' " + options,
+                  expected);
+    EXPECT_FALSE(std::filesystem::exists(out_dir + "/actual.csv"));
+    EXPECT_FALSE(std::filesystem::exists(out_dir + "/metrics.json"));
+  };
+  simulate(scratchDir() + "/missing.csv", "", "missing.csv: no such file");
+  simulate(writeTrajectory("simulate_bad_row", "x,y,yaw\n5,5,0\n6,abc,0\n"), "",
+           "simulate_bad_row.csv:3: column y: 'abc' is not a number");
+  simulate(writeTrajectory("simulate_empty", "x,y,yaw\n"), "",
+           "simulate_empty.csv: the file has no rows");
+  simulate(good, "--set sim_dt=0", "sim_dt = 0 is out of range: it must be a finite number > 0");
+  simulate(good, "--set yaw_gain=20",
+           "yaw_gain = 20 with sim_dt = 0.1 is out of range: yaw_gain * sim_dt must be <= 1");
+  simulate(good, "--set current_x=.nan", "current_x: the value '.nan' is not finite");
+  simulate(good, "--set sim_time_limit=1e9",
+           "sim_time_limit = 1000000000 s with sim_dt = 0.1 s is more than the limit of 5000000 "
+           "simulation steps");
+  // An impossible request: a current faster than the robot, against its way.
+  simulate(good, "--set current_x=-1 --set sim_time_limit=60",
+           "did not reach the last pose within sim_time_limit = 60 s (it was driving to pose 2 "
+           "of 2)");
+  expectInvalid("simulate '" + path + "' --out '" + out_dir + "'",
+                "--trajectory FILE.csv is required");
+  expectInvalid("simulate '" + path + "' --trajectory '" + good + "'", "--out DIR is required");
+  expectInvalid("simulate '" + path + "' --trajectory '" + good + "' --out x --visited y",
+                "unknown option '--visited'");
+  const std::string walled =
+      writeMission("simulate_walled", mission(kSquare, "wall_distance: 20\n"));
+  expectInvalid("simulate '" + walled + "' --trajectory '" + good + "' --out '" + out_dir + "'",
+                "the offset free area is empty");
+  EXPECT_FALSE(std::filesystem::exists(out_dir));
+  const ToolRun help = runTool("simulate --help");
+  EXPECT_EQ(help.exit_status, 0);
+  EXPECT_NE(help.out.find("--trajectory FILE.csv"), std::string::npos);
+}
+
+/// Issue 8 end to end: the lake mission followed for 40 % of its trajectory, then both
+/// obstacles moved by 2 m; `replan` writes the files of plan and remaining.yaml, starts at
+/// the last visited pose and, with the visited poses, sees nearly all of the free area.
+TEST(CoverageTool, ReplansTheLakeDriftScenario) {
+  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml";
+  const std::string plan_dir = scratchDir() + "/replan_plan";
+  const std::string out_dir = scratchDir() + "/replan_out";
+  std::filesystem::remove_all(out_dir);
+  ASSERT_EQ(runTool("plan '" + lake + "' --out '" + plan_dir + "'").exit_status, 0);
+  const std::vector<std::string> trajectory = lines(readText(plan_dir + "/trajectory.csv"));
+  const std::string visited = scratchDir() + "/visited.csv";
+  {
+    std::ofstream file(visited);
+    for (std::size_t i = 0; i < trajectory.size() * 4 / 10; ++i) file << trajectory[i] << "\n";
+  }
+  const std::string updated =
+      writeMission("updated",
+                   "polygon:\n  hull: [[0, 0], [30, 0], [30, 30], [0, 30]]\n  holes:\n"
+                   "    - [[9, 10], [14, 10], [14, 16], [9, 16]]\n"
+                   "    - [[20, 18], [25, 19], [26, 24], [21, 26], [18, 22]]\n");
+  const ToolRun run = runTool("replan '" + lake + "' --updated '" + updated + "' --visited '" +
+                              visited + "' --out '" + out_dir + "'");
+  ASSERT_EQ(run.exit_status, 0) << (run.err_lines.empty() ? run.out : run.err_lines[0]);
+  for (const char* file :
+       {"waypoints.csv", "trajectory.csv", "metrics.json", "plot.png", "remaining.yaml"}) {
+    EXPECT_TRUE(std::filesystem::exists(out_dir + "/" + file)) << file;
+  }
+  const std::string metrics = readText(out_dir + "/metrics.json");
+  EXPECT_GE(metric(metrics, "combined_coverage_percent"), 99.0);
+  EXPECT_GT(metric(metrics, "min_obstacle_clearance_m"), 0.0);
+  // The new path starts where the robot stopped.
+  const std::vector<std::string> last_visited = lines(readText(visited));
+  const std::vector<std::string> waypoints = lines(readText(out_dir + "/waypoints.csv"));
+  ASSERT_GE(waypoints.size(), 3u);
+  std::istringstream last_row(last_visited.back());
+  std::istringstream first_row(waypoints[1]);
+  double t = 0, x = 0, y = 0, wx = 0, wy = 0;
+  char comma = 0;
+  last_row >> t >> comma >> x >> comma >> y;
+  first_row >> wx >> comma >> wy;
+  EXPECT_NEAR(wx, x, 1e-6);
+  EXPECT_NEAR(wy, y, 1e-6);
+  EXPECT_EQ(readText(out_dir + "/remaining.yaml").rfind("- hull: [[", 0), 0u);
+
+  // Invalid input: one line, exit 2.
+  expectInvalid("replan '" + lake + "' --updated '" + updated + "' --out '" + out_dir + "'",
+                "--visited");
+  const std::string empty = scratchDir() + "/empty_visited.csv";
+  std::ofstream(empty) << "x,y,yaw\n";
+  expectInvalid("replan '" + lake + "' --updated '" + updated + "' --visited '" + empty +
+                    "' --out '" + out_dir + "'",
+                "");
 }
 
 }  // namespace

@@ -93,5 +93,34 @@ TEST(ParameterValidator, RejectsUnknownNames) {
             "replanning_method = 'alpha' is not one of: convex_hull, concave_hull, footprint");
 }
 
+TEST(ParameterValidator, ChecksTheRobotModelsRanges) {
+  for (const auto& [name, member] :
+       std::vector<std::pair<std::string, double PlannerParameters::*>>{
+           {"yaw_gain", &PlannerParameters::yaw_gain},
+           {"position_gain", &PlannerParameters::position_gain},
+           {"position_tolerance", &PlannerParameters::position_tolerance},
+           {"sim_dt", &PlannerParameters::sim_dt},
+           {"sim_time_limit", &PlannerParameters::sim_time_limit}}) {
+    const std::string message = errorOf([&](PlannerParameters& p) { p.*member = 0.0; });
+    EXPECT_EQ(message.rfind(name + " = 0 is out of range: it must be a finite number > 0", 0), 0u)
+        << message;
+  }
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.yaw_tolerance = M_PI; }),
+            "yaw_tolerance = 3.141592654 is out of range: it must be in (0, pi) rad");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_y = std::nan(""); }),
+            "current_y = nan is out of range: it must be a finite number (m/s)");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_x = -3.0; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) {
+              p.yaw_gain = 4.0;
+              p.sim_dt = 0.5;
+            }),
+            "yaw_gain = 4 with sim_dt = 0.5 is out of range: yaw_gain * sim_dt must be <= 1");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) {
+              p.yaw_gain = 10.0;
+              p.sim_dt = 0.1;
+            }),
+            "");
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core

@@ -27,6 +27,9 @@ constexpr PlotColour kStartColour{26, 152, 80};
 constexpr PlotColour kGoalColour{123, 50, 148};
 constexpr PlotColour kTextColour{25, 25, 25};
 constexpr PlotColour kSubtitleColour{70, 70, 70};
+/// The "plasma" colour map at 0, 1/4, 1/2, 3/4 and 1, for the tracking error.
+constexpr std::array<PlotColour, 5> kErrorColours{
+    {{13, 8, 135}, {126, 3, 168}, {204, 71, 120}, {248, 149, 64}, {240, 249, 33}}};
 
 /// The heatmap image's longest side, pixels: larger grids are sampled down (nearest cell),
 /// which keeps memory bounded and is still finer than any plot box.
@@ -121,6 +124,18 @@ void checkData(const CoveragePlotData& data) {
   if (data.heatmap) checkHeatmap(*data.heatmap);
   checkPoses(data.waypoints, "waypoint path");
   checkPoses(data.trajectory, "trajectory");
+  checkPoses(data.actual_path, "actual path");
+  if (data.actual_errors.size() != data.actual_path.size()) {
+    throw InvalidInputError("coverage plot: " + std::to_string(data.actual_errors.size()) +
+                            " actual errors for " + std::to_string(data.actual_path.size()) +
+                            " actual poses");
+  }
+  for (std::size_t i = 0; i < data.actual_errors.size(); ++i) {
+    if (!std::isfinite(data.actual_errors[i]) || data.actual_errors[i] < 0.0) {
+      throw InvalidInputError("coverage plot: actual error " + std::to_string(i) +
+                              " must be finite and >= 0");
+    }
+  }
   if (data.start && !isFinite(*data.start)) {
     throw InvalidInputError("coverage plot: non-finite start");
   }
@@ -150,6 +165,7 @@ Bounds drawnBounds(const CoveragePlotData& data) {
   }
   for (const Pose2& pose : data.waypoints) bounds.add(pose.position());
   for (const Pose2& pose : data.trajectory) bounds.add(pose.position());
+  for (const Pose2& pose : data.actual_path) bounds.add(pose.position());
   if (data.start) bounds.add(*data.start);
   if (data.goal) bounds.add(*data.goal);
   return bounds;
@@ -412,6 +428,35 @@ void drawTrajectory(cairo_t* cr, const CoveragePlotLayout& layout,
   cairo_fill(cr);
 }
 
+/// The least top of the tracking error's colour scale, metres: millimetre deviations of a
+/// well-tracked path stay dark instead of spanning the whole colour map.
+constexpr double kMinErrorScale = 0.05;
+
+/// The top of the tracking error's colour scale: the largest error of the actual path,
+/// at least kMinErrorScale.
+double errorScale(const std::vector<double>& errors) {
+  double largest = 0.0;
+  for (const double error : errors) largest = std::max(largest, error);
+  return std::max(largest, kMinErrorScale);
+}
+
+/// The actual path, each piece coloured by its ends' mean tracking error.
+void drawActualPath(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
+                    const Scale& scale) {
+  if (data.actual_path.size() < 2) return;
+  const double top = errorScale(data.actual_errors);
+  cairo_set_line_width(cr, 2.4 * scale.factor);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (std::size_t i = 1; i < data.actual_path.size(); ++i) {
+    const double error = 0.5 * (data.actual_errors[i - 1] + data.actual_errors[i]);
+    setColour(cr, CoveragePlot::errorColour(error / top));
+    moveTo(cr, layout, data.actual_path[i - 1].position());
+    lineTo(cr, layout, data.actual_path[i].position());
+    cairo_stroke(cr);
+  }
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+}
+
 enum class Align { kStart, kCentre, kEnd };
 
 void selectFont(cairo_t* cr, double size, bool bold) {
@@ -574,7 +619,43 @@ void drawTitle(cairo_t* cr, const CoveragePlotLayout& layout, const std::vector<
   }
 }
 
-/// The key to the lines and markers, then the heatmap's colour bar, right of the box.
+/// The tracking error's colour bar, from 0 at the bottom to the largest error at the top,
+/// with its title at `y` in the legend column at `x`.
+void drawErrorBar(cairo_t* cr, const CoveragePlotData& data, double x, double y,
+                  const Scale& scale) {
+  const double f = scale.factor;
+  selectFont(cr, scale.legend, true);
+  setColour(cr, kTextColour);
+  showText(cr, "tracking error [m]", x, y, Align::kStart);
+  y += 0.8 * 25.0 * f;
+  const double bar_width = 22.0 * f;
+  const double bar_height = 120.0 * f;
+  const double top = errorScale(data.actual_errors);
+  cairo_pattern_t* gradient = cairo_pattern_create_linear(0.0, y + bar_height, 0.0, y);
+  for (std::size_t i = 0; i < kErrorColours.size(); ++i) {
+    const PlotColour& colour = kErrorColours[i];
+    cairo_pattern_add_color_stop_rgb(gradient, static_cast<double>(i) / (kErrorColours.size() - 1),
+                                     colour.red / 255.0, colour.green / 255.0, colour.blue / 255.0);
+  }
+  cairo_rectangle(cr, x, y, bar_width, bar_height);
+  cairo_set_source(cr, gradient);
+  cairo_fill(cr);
+  cairo_pattern_destroy(gradient);
+  setColour(cr, kOutlineColour);
+  cairo_set_line_width(cr, 1.0 * f);
+  cairo_rectangle(cr, x, y, bar_width, bar_height);
+  cairo_stroke(cr);
+  selectFont(cr, scale.legend, false);
+  setColour(cr, kTextColour);
+  for (const double share : {0.0, 0.5, 1.0}) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.2g", share * top);
+    showText(cr, text, x + bar_width + 8.0 * f, y + (1.0 - share) * bar_height, Align::kStart);
+  }
+}
+
+/// The key to the lines and markers, then the colour bars of the heatmap and of the
+/// tracking error, right of the box.
 void drawLegend(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
                 const Scale& scale) {
   const double f = scale.factor;
@@ -599,6 +680,16 @@ void drawLegend(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlo
     arrowPath(cr, Point2(x + 0.5 * sample_width, y), 0.0, scale);
     cairo_fill(cr);
     label("trajectory");
+  }
+  if (data.actual_path.size() > 1) {
+    cairo_set_line_width(cr, 2.4 * f);
+    for (int piece = 0; piece < 4; ++piece) {
+      setColour(cr, CoveragePlot::errorColour(piece / 3.0));
+      cairo_move_to(cr, x + piece * sample_width / 4.0, y);
+      cairo_line_to(cr, x + (piece + 1) * sample_width / 4.0, y);
+      cairo_stroke(cr);
+    }
+    label("actual path");
   }
   if (!data.waypoints.empty()) {
     setColour(cr, kWaypointColour);
@@ -644,31 +735,33 @@ void drawLegend(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlo
     fillMarker(cr, kGoalColour, scale);
     label("goal");
   }
-  if (!data.heatmap) return;
-
-  y += 0.6 * row_height;
-  selectFont(cr, scale.legend, true);
-  setColour(cr, kTextColour);
-  showText(cr, "visits", x, y, Align::kStart);
-  y += 0.8 * row_height;
-  const double swatch_width = 22.0 * f;
-  const double swatch_height = 24.0 * f;
-  const std::array<const char*, kVisitColours.size()> names{"0  unseen", "1  seen once", "2", "3",
-                                                            "4+"};
-  const double bar_top = y;
-  selectFont(cr, scale.legend, false);
-  for (std::size_t i = kVisitColours.size(); i-- > 0;) {
-    cairo_rectangle(cr, x, y, swatch_width, swatch_height);
-    setColour(cr, kVisitColours[i]);
-    cairo_fill(cr);
+  if (data.heatmap) {
+    y += 0.6 * row_height;
+    selectFont(cr, scale.legend, true);
     setColour(cr, kTextColour);
-    showText(cr, names[i], x + swatch_width + 8.0 * f, y + 0.5 * swatch_height, Align::kStart);
-    y += swatch_height;
+    showText(cr, "visits", x, y, Align::kStart);
+    y += 0.8 * row_height;
+    const double swatch_width = 22.0 * f;
+    const double swatch_height = 24.0 * f;
+    const std::array<const char*, kVisitColours.size()> names{"0  unseen", "1  seen once", "2", "3",
+                                                              "4+"};
+    const double bar_top = y;
+    selectFont(cr, scale.legend, false);
+    for (std::size_t i = kVisitColours.size(); i-- > 0;) {
+      cairo_rectangle(cr, x, y, swatch_width, swatch_height);
+      setColour(cr, kVisitColours[i]);
+      cairo_fill(cr);
+      setColour(cr, kTextColour);
+      showText(cr, names[i], x + swatch_width + 8.0 * f, y + 0.5 * swatch_height, Align::kStart);
+      y += swatch_height;
+    }
+    setColour(cr, kOutlineColour);
+    cairo_set_line_width(cr, 1.0 * f);
+    cairo_rectangle(cr, x, bar_top, swatch_width, y - bar_top);
+    cairo_stroke(cr);
+    y += 0.6 * row_height;
   }
-  setColour(cr, kOutlineColour);
-  cairo_set_line_width(cr, 1.0 * f);
-  cairo_rectangle(cr, x, bar_top, swatch_width, y - bar_top);
-  cairo_stroke(cr);
+  if (data.actual_path.size() > 1) drawErrorBar(cr, data, x, y + 0.6 * row_height, scale);
 }
 
 }  // namespace
@@ -718,6 +811,7 @@ void CoveragePlot::writePng(const CoveragePlotData& data, const std::string& pat
   drawAreas(cr, layout, data, scale);
   drawWaypointPath(cr, layout, data.waypoints, scale);
   drawTrajectory(cr, layout, data.trajectory, options_.arrow_spacing, scale);
+  drawActualPath(cr, layout, data, scale);
   drawMarkers(cr, layout, data, scale);
   cairo_restore(cr);
 
@@ -735,6 +829,19 @@ void CoveragePlot::writePng(const CoveragePlotData& data, const std::string& pat
 
 PlotColour CoveragePlot::visitColour(std::uint16_t visits) {
   return kVisitColours[std::min<std::size_t>(visits, kVisitColours.size() - 1)];
+}
+
+PlotColour CoveragePlot::errorColour(double fraction) {
+  const double position =
+      std::clamp(std::isfinite(fraction) ? fraction : 0.0, 0.0, 1.0) * (kErrorColours.size() - 1);
+  const std::size_t below = std::min(static_cast<std::size_t>(position), kErrorColours.size() - 2);
+  const double t = position - static_cast<double>(below);
+  const auto mix = [&](std::uint8_t a, std::uint8_t b) {
+    return static_cast<std::uint8_t>(std::lround(a + t * (b - a)));
+  };
+  const PlotColour& low = kErrorColours[below];
+  const PlotColour& high = kErrorColours[below + 1];
+  return {mix(low.red, high.red), mix(low.green, high.green), mix(low.blue, high.blue)};
 }
 
 }  // namespace kinematic_coverage::core

@@ -27,6 +27,12 @@ struct CoveragePlotData {
   std::vector<Pose2> trajectory;
   std::optional<Point2> start;
   std::optional<Point2> goal;
+  /// The path a robot actually drove (coverage_tool simulate), drawn over the trajectory
+  /// as a polyline coloured by `actual_errors` (from 0 to the largest error, at least
+  /// 5 cm), with a colour bar of the error.
+  std::vector<Pose2> actual_path;
+  /// The tracking error at each pose of `actual_path`, metres, >= 0: one per pose.
+  std::vector<double> actual_errors;
   /// Lines above the plot: the first is the title (bold), the others key metrics.
   std::vector<std::string> title_lines;
 };
@@ -81,8 +87,9 @@ struct CoveragePlotLayout {
 
 /// Renders coverage plots to PNG files with cairo (`plot.png` of coverage_tool plan,
 /// evaluate and simulate, INTERFACE section 7): obstacles, the heatmap in discrete colours
-/// for 0, 1, 2, 3 and 4+ visits with its colour bar, paths, start and goal, title lines and
-/// axes in metres with an equal aspect ratio.
+/// for 0, 1, 2, 3 and 4+ visits with its colour bar, paths, start and goal, an actual path
+/// coloured by tracking error with its colour bar, title lines and axes in metres with an
+/// equal aspect ratio.
 class CoveragePlot {
  public:
   /// Throws InvalidInputError for a size out of range or a negative or non-finite arrow
@@ -95,13 +102,19 @@ class CoveragePlot {
 
   /// Renders `data` and writes it to `path` as PNG. Throws InvalidInputError for a hull
   /// with fewer than 3 vertices or no extent, a non-finite coordinate, a heatmap whose
-  /// grid is empty, non-finite or not columns x rows in size, and naming `path` when the
-  /// file cannot be written.
+  /// grid is empty, non-finite or not columns x rows in size, actual errors that are not
+  /// one finite value >= 0 per actual pose, and naming `path` when the file cannot be
+  /// written.
   void writePng(const CoveragePlotData& data, const std::string& path) const;
 
   /// The heatmap colour of a cell seen `visits` times: red for unseen, then light to dark
   /// for 1, 2, 3 and 4 or more.
   static PlotColour visitColour(std::uint16_t visits);
+
+  /// The colour of the actual path where its tracking error is `fraction` of the largest
+  /// error (clamped to [0, 1]): dark purple for no error through magenta and orange to
+  /// yellow for the largest (the "plasma" colour map).
+  static PlotColour errorColour(double fraction);
 
  private:
   CoveragePlotOptions options_;

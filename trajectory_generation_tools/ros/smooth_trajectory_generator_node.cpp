@@ -110,14 +110,7 @@ void SmoothTrajectoryGeneratorNode::generate() {
 
 void SmoothTrajectoryGeneratorNode::publishStatus(bool success, const std::string& message,
                                                   double duration_s, const std::string& frame_id) {
-  kinematic_coverage::PlanStatus status;
-  status.header.stamp = ros::Time::now();
-  status.header.frame_id = frame_id;
-  status.stage = "smooth";
-  status.success = success;
-  status.message = message;
-  status.duration_s = duration_s;
-  status_publisher_.publish(status);
+  status_publisher_.publish(statusMessage("smooth", success, message, duration_s, frame_id));
 }
 
 }  // namespace kinematic_coverage::nodes

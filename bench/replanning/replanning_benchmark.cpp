@@ -1,0 +1,74 @@
+// Issue 8's benchmark: replanning the lake drift scenario (the robot followed the first
+// 40 % of the lake_30x30 trajectory, then both obstacles moved by (2, 1) m) with each
+// replanning method: validation, cleaning, the remaining area, planning its parts, and
+// smoothing the new trajectory. Prints the median, minimum and maximum of N runs; the bar
+// is 500 ms for the footprint method.
+//
+//   replanning_benchmark [--runs N]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "test/replanning/drift_scenario.h"
+#include "trajectory_generation_tools/replanning/replanner.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace kinematic_coverage::core;
+  int runs = 21;
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::string(argv[i]) == "--runs") runs = std::max(1, std::atoi(argv[i + 1]));
+  }
+  try {
+    const testing::DriftScenario scenario = testing::lakeDriftScenario(0.4, {2.0, 1.0});
+    std::printf("lake_30x30 drift: %zu visited poses, holes moved by (2, 1) m, %d runs each\n",
+                scenario.visited.size(), runs);
+    std::printf(
+        "| method | remaining parts | remaining m^2 | waypoints | replan ms (median) | "
+        "smooth ms | total ms (median) | min ms | max ms "
+        "|\n|---|---|---|---|---|---|---|---|---|\n");
+    for (const char* method : {"footprint", "convex_hull", "concave_hull"}) {
+      PlannerParameters parameters = scenario.mission.parameters;
+      parameters.replanning_method = method;
+      std::vector<double> replan_ms, smooth_ms, total_ms;
+      ReplannedMission replanned;
+      for (int run = 0; run < runs; ++run) {
+        const Clock::time_point start = Clock::now();
+        replanned =
+            Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
+        replan_ms.push_back(millisecondsSince(start));
+        const Clock::time_point smooth_start = Clock::now();
+        const GeneratedTrajectory trajectory =
+            TrajectoryGenerator(parameters).generate(replanned.plan.waypoints, replanned.free_area);
+        smooth_ms.push_back(millisecondsSince(smooth_start));
+        total_ms.push_back(millisecondsSince(start));
+      }
+      auto median = [](std::vector<double> times) {
+        std::sort(times.begin(), times.end());
+        return times[times.size() / 2];
+      };
+      std::printf("| %s | %zu | %.1f | %zu | %.2f | %.2f | %.2f | %.2f | %.2f |\n", method,
+                  replanned.remaining.parts.size(), replanned.remaining.kept_area_m2,
+                  replanned.plan.waypoints.size(), median(replan_ms), median(smooth_ms),
+                  median(total_ms), *std::min_element(total_ms.begin(), total_ms.end()),
+                  *std::max_element(total_ms.begin(), total_ms.end()));
+    }
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "error: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

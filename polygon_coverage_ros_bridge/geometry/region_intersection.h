@@ -1,0 +1,18 @@
+#pragma once
+
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+
+namespace kinematic_coverage::core {
+
+/// The parts of `area` that lie in any of `regions` (exact Boolean operations, results
+/// rounded to doubles), each a polygon with a counter-clockwise hull and clockwise
+/// holes; parts smaller than `min_area` square metres are left out. Replanning covers
+/// only what is left to see (issue 8): the offset free area intersected with the
+/// remaining area. Throws InvalidInputError for non-finite coordinates.
+std::vector<PolygonWithHoles> intersectWithRegions(const PolygonWithHoles& area,
+                                                   const std::vector<PolygonWithHoles>& regions,
+                                                   double min_area);
+
+}  // namespace kinematic_coverage::core

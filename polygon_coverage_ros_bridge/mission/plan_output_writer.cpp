@@ -1,0 +1,102 @@
+#include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/command_line.h"
+#include "polygon_coverage_ros_bridge/mission/json_object.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
+#include "polygon_coverage_ros_bridge/validation/point_format.h"
+#include "trajectory_generation_tools/plot/coverage_plot.h"
+#include "trajectory_generation_tools/trajectory/trajectory_csv_writer.h"
+#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
+
+namespace kinematic_coverage::core {
+
+std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
+                                          const std::string& out_dir, std::ostream& out) {
+  const PlannerParameters& parameters = *request.parameters;
+  const PolygonWithHoles& free_area = *request.free_area;
+  const CoveragePlan& plan = *request.plan;
+
+  const auto stage_start = std::chrono::steady_clock::now();
+  const GeneratedTrajectory trajectory =
+      TrajectoryGenerator(parameters).generate(plan.waypoints, free_area);
+  const SmoothingStatistics& turns = trajectory.statistics;
+  out << (parameters.smoothing ? "smooth: " : "trajectory: ") << turns.turns_smoothed << " of "
+      << turns.turns_total << " turns smoothed (inner " << turns.inner << ", outer bisector "
+      << turns.outer_bisector << ", outer tangent " << turns.outer_tangent << "), "
+      << trajectory.poses.size() << " poses, " << formatNumber(trajectory.traversal_time_s)
+      << " s (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
+
+  // Coverage of the poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so
+  // that `coverage_tool evaluate` of that file reports the same figures.
+  std::vector<Pose2> poses;
+  poses.reserve(trajectory.poses.size());
+  for (const TrajectoryPose& pose : trajectory.poses) {
+    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
+  }
+  const TrajectoryCoverage coverage =
+      measureTrajectoryCoverage(free_area, plan.offset_free_area, parameters, poses);
+  out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
+      << ")" << std::endl;
+  std::optional<TrajectoryCoverage> combined;
+  if (request.visited) {
+    std::vector<Pose2> all = *request.visited;
+    all.insert(all.end(), poses.begin(), poses.end());
+    combined = measureTrajectoryCoverage(free_area, plan.offset_free_area, parameters, all);
+    out << "combined coverage: visited and new trajectory: " << coverageSummary(*combined) << " ("
+        << formatSeconds(combined->duration_s) << ")" << std::endl;
+  }
+
+  createOutputDirectory(out_dir);
+  const std::filesystem::path dir(out_dir);
+  const std::string waypoints_path = (dir / "waypoints.csv").string();
+  const std::string trajectory_path = (dir / "trajectory.csv").string();
+  const std::string metrics_path = (dir / "metrics.json").string();
+  const std::string plot_path = (dir / "plot.png").string();
+  WaypointCsvWriter().write(waypoints_path, plan.waypoints);
+  TrajectoryCsvWriter().write(trajectory_path, trajectory.poses);
+  JsonObject metrics;
+  metrics.set("planning_time_s", request.planning_time_s)
+      .set("cells", static_cast<double>(plan.cells.size()))
+      .set("waypoint_count", static_cast<double>(plan.waypoints.size()))
+      .set("path_length_m", plan.path_length_m)
+      .set("time_cost_s", plan.time_cost_s)
+      .set("trajectory_length_m", trajectory.trajectory_length_m)
+      .set("traversal_time_s", trajectory.traversal_time_s)
+      .set("max_curvature", trajectory.max_curvature)
+      .set("turns_total", static_cast<double>(turns.turns_total))
+      .set("turns_smoothed", static_cast<double>(turns.turns_smoothed));
+  setCoverageMetrics(coverage.report, metrics);
+  if (combined) metrics.set("combined_coverage_percent", combined->report.coverage_percent);
+  if (std::isfinite(trajectory.min_obstacle_clearance_m)) {
+    metrics.set("min_obstacle_clearance_m", trajectory.min_obstacle_clearance_m);
+  }
+  metrics.write(metrics_path);
+
+  CoveragePlotData plot;
+  plot.free_area = free_area;
+  plot.offset_free_area = plan.offset_free_area;
+  plot.heatmap = combined ? combined->heatmap : coverage.heatmap;
+  plot.waypoints = plan.waypoints;
+  plot.trajectory = poses;
+  plot.start = request.start;
+  plot.goal = request.goal;
+  std::ostringstream figures;
+  figures.precision(4);
+  const CoverageReport& shown = combined ? combined->report : coverage.report;
+  figures << (combined ? "coverage with visited " : "coverage ") << shown.coverage_percent
+          << " %  |  loss " << shown.coverage_loss_percent << " %  |  " << turns.turns_smoothed
+          << " of " << turns.turns_total << " turns smoothed  |  " << trajectory.trajectory_length_m
+          << " m  |  " << trajectory.traversal_time_s << " s";
+  plot.title_lines = {request.title, figures.str()};
+  CoveragePlot().writePng(plot, plot_path);
+  return {waypoints_path, trajectory_path, metrics_path, plot_path};
+}
+
+}  // namespace kinematic_coverage::core

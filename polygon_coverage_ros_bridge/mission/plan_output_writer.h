@@ -1,0 +1,36 @@
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+
+namespace kinematic_coverage::core {
+
+/// What `plan` and `replan` write about a plan.
+struct PlanOutputRequest {
+  const PlannerParameters* parameters = nullptr;
+  const PolygonWithHoles* free_area = nullptr;  ///< cleaned: collisions and coverage
+  const CoveragePlan* plan = nullptr;
+  double planning_time_s = 0.0;
+  Point2 start = Point2::Zero();
+  Point2 goal = Point2::Zero();
+  std::string title;  ///< the plot's first line
+  /// Replanning: the poses visited before the plan; metrics.json then also has
+  /// `combined_coverage_percent` (visited and new trajectory together), which the plot's
+  /// heatmap shows.
+  std::optional<std::vector<Pose2>> visited;
+};
+
+/// Smooths, samples and times the plan's trajectory (TrajectoryGenerator), measures its
+/// coverage, and writes DIR/waypoints.csv, DIR/trajectory.csv, DIR/metrics.json and
+/// DIR/plot.png (INTERFACE section 7), with one progress line per stage on `out`.
+/// Returns the written paths. Throws InvalidInputError when a file cannot be written.
+std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
+                                          const std::string& out_dir, std::ostream& out);
+
+}  // namespace kinematic_coverage::core

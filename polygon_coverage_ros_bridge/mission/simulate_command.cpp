@@ -1,0 +1,150 @@
+#include "polygon_coverage_ros_bridge/mission/simulate_command.h"
+
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "polygon_coverage_ros_bridge/mission/command_line.h"
+#include "polygon_coverage_ros_bridge/mission/json_object.h"
+#include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
+#include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
+#include "polygon_coverage_ros_bridge/mission/text_file_writer.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+#include "trajectory_generation_tools/plot/coverage_plot.h"
+#include "trajectory_generation_tools/simulation/robot_simulator.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// `actual.csv` (INTERFACE section 7): t,x,y,yaw of every recorded step.
+std::string actualCsv(const std::vector<SimulationStep>& steps) {
+  std::string text = "t,x,y,yaw\n";
+  for (const SimulationStep& step : steps) {
+    text += formatRoundTrip(step.t) + "," + formatRoundTrip(step.pose.x) + "," +
+            formatRoundTrip(step.pose.y) + "," + formatRoundTrip(step.pose.yaw) + "\n";
+  }
+  return text;
+}
+
+/// `tracking_error_percentiles_m`: "1" ... "99" to metres, as in Table 4.2.
+JsonObject percentileObject(const TrackingErrorStatistics& tracking) {
+  JsonObject percentiles;
+  for (std::size_t i = 0; i < kTrackingErrorPercentiles.size(); ++i) {
+    percentiles.set(std::to_string(kTrackingErrorPercentiles[i]), tracking.percentiles_m[i]);
+  }
+  return percentiles;
+}
+
+}  // namespace
+
+std::string SimulateCommand::usage() {
+  return "usage: coverage_tool simulate MISSION.yaml --trajectory FILE.csv --out DIR\n"
+         "                             [--set name=value ...]\n"
+         "  A robot model follows the trajectory's poses (a CSV file with a header row;\n"
+         "  columns x, y, yaw required, t and kind optional) from rest at the first pose,\n"
+         "  with the mission's robot parameters (v_max, a_max, yaw_rate_max, yaw_gain,\n"
+         "  position_gain, position_tolerance, yaw_tolerance, current_x, current_y, sim_dt,\n"
+         "  sim_time_limit), and writes DIR/actual.csv (t,x,y,yaw per step),\n"
+         "  DIR/metrics.json (traversal time, tracking error, coverage of the actual poses)\n"
+         "  and DIR/plot.png. --set overrides a parameter of config/default.yaml (the value\n"
+         "  is read as YAML), after the mission file.\n";
+}
+
+void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& out,
+                          std::ostream& err) const {
+  const CommandArguments arguments =
+      parseCommandArguments("simulate", args, {{"--trajectory", "FILE.csv"}, {"--out", "DIR"}});
+  if (arguments.help) {
+    out << usage();
+    return;
+  }
+  const std::string& trajectory_path = arguments.values.at("--trajectory");
+  const std::string& out_dir = arguments.values.at("--out");
+  const Mission mission = loadMission(arguments, out);
+
+  auto stage_start = std::chrono::steady_clock::now();
+  const PoseTable table = PoseCsvReader().read(trajectory_path);
+  std::vector<Pose2> desired;
+  desired.reserve(table.rows.size());
+  for (const PoseRecord& row : table.rows) desired.push_back(row.pose);
+  out << "read: " << trajectory_path << ": " << desired.size() << " poses ("
+      << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
+
+  // The free area and offset free area as `plan` makes them (INTERFACE section 3), for the
+  // coverage of the actual poses.
+  stage_start = std::chrono::steady_clock::now();
+  PolygonValidator().validate(mission.polygon);
+  const CleanedPolygon cleaned = PolygonCleaner().clean(mission.polygon);
+  const OffsetFreeArea offset =
+      computeOffsetFreeArea(cleaned.free_area, mission.parameters.wall_distance);
+  out << "area: free area " << area(cleaned.free_area) << " m^2, offset free area "
+      << area(offset.area) << " m^2 (" << formatSeconds(secondsSince(stage_start)) << ")"
+      << std::endl;
+
+  stage_start = std::chrono::steady_clock::now();
+  const SimulationResult simulation = RobotSimulator(mission.parameters).simulate(desired);
+  const TrackingErrorStatistics& tracking = simulation.tracking;
+  out << "simulate: reached the last of " << desired.size() << " poses after "
+      << simulation.traversal_time_s << " s in " << simulation.steps.size() - 1
+      << " steps; tracking error sum " << tracking.sum_m << " m, mean " << tracking.mean_m
+      << " m, 99th percentile " << tracking.percentiles_m.back() << " m ("
+      << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
+
+  std::vector<Pose2> actual;
+  std::vector<double> errors;
+  actual.reserve(simulation.steps.size());
+  errors.reserve(simulation.steps.size());
+  for (const SimulationStep& step : simulation.steps) {
+    actual.push_back(step.pose);
+    errors.push_back(step.tracking_error_m);
+  }
+  const TrajectoryCoverage coverage =
+      measureTrajectoryCoverage(cleaned.free_area, offset.area, mission.parameters, actual);
+  out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
+      << ")" << std::endl;
+
+  createOutputDirectory(out_dir);
+  const std::filesystem::path dir(out_dir);
+  const std::string actual_path = (dir / "actual.csv").string();
+  const std::string metrics_path = (dir / "metrics.json").string();
+  const std::string plot_path = (dir / "plot.png").string();
+  writeTextFile(actual_path, actualCsv(simulation.steps));
+  JsonObject metrics;
+  metrics.set("traversal_time_s", simulation.traversal_time_s)
+      .set("tracking_error_sum_m", tracking.sum_m)
+      .set("tracking_error_mean_m", tracking.mean_m)
+      .set("tracking_error_percentiles_m", percentileObject(tracking))
+      .set("coverage_percent", coverage.report.coverage_percent)
+      .set("coverage_loss_percent", coverage.report.coverage_loss_percent);
+  metrics.write(metrics_path);
+
+  CoveragePlotData plot;
+  plot.free_area = cleaned.free_area;
+  plot.offset_free_area = offset.area;
+  plot.heatmap = coverage.heatmap;
+  plot.trajectory = desired;
+  plot.actual_path = actual;
+  plot.actual_errors = errors;
+  std::ostringstream figures;
+  figures.precision(4);
+  figures << simulation.traversal_time_s << " s  |  tracking error sum " << tracking.sum_m
+          << " m, mean " << tracking.mean_m << " m, p99 " << tracking.percentiles_m.back()
+          << " m  |  coverage " << coverage.report.coverage_percent << " %";
+  plot.title_lines = {"Simulated robot on " +
+                          std::filesystem::path(trajectory_path).filename().string() + " (" +
+                          std::filesystem::path(arguments.mission_path).filename().string() + ")",
+                      figures.str()};
+  CoveragePlot().writePng(plot, plot_path);
+
+  std::ostringstream notes;
+  for (const std::string& warning : cleaned.warnings) notes << "warning: " << warning << "\n";
+  for (const std::string& warning : offset.warnings) notes << "warning: " << warning << "\n";
+  err << notes.str();
+  out << "wrote " << actual_path << " " << metrics_path << " " << plot_path << "\n";
+}
+
+}  // namespace kinematic_coverage::core

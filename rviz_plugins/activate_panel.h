@@ -1,0 +1,34 @@
+#pragma once
+
+#ifndef Q_MOC_RUN
+#include <ros/node_handle.h>
+#include <ros/publisher.h>
+#include <rviz/panel.h>
+#endif
+
+class QLabel;
+
+namespace kinematic_coverage::rviz_plugins {
+
+/// rviz panel with an "Activate" button (Alt+A) that publishes std_msgs/Empty on `activate`:
+/// coverage_planner then plans with the newest polygon, start and goal (INTERFACE
+/// section 4). Together with the Start and Goal tools it is the thesis's set-then-activate
+/// workflow (Fig. 3.14). A line under the button says when it last sent and whether anyone
+/// listens.
+class ActivatePanel : public rviz::Panel {
+  Q_OBJECT
+
+ public:
+  explicit ActivatePanel(QWidget* parent = nullptr);
+
+ private Q_SLOTS:
+  /// Publishes one activate message and reports it.
+  void sendActivate();
+
+ private:
+  ros::NodeHandle node_;
+  ros::Publisher publisher_;
+  QLabel* status_label_;
+};
+
+}  // namespace kinematic_coverage::rviz_plugins

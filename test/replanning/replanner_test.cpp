@@ -1,0 +1,116 @@
+#include "trajectory_generation_tools/replanning/replanner.h"
+
+#include <gtest/gtest.h>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+#include "test/replanning/drift_scenario.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// Issue 8's drift scenario: the new trajectory starts at the last visited pose, avoids
+/// the moved obstacles, and the visited plus new footprints see at least 99 % of the
+/// updated reachable area.
+TEST(Replanner, LakeDriftScenarioCoversTheUpdatedReachableArea) {
+  const testing::DriftScenario scenario = testing::lakeDriftScenario(0.4, {2.0, 1.0});
+  const PlannerParameters& parameters = scenario.mission.parameters;
+  const ReplannedMission replanned =
+      Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
+  ASSERT_GE(replanned.plan.waypoints.size(), 2u);
+  const Point2 last = scenario.visited.back().position();
+  EXPECT_LT((replanned.plan.waypoints.front().position() - last).norm(), 1e-9);
+  EXPECT_LT((replanned.plan.waypoints.back().position() - scenario.mission.goal).norm(), 1e-9);
+  EXPECT_FALSE(replanned.remaining.parts.empty());
+  for (const PolygonWithHoles& part : replanned.remaining.parts) {
+    EXPECT_NO_THROW(PolygonValidator().validate(part));
+  }
+
+  const GeneratedTrajectory trajectory =
+      TrajectoryGenerator(parameters).generate(replanned.plan.waypoints, replanned.free_area);
+  ASSERT_FALSE(trajectory.poses.empty());
+  EXPECT_LT((trajectory.poses.front().position() - last).norm(), 1e-9);
+  EXPECT_GT(trajectory.min_obstacle_clearance_m, 0.0);
+  for (const TrajectoryPose& pose : trajectory.poses) {
+    for (const Ring& hole : scenario.updated.holes) {
+      EXPECT_FALSE(insideRing(pose.position(), hole) &&
+                   distanceToRing(pose.position(), hole) > 1e-9)
+          << pose.x << ", " << pose.y;
+    }
+  }
+  EXPECT_GE(testing::combinedReachableCoverage(replanned.free_area, parameters, scenario.visited,
+                                               trajectory.poses),
+            99.0);
+}
+
+/// Every method gives valid parts and a plan; the convex hull discards unvisited area, so
+/// it keeps no more than the footprint method (thesis Fig. 3.9 and 3.11).
+TEST(Replanner, EveryMethodGivesValidPartsAndAPlan) {
+  // The lake's footprint is 12.9 m wide: after a quarter of the trajectory much is left.
+  const testing::DriftScenario scenario = testing::lakeDriftScenario(0.25, {-2.0, 0.5});
+  double kept[3] = {0, 0, 0};
+  int k = 0;
+  for (const char* method : {"convex_hull", "concave_hull", "footprint"}) {
+    SCOPED_TRACE(method);
+    PlannerParameters parameters = scenario.mission.parameters;
+    parameters.replanning_method = method;
+    const ReplannedMission replanned =
+        Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
+    for (const PolygonWithHoles& part : replanned.remaining.parts) {
+      EXPECT_NO_THROW(PolygonValidator().validate(part));
+    }
+    EXPECT_GE(replanned.plan.waypoints.size(), 2u);
+    EXPECT_LE(replanned.remaining.seen_area_m2, replanned.remaining.free_area_m2 + 1e-9);
+    kept[k++] = replanned.remaining.kept_area_m2;
+  }
+  EXPECT_LE(kept[0], kept[2] + 1e-6);
+  EXPECT_GT(kept[2], 0.0);
+}
+
+TEST(Replanner, StartInsideAMovedHole) {
+  testing::DriftScenario scenario = testing::lakeDriftScenario(0.4, {0.0, 0.0});
+  const PlannerParameters& parameters = scenario.mission.parameters;
+  // Just inside the rectangle [7, 12] x [9, 15]: starts from its edge.
+  scenario.visited.push_back({7.4, 12.0, 0.0});
+  const ReplannedMission replanned =
+      Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
+  EXPECT_NEAR(replanned.start.x(), 7.0, 1e-5);
+  EXPECT_NEAR(replanned.start.y(), 12.0, 1e-9);
+  // Deeper than wall_distance: invalid.
+  scenario.visited.push_back({9.5, 12.0, 0.0});
+  EXPECT_THROW(
+      Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal),
+      InvalidInputError);
+}
+
+TEST(Replanner, InvalidInput) {
+  const testing::DriftScenario scenario = testing::lakeDriftScenario(0.2, {1.0, 1.0});
+  const PlannerParameters& parameters = scenario.mission.parameters;
+  const Replanner replanner(parameters);
+  EXPECT_THROW(replanner.replan(scenario.updated, {}, scenario.mission.goal), InvalidInputError);
+  std::vector<Pose2> bad = scenario.visited;
+  bad.push_back({std::nan(""), 1.0, 0.0});
+  EXPECT_THROW(replanner.replan(scenario.updated, bad, scenario.mission.goal), InvalidInputError);
+  PolygonWithHoles crossing = scenario.updated;
+  crossing.hull = {{0, 0}, {30, 30}, {30, 0}, {0, 30}};
+  EXPECT_THROW(replanner.replan(crossing, scenario.visited, scenario.mission.goal),
+               InvalidInputError);
+  EXPECT_THROW(replanner.replan(scenario.updated, scenario.visited, {10, 12}), InvalidInputError);
+}
+
+/// Everything seen already: no parts, and the plan goes from the last pose to the goal.
+TEST(Replanner, NothingLeftGoesToTheGoal) {
+  const testing::DriftScenario scenario = testing::lakeDriftScenario(1.0, {0.0, 0.0});
+  PlannerParameters parameters = scenario.mission.parameters;
+  parameters.replanning_min_area = 50.0;
+  const ReplannedMission replanned =
+      Replanner(parameters).replan(scenario.updated, scenario.visited, {20, 2});
+  EXPECT_TRUE(replanned.remaining.parts.empty());
+  ASSERT_GE(replanned.plan.waypoints.size(), 2u);
+  EXPECT_LT((replanned.plan.waypoints.back().position() - Point2(20, 2)).norm(), 1e-9);
+  EXPECT_TRUE(replanned.plan.cells.empty());
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core

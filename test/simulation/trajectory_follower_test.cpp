@@ -1,0 +1,172 @@
+#include "trajectory_generation_tools/simulation/trajectory_follower.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "trajectory_generation_tools/simulation/robot_simulator.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// Poses every `spacing` m along the x axis from 0 to `length`, heading +x.
+std::vector<Pose2> straightLine(double length, double spacing) {
+  std::vector<Pose2> poses;
+  const int pieces = static_cast<int>(std::ceil(length / spacing - 1e-9));
+  for (int i = 0; i <= pieces; ++i) poses.push_back({length * i / pieces, 0.0, 0.0});
+  return poses;
+}
+
+/// An in-place rotation at the origin from heading 0 to `angle`, one pose every `step` rad.
+std::vector<Pose2> rotation(double angle, double step) {
+  std::vector<Pose2> poses;
+  const int pieces = static_cast<int>(std::ceil(angle / step - 1e-9));
+  for (int i = 0; i <= pieces; ++i) poses.push_back({0.0, 0.0, angle * i / pieces});
+  return poses;
+}
+
+TEST(TrajectoryFollowerTest, FollowsAStraightLineWithZeroErrorInTheExpectedTime) {
+  // position_gain * v_max <= a_max, so that the speed can follow the set-point controller's
+  // command exactly: accelerate at a_max to v_max, cruise until position_gain times the
+  // distance left falls below v_max, then approach exponentially to the tolerance.
+  PlannerParameters parameters;
+  parameters.position_gain = 0.3;
+  const double v = parameters.v_max;
+  const double a = parameters.a_max;
+  const double k = parameters.position_gain;
+  const double length = 10.0;
+  const double expected = v / a + (length - v * v / (2.0 * a) - v / k) / v +
+                          std::log((v / k) / parameters.position_tolerance) / k;
+  const SimulationResult result = RobotSimulator(parameters).simulate(straightLine(length, length));
+  EXPECT_NEAR(result.traversal_time_s, expected, 0.01 * expected);
+  // Zero up to the rounding of the distance to a segment.
+  EXPECT_LT(result.tracking.sum_m, 1e-9);
+  EXPECT_LT(result.tracking.percentiles_m.back(), 1e-12);
+  const Pose2& end = result.steps.back().pose;
+  EXPECT_NEAR(end.x, length, parameters.position_tolerance);
+  EXPECT_EQ(end.y, 0.0);
+  EXPECT_EQ(end.yaw, 0.0);
+  // A step every sim_dt, the start first.
+  ASSERT_GE(result.steps.size(), 2u);
+  EXPECT_EQ(result.steps.front().t, 0.0);
+  for (std::size_t i = 1; i < result.steps.size(); ++i) {
+    EXPECT_NEAR(result.steps[i].t - result.steps[i - 1].t, parameters.sim_dt, 1e-9);
+  }
+  EXPECT_DOUBLE_EQ(result.steps.back().t, result.traversal_time_s);
+}
+
+TEST(TrajectoryFollowerTest, SlowsTowardsEveryPoseItIsHanded) {
+  // The set-point controller slows towards each pose: the same line is followed exactly
+  // whatever the sampling, but the denser it is sampled, the longer it takes.
+  const PlannerParameters parameters;
+  double previous_time = 0.0;
+  for (const double spacing : {10.0, 0.5, 0.1}) {
+    const SimulationResult result =
+        RobotSimulator(parameters).simulate(straightLine(10.0, spacing));
+    EXPECT_LT(result.tracking.sum_m, 1e-9) << spacing;
+    EXPECT_GT(result.traversal_time_s, previous_time) << spacing;
+    previous_time = result.traversal_time_s;
+  }
+  // Never faster than v_max allows.
+  EXPECT_GT(previous_time, 10.0 / parameters.v_max);
+}
+
+TEST(TrajectoryFollowerTest, TurnsInPlaceWhereTheTrajectoryRotates) {
+  const PlannerParameters parameters;
+  const SimulationResult result = RobotSimulator(parameters).simulate(rotation(M_PI / 2, 0.2));
+  const Pose2& end = result.steps.back().pose;
+  EXPECT_EQ(end.x, 0.0);
+  EXPECT_EQ(end.y, 0.0);
+  EXPECT_LE(std::abs(wrapAngle(end.yaw - M_PI / 2)), parameters.yaw_tolerance);
+  EXPECT_LT(result.tracking.sum_m, 1e-9);
+  EXPECT_GE(result.traversal_time_s,
+            (M_PI / 2 - parameters.yaw_tolerance) / parameters.yaw_rate_max - 1e-9);
+}
+
+TEST(TrajectoryFollowerTest, FinerRotationSamplingSlowsALowGainRobot) {
+  // A low yaw gain approaches each rotation pose exponentially (Table 4.3's setting): more
+  // poses on the same turn take longer. A high gain turns at the saturated yaw rate.
+  PlannerParameters low;
+  low.yaw_gain = 1.0;
+  const double coarse = RobotSimulator(low).simulate(rotation(M_PI, 0.2)).traversal_time_s;
+  const double fine = RobotSimulator(low).simulate(rotation(M_PI, 0.05)).traversal_time_s;
+  EXPECT_GT(fine, 1.5 * coarse);
+  PlannerParameters high;
+  high.yaw_gain = 5.0;
+  const double fast = RobotSimulator(high).simulate(rotation(M_PI, 0.2)).traversal_time_s;
+  EXPECT_LT(fast, coarse);
+  EXPECT_LT(fast, 1.5 * M_PI / high.yaw_rate_max);
+}
+
+TEST(TrajectoryFollowerTest, CrabsIntoACrossCurrentAndStillArrives) {
+  PlannerParameters parameters;
+  parameters.current_y = 0.1;
+  const SimulationResult result = RobotSimulator(parameters).simulate(straightLine(20.0, 0.5));
+  EXPECT_NEAR(result.steps.back().pose.x, 20.0, 0.5);
+  EXPECT_GT(result.tracking.mean_m, 0.0);
+  EXPECT_LT(result.tracking.percentiles_m.back(), 0.5);
+  // Mid-way it heads upstream (yaw < 0) to hold the line against the current.
+  const Pose2& middle = result.steps[result.steps.size() / 2].pose;
+  EXPECT_LT(middle.yaw, -0.1);
+  EXPECT_LT(std::abs(middle.y), 0.3);
+}
+
+TEST(TrajectoryFollowerTest, GivesUpWhenTheCurrentIsFasterThanTheRobot) {
+  PlannerParameters parameters;
+  parameters.current_x = -1.0;
+  parameters.sim_time_limit = 100.0;
+  try {
+    RobotSimulator(parameters).simulate(straightLine(10.0, 0.5));
+    FAIL() << "expected InvalidInputError";
+  } catch (const InvalidInputError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("did not reach the last pose within sim_time_limit = 100 s (it was "
+                        "driving to pose 2 of 21)"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(TrajectoryFollowerTest, RestartsFromAMovingStateAndSkipsPassedPoses) {
+  // As auv_simulator does when a new trajectory arrives: the robot keeps its pose and
+  // speed, and poses behind it count as passed.
+  const PlannerParameters parameters;
+  RobotState start;
+  start.t = 42.0;
+  start.pose = {5.2, 0.0, 0.0};
+  start.speed = 0.3;
+  TrajectoryFollower follower(parameters, straightLine(10.0, 1.0), start);
+  EXPECT_EQ(follower.nextTarget(), 6u);
+  follower.step();
+  EXPECT_DOUBLE_EQ(follower.state().t, 42.0 + parameters.sim_dt);
+  EXPECT_GE(follower.state().speed, 0.3 - parameters.a_max * parameters.sim_dt - 1e-12);
+  EXPECT_GT(follower.state().pose.x, 5.2);
+  while (!follower.finished()) follower.step();
+  EXPECT_EQ(follower.nextTarget(), follower.targets().size());
+  const double end_time = follower.state().t;
+  follower.step();
+  EXPECT_EQ(follower.state().t, end_time);
+}
+
+TEST(TrajectoryFollowerTest, RejectsInvalidInput) {
+  const PlannerParameters parameters;
+  const RobotState start;
+  EXPECT_THROW(TrajectoryFollower(parameters, {}, start), InvalidInputError);
+  EXPECT_THROW(TrajectoryFollower(parameters, {{0, 0, 0}, {1, std::nan(""), 0}}, start),
+               InvalidInputError);
+  RobotState reversing;
+  reversing.speed = -0.1;
+  EXPECT_THROW(TrajectoryFollower(parameters, {{0, 0, 0}}, reversing), InvalidInputError);
+  PlannerParameters too_high_gain;
+  too_high_gain.yaw_gain = 20.0;
+  EXPECT_THROW(TrajectoryFollower(too_high_gain, {{0, 0, 0}}, start), InvalidInputError);
+  PlannerParameters too_long;
+  too_long.sim_time_limit = 1e9;
+  EXPECT_THROW(RobotSimulator{too_long}, InvalidInputError);
+  EXPECT_THROW(RobotSimulator(parameters).simulate({}), InvalidInputError);
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core

@@ -1,0 +1,146 @@
+#include "trajectory_generation_tools/replanning/remaining_area.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
+#include "trajectory_generation_tools/coverage/coverage_raster.h"
+#include "trajectory_generation_tools/coverage/reachable_area.h"
+#include "trajectory_generation_tools/coverage/seen_area.h"
+#include "trajectory_generation_tools/replanning/alpha_shape_triangles.h"
+#include "trajectory_generation_tools/replanning/raster_contours.h"
+#include "trajectory_generation_tools/replanning/region_simplification.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// Raster cells per sweep spacing: fine enough that the remaining area's boundary is
+/// placed well within a lane's reach, coarse enough to keep replanning fast.
+constexpr double kCellsPerSweepSpacing = 64.0;
+/// Largest raster; coarser cells beyond it.
+constexpr double kMaxRasterCells = 4e6;
+
+/// Convex hull of points (Andrew's monotone chain), counter-clockwise.
+Ring convexHull(std::vector<Point2> points) {
+  std::sort(points.begin(), points.end(), [](const Point2& a, const Point2& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  if (points.size() < 3) return Ring(points.begin(), points.end());
+  Ring hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+/// The complement of a mask.
+CellMask inverted(const CellMask& mask) {
+  CellMask result(mask.size());
+  for (std::size_t i = 0; i < mask.size(); ++i) result[i] = mask[i] == 0 ? 1 : 0;
+  return result;
+}
+
+}  // namespace
+
+RemainingAreaCalculator::RemainingAreaCalculator(const PlannerParameters& parameters)
+    : parameters_(parameters) {
+  ParameterValidator().validate(parameters_);
+}
+
+RemainingArea RemainingAreaCalculator::compute(const PolygonWithHoles& free_area,
+                                               const std::vector<Pose2>& visited) const {
+  for (const Pose2& pose : visited) {
+    if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw)) {
+      throw InvalidInputError("a visited pose has a non-finite coordinate");
+    }
+  }
+  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
+  double min_x = free_area.hull.front().x(), max_x = min_x;
+  double min_y = free_area.hull.front().y(), max_y = min_y;
+  for (const Point2& p : free_area.hull) {
+    min_x = std::min(min_x, p.x());
+    max_x = std::max(max_x, p.x());
+    min_y = std::min(min_y, p.y());
+    max_y = std::max(max_y, p.y());
+  }
+  RasterResolution resolution;
+  resolution.cell_size =
+      std::max(sensor.sweepDistance() / kCellsPerSweepSpacing,
+               std::sqrt((max_x - min_x + 1.0) * (max_y - min_y + 1.0) / kMaxRasterCells));
+  resolution.max_cells = static_cast<std::size_t>(2 * kMaxRasterCells);
+  const CoverageRaster raster = CoverageRaster::covering(free_area, resolution);
+
+  RemainingArea result;
+  result.cell_size_m = raster.cellSize();
+  const CellMask free = raster.rasterize(free_area);
+  CellMask seen(raster.cellCount(), 0);
+  if (!visited.empty()) {
+    const std::string& method = parameters_.replanning_method;
+    if (method == "footprint") {
+      SeenArea area(raster);
+      area.addTrajectory(visited, sensor);
+      seen = area.seenMask();
+    } else {
+      std::vector<Point2> corners;
+      for (const Pose2& pose : visited) {
+        for (const Point2& corner : sensor.footprint(pose)) corners.push_back(corner);
+      }
+      std::vector<CellSpan> spans;
+      if (method == "convex_hull") {
+        seen = raster.rasterize(PolygonWithHoles{convexHull(corners), {}});
+      } else {
+        for (const auto& triangle : alphaShapeTriangles(corners, parameters_.alpha)) {
+          Ring ring(triangle.begin(), triangle.end());
+          if (signedArea(ring) < 0.0) std::reverse(ring.begin(), ring.end());
+          raster.appendConvexSpans(ring, spans);
+        }
+        for (const CellSpan& span : spans) {
+          for (int column = span.begin; column < span.end; ++column) {
+            seen[raster.index(span.row, column)] = 1;
+          }
+        }
+      }
+    }
+  }
+  CellMask remaining(raster.cellCount(), 0);
+  for (std::size_t i = 0; i < remaining.size(); ++i) {
+    remaining[i] = free[i] != 0 && seen[i] == 0 ? 1 : 0;
+    if (free[i] != 0 && seen[i] != 0) result.seen_area_m2 += raster.cellArea();
+  }
+  result.free_area_m2 = raster.area(free);
+  result.remaining_area_m2 = raster.area(remaining);
+
+  // Opening: parts narrower than the sliver width vanish, the rest keeps its shape.
+  const double radius = 0.5 * parameters_.replanning_sliver_fraction * sensor.sweepDistance();
+  CellMask opened = remaining;
+  if (radius > 0.0) {
+    const CellMask eroded = inverted(dilateMask(raster, inverted(remaining), radius));
+    opened = dilateMask(raster, eroded, radius);
+    for (std::size_t i = 0; i < opened.size(); ++i) opened[i] = opened[i] && remaining[i];
+  }
+  removeDiagonalPinches(raster, opened);
+  for (const PolygonWithHoles& part : traceMaskContours(raster, opened)) {
+    if (area(part) < std::max(parameters_.replanning_min_area, raster.cellArea())) {
+      ++result.dropped_parts;
+      continue;
+    }
+    PolygonWithHoles simplified = simplifyPolygon(
+        part,
+        std::max(parameters_.replanning_simplify_tolerance, std::sqrt(2.0) * raster.cellSize()));
+    result.kept_area_m2 += area(simplified);
+    result.parts.push_back(std::move(simplified));
+  }
+  return result;
+}
+
+}  // namespace kinematic_coverage::core

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "trajectory_generation_tools/replanning/remaining_area.h"
+
+namespace kinematic_coverage::core {
+
+/// A replanned mission (issue 8, thesis section 3.4) and what it was made from.
+struct ReplannedMission {
+  PolygonWithHoles free_area;     ///< the updated polygon, validated and cleaned
+  RemainingArea remaining;        ///< the area still to see
+  Point2 start = Point2::Zero();  ///< where the new plan starts: the last visited pose
+  CoveragePlan plan;              ///< over the remaining parts, from start to the goal
+  std::vector<std::string> warnings;
+  double planning_time_s = 0.0;  ///< validation, cleaning, remaining area and planning
+};
+
+/// Replans after obstacles moved: validates and cleans the updated polygon, computes the
+/// remaining area from the visited poses (RemainingAreaCalculator, `replanning_method`),
+/// and plans its parts in one generalized TSP from the last visited pose to the goal.
+/// A last pose that a moved obstacle now covers starts from the nearest point outside it
+/// when that is within `wall_distance`; deeper inside is invalid input (INTERFACE
+/// section 3).
+class Replanner {
+ public:
+  /// Throws InvalidInputError for parameters out of range.
+  explicit Replanner(const PlannerParameters& parameters);
+
+  /// Throws InvalidInputError for an invalid polygon, no or non-finite visited poses, a
+  /// goal inside a hole, or a start as described above.
+  ReplannedMission replan(const PolygonWithHoles& updated_polygon,
+                          const std::vector<Pose2>& visited, const Point2& goal,
+                          const StageCallback& on_stage = {}) const;
+
+ private:
+  PlannerParameters parameters_;
+};
+
+}  // namespace kinematic_coverage::core

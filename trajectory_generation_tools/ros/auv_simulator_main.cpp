@@ -1,0 +1,18 @@
+// The auv_simulator node (INTERFACE section 4).
+
+#include <ros/ros.h>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "trajectory_generation_tools/ros/auv_simulator_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "auv_simulator");
+  try {
+    kinematic_coverage::nodes::AuvSimulatorNode node(ros::NodeHandle(), ros::NodeHandle("~"));
+    ros::spin();
+  } catch (const kinematic_coverage::core::InvalidInputError& error) {
+    ROS_FATAL("auv_simulator: %s", error.what());
+    return 2;
+  }
+  return 0;
+}

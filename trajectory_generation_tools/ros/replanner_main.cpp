@@ -1,0 +1,12 @@
+// The replanner node (INTERFACE section 4).
+
+#include <ros/ros.h>
+
+#include "trajectory_generation_tools/ros/replanner_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "replanner");
+  kinematic_coverage::nodes::ReplannerNode node(ros::NodeHandle(), ros::NodeHandle("~"));
+  ros::spin();
+  return 0;
+}

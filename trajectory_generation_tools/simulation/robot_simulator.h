@@ -1,0 +1,53 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "trajectory_generation_tools/simulation/tracking_error_statistics.h"
+
+namespace kinematic_coverage::core {
+
+/// One recorded instant of a simulation (a row of `actual.csv`, INTERFACE section 7).
+struct SimulationStep {
+  double t = 0.0;  ///< s from the start
+  Pose2 pose;      ///< the robot's position and heading
+  /// m from the robot to the nearest point of the desired path (the polyline through the
+  /// trajectory's poses).
+  double tracking_error_m = 0.0;
+};
+
+/// What a robot did on a trajectory.
+struct SimulationResult {
+  /// The start (t = 0) and then every simulation step, in order.
+  std::vector<SimulationStep> steps;
+  /// s until the last pose was reached: `traversal_time_s` of `coverage_tool simulate`.
+  double traversal_time_s = 0.0;
+  /// Over the simulation steps (the start left out), INTERFACE section 7.
+  TrackingErrorStatistics tracking;
+};
+
+/// Runs the robot model of TrajectoryFollower over a whole trajectory, as `coverage_tool
+/// simulate` does: the robot starts at rest at the first pose, with its heading, and is
+/// stepped every sim_dt until it has reached the last pose; every step records its pose
+/// and its tracking error.
+class RobotSimulator {
+ public:
+  /// Most simulation steps of a run (sim_time_limit / sim_dt), which bounds its memory.
+  static constexpr std::size_t kMaxSteps = 5000000;
+
+  /// Throws InvalidInputError for parameters ParameterValidator rejects or a
+  /// sim_time_limit of more than kMaxSteps steps of sim_dt.
+  explicit RobotSimulator(const PlannerParameters& parameters);
+
+  /// Simulates following `trajectory` (its poses in order). Throws InvalidInputError for
+  /// no poses or a non-finite one, and when the robot has not reached the last pose within
+  /// sim_time_limit (a current faster than the robot, say).
+  SimulationResult simulate(const std::vector<Pose2>& trajectory) const;
+
+ private:
+  PlannerParameters parameters_;
+};
+
+}  // namespace kinematic_coverage::core
