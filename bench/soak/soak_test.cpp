@@ -1,0 +1,210 @@
+// Soak test (issue 11): plans and smooths seeded random maps with 0 to 15 holes, sized
+// as in issue 2 (hulls 50 to 200 m across, footprints 2 to 12.9 m wide), and checks on
+// every seed: no exception but a precise InvalidInputError for a start or goal the map
+// makes impossible, no collision of the smoothed trajectory, and at least 99 % coverage
+// of the reachable area. Prints a progress line every 100 seeds, each failure with its
+// seed, and the planning-time distribution. Exit status 1 when any seed failed.
+//
+// Usage: soak_test --seeds FIRST:LAST [--holes-max 15]
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <iomanip>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "test/support/random_polygons.h"
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
+#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// Least share of the reachable area the waypoint path must cover (issue 2).
+constexpr double kMinCoveragePercent = 99.0;
+
+/// The seed range and map shape asked for on the command line.
+struct SoakOptions {
+  std::uint64_t first_seed = 0;
+  std::uint64_t last_seed = 0;
+  int holes_max = 15;
+};
+
+/// One seed's map, parameters, start and goal.
+struct SoakCase {
+  PolygonWithHoles map;
+  PlannerParameters parameters;
+  Point2 start;
+  Point2 goal;
+  double size_m = 0.0;
+  double footprint_width_m = 0.0;
+};
+
+/// What became of one seed.
+enum class SoakOutcome { kPassed, kRejected, kFailed };
+
+/// Parses `--seeds FIRST:LAST [--holes-max N]`; exits with a usage line when malformed.
+SoakOptions parseOptions(int argc, char** argv) {
+  const auto usage = [] {
+    std::cerr << "usage: soak_test --seeds FIRST:LAST [--holes-max 15]\n";
+    std::exit(2);
+  };
+  SoakOptions options;
+  bool have_seeds = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (i + 1 >= argc) usage();
+    const std::string value = argv[++i];
+    if (flag == "--seeds") {
+      const std::size_t colon = value.find(':');
+      if (colon == std::string::npos) usage();
+      options.first_seed = std::stoull(value.substr(0, colon));
+      options.last_seed = std::stoull(value.substr(colon + 1));
+      have_seeds = options.first_seed <= options.last_seed;
+    } else if (flag == "--holes-max") {
+      options.holes_max = std::stoi(value);
+      if (options.holes_max < 0) usage();
+    } else {
+      usage();
+    }
+  }
+  if (!have_seeds) usage();
+  return options;
+}
+
+/// The map and parameters of one seed, drawn as in the planner's random-map test
+/// (issue 2): start and goal near two hull vertices, pulled inwards out of every hole.
+SoakCase makeCase(std::uint64_t seed, int holes_max) {
+  std::mt19937 rng(static_cast<std::mt19937::result_type>(seed));
+  std::uniform_real_distribution<double> size(50.0, 200.0);
+  std::uniform_real_distribution<double> footprint_width(2.0, 12.9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  SoakCase soak_case;
+  soak_case.size_m = size(rng);
+  soak_case.map = testing::randomMap(rng, soak_case.size_m, holes_max, 2.5);
+  PlannerParameters& parameters = soak_case.parameters;
+  soak_case.footprint_width_m = footprint_width(rng);
+  parameters.sensor_distance =
+      soak_case.footprint_width_m / (2.0 * std::tan(0.5 * parameters.lateral_fov));
+  parameters.wall_distance = 0.5 + unit(rng);
+  parameters.lateral_overlap = 0.2 + 0.4 * unit(rng);
+  const PolygonWithHoles& map = soak_case.map;
+  const auto freePointNear = [&map](const Point2& vertex) {
+    Point2 p = 0.95 * vertex;
+    for (int k = 0; k < 20; ++k) {
+      bool in_hole = false;
+      for (const Ring& hole : map.holes) in_hole = in_hole || insideRing(p, hole);
+      if (!in_hole) break;
+      p *= 0.9;
+    }
+    return p;
+  };
+  soak_case.start = freePointNear(map.hull[0]);
+  soak_case.goal = freePointNear(map.hull[map.hull.size() / 2]);
+  return soak_case;
+}
+
+/// True for the planner's precise rejections of a start or goal the map makes impossible
+/// (inside a hole, or joined to the offset area only through a hole).
+bool isPreciseRejection(const std::string& message) {
+  return message.find("crosses a hole") != std::string::npos ||
+         message.find("lies inside hole") != std::string::npos;
+}
+
+/// Plans, smooths and checks one seed; prints a line for a failure. Adds the planning
+/// time of a plan that was made to `planning_times_s`.
+SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& planning_times_s) {
+  const SoakCase soak_case = makeCase(seed, holes_max);
+  std::ostringstream context;
+  context << "seed " << seed << " (size " << std::fixed << std::setprecision(1) << soak_case.size_m
+          << " m, holes " << soak_case.map.holes.size() << ", footprint "
+          << soak_case.footprint_width_m << " m)";
+  const auto fail = [&context](const std::string& why) {
+    std::cout << "FAIL " << context.str() << ": " << why << std::endl;
+    return SoakOutcome::kFailed;
+  };
+  try {
+    const auto started = std::chrono::steady_clock::now();
+    const CoveragePlan plan =
+        CoveragePlanner(soak_case.parameters).plan(soak_case.map, soak_case.start, soak_case.goal);
+    planning_times_s.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    const GeneratedTrajectory trajectory =
+        TrajectoryGenerator(soak_case.parameters).generate(plan.waypoints, soak_case.map);
+    if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
+      return fail("collision: min_obstacle_clearance_m " +
+                  std::to_string(trajectory.min_obstacle_clearance_m));
+    }
+    const double covered = waypointPathReachableCoveragePercent(
+        soak_case.map, plan.offset_free_area, FrustumSensor::fromParameters(soak_case.parameters),
+        plan.waypoints, RasterResolution{0.0, 1e-3, 1'000'000});
+    if (!(covered >= kMinCoveragePercent)) {
+      return fail("reachable coverage " + std::to_string(covered) + " %");
+    }
+    return SoakOutcome::kPassed;
+  } catch (const InvalidInputError& error) {
+    if (isPreciseRejection(error.what())) return SoakOutcome::kRejected;
+    return fail(std::string("InvalidInputError: ") + error.what());
+  } catch (const std::exception& error) {
+    return fail(std::string("exception: ") + error.what());
+  }
+}
+
+/// The q-quantile (0..1) of sorted `values`, nearest rank.
+double quantile(const std::vector<double>& sorted, double q) {
+  if (sorted.empty()) return 0.0;
+  const auto rank = static_cast<std::size_t>(std::ceil(q * sorted.size()));
+  return sorted[std::min(sorted.size() - 1, rank == 0 ? 0 : rank - 1)];
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core
+
+int main(int argc, char** argv) {
+  using namespace kinematic_coverage::core;
+  const SoakOptions options = parseOptions(argc, argv);
+  std::vector<double> planning_times_s;
+  int passed = 0;
+  int rejected = 0;
+  int failed = 0;
+  std::uint64_t done = 0;
+  for (std::uint64_t seed = options.first_seed; seed <= options.last_seed; ++seed) {
+    switch (runSeed(seed, options.holes_max, planning_times_s)) {
+      case SoakOutcome::kPassed:
+        ++passed;
+        break;
+      case SoakOutcome::kRejected:
+        ++rejected;
+        break;
+      case SoakOutcome::kFailed:
+        ++failed;
+        break;
+    }
+    if (++done % 100 == 0) {
+      std::cout << "progress: " << done << " seeds (up to " << seed << "), passed " << passed
+                << ", rejected " << rejected << ", failed " << failed << std::endl;
+    }
+    if (seed == options.last_seed) break;
+  }
+  std::sort(planning_times_s.begin(), planning_times_s.end());
+  std::cout << std::fixed << std::setprecision(3) << "seeds " << options.first_seed << ":"
+            << options.last_seed << " holes-max " << options.holes_max << ": " << done
+            << " seeds, passed " << passed << ", rejected (precise InvalidInputError) " << rejected
+            << ", failed " << failed << "\n"
+            << "planning time over " << planning_times_s.size() << " plans: median "
+            << quantile(planning_times_s, 0.5) << " s, p99 " << quantile(planning_times_s, 0.99)
+            << " s, max " << (planning_times_s.empty() ? 0.0 : planning_times_s.back()) << " s"
+            << std::endl;
+  return failed == 0 ? 0 : 1;
+}
