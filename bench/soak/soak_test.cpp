@@ -100,18 +100,8 @@ SoakCase makeCase(std::uint64_t seed, int holes_max) {
   parameters.wall_distance = 0.5 + unit(rng);
   parameters.lateral_overlap = 0.2 + 0.4 * unit(rng);
   const PolygonWithHoles& map = soak_case.map;
-  const auto freePointNear = [&map](const Point2& vertex) {
-    Point2 p = 0.95 * vertex;
-    for (int k = 0; k < 20; ++k) {
-      bool in_hole = false;
-      for (const Ring& hole : map.holes) in_hole = in_hole || insideRing(p, hole);
-      if (!in_hole) break;
-      p *= 0.9;
-    }
-    return p;
-  };
-  soak_case.start = freePointNear(map.hull[0]);
-  soak_case.goal = freePointNear(map.hull[map.hull.size() / 2]);
+  soak_case.start = testing::freePointNear(map, map.hull[0]);
+  soak_case.goal = testing::freePointNear(map, map.hull[map.hull.size() / 2]);
   return soak_case;
 }
 

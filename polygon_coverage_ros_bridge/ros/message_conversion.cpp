@@ -37,6 +37,16 @@ geometry_msgs::Pose poseMessage(double x, double y, double yaw) {
   return pose;
 }
 
+/// Poses with x, y and yaw members as a PoseArray.
+template <typename Pose>
+geometry_msgs::PoseArray poseArray(const std::vector<Pose>& poses, const std_msgs::Header& header) {
+  geometry_msgs::PoseArray message;
+  message.header = header;
+  message.poses.reserve(poses.size());
+  for (const Pose& pose : poses) message.poses.push_back(poseMessage(pose.x, pose.y, pose.yaw));
+  return message;
+}
+
 }  // namespace
 
 core::PolygonWithHoles fromMessage(const ::kinematic_coverage::PolygonWithHoles& message) {
@@ -61,12 +71,7 @@ core::Point2 fromMessage(const geometry_msgs::Point& point) { return {point.x, p
 
 geometry_msgs::PoseArray toPoseArray(const std::vector<core::Pose2>& poses,
                                      const std_msgs::Header& header) {
-  geometry_msgs::PoseArray message;
-  message.header = header;
-  message.poses.reserve(poses.size());
-  for (const core::Pose2& pose : poses)
-    message.poses.push_back(poseMessage(pose.x, pose.y, pose.yaw));
-  return message;
+  return poseArray(poses, header);
 }
 
 std::vector<core::Pose2> fromPoseArray(const geometry_msgs::PoseArray& message) {
@@ -80,13 +85,7 @@ std::vector<core::Pose2> fromPoseArray(const geometry_msgs::PoseArray& message) 
 
 geometry_msgs::PoseArray toPoseArray(const std::vector<core::TrajectoryPose>& poses,
                                      const std_msgs::Header& header) {
-  geometry_msgs::PoseArray message;
-  message.header = header;
-  message.poses.reserve(poses.size());
-  for (const core::TrajectoryPose& pose : poses) {
-    message.poses.push_back(poseMessage(pose.x, pose.y, pose.yaw));
-  }
-  return message;
+  return poseArray(poses, header);
 }
 
 nav_msgs::Path toPath(const std::vector<core::TrajectoryPose>& poses,

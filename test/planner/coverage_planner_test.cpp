@@ -96,20 +96,9 @@ TEST(CoveragePlanner, RandomMapsAreCoveredInsideTheOffsetArea) {
     parameters.sensor_distance = width / (2.0 * std::tan(0.5 * parameters.lateral_fov));
     parameters.wall_distance = 0.5 + unit(rng);
     parameters.lateral_overlap = 0.2 + 0.4 * unit(rng);
-    // Start and goal near two hull vertices (in the wall band or beyond it), pulled
-    // towards the centre until they are out of every hole.
-    auto freePointNear = [&](const Point2& vertex) {
-      Point2 p = 0.95 * vertex;
-      for (int k = 0; k < 20; ++k) {
-        bool in_hole = false;
-        for (const Ring& hole : map.holes) in_hole = in_hole || insideRing(p, hole);
-        if (!in_hole) break;
-        p *= 0.9;
-      }
-      return p;
-    };
-    const Point2 start = freePointNear(map.hull[0]);
-    const Point2 goal = freePointNear(map.hull[map.hull.size() / 2]);
+    // Start and goal near two hull vertices, out of every hole.
+    const Point2 start = testing::freePointNear(map, map.hull[0]);
+    const Point2 goal = testing::freePointNear(map, map.hull[map.hull.size() / 2]);
     SCOPED_TRACE(::testing::Message() << "trial " << trial << " size " << map_size << " holes "
                                       << map.holes.size() << " width " << width);
     CoveragePlan plan;

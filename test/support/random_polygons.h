@@ -72,5 +72,18 @@ inline PolygonWithHoles randomMap(std::mt19937& rng, double size, int max_holes,
   return map;
 }
 
+/// A start or goal near a hull vertex (in the wall band or beyond it): the vertex scaled
+/// by 0.95 about the origin, pulled towards the origin until it is out of every hole.
+inline Point2 freePointNear(const PolygonWithHoles& map, const Point2& vertex) {
+  Point2 p = 0.95 * vertex;
+  for (int k = 0; k < 20; ++k) {
+    bool in_hole = false;
+    for (const Ring& hole : map.holes) in_hole = in_hole || insideRing(p, hole);
+    if (!in_hole) break;
+    p *= 0.9;
+  }
+  return p;
+}
+
 }  // namespace testing
 }  // namespace kinematic_coverage::core
