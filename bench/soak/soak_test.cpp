@@ -24,7 +24,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
-#include "test/support/random_polygons.h"
+#include "test/support/random_missions.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
@@ -39,16 +39,6 @@ struct SoakOptions {
   std::uint64_t first_seed = 0;
   std::uint64_t last_seed = 0;
   int holes_max = 15;
-};
-
-/// One seed's map, parameters, start and goal.
-struct SoakCase {
-  PolygonWithHoles map;
-  PlannerParameters parameters;
-  Point2 start;
-  Point2 goal;
-  double size_m = 0.0;
-  double footprint_width_m = 0.0;
 };
 
 /// What became of one seed.
@@ -83,28 +73,6 @@ SoakOptions parseOptions(int argc, char** argv) {
   return options;
 }
 
-/// The map and parameters of one seed, drawn as in the planner's random-map test
-/// (issue 2): start and goal near two hull vertices, pulled inwards out of every hole.
-SoakCase makeCase(std::uint64_t seed, int holes_max) {
-  std::mt19937 rng(static_cast<std::mt19937::result_type>(seed));
-  std::uniform_real_distribution<double> size(50.0, 200.0);
-  std::uniform_real_distribution<double> footprint_width(2.0, 12.9);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  SoakCase soak_case;
-  soak_case.size_m = size(rng);
-  soak_case.map = testing::randomMap(rng, soak_case.size_m, holes_max, 2.5);
-  PlannerParameters& parameters = soak_case.parameters;
-  soak_case.footprint_width_m = footprint_width(rng);
-  parameters.sensor_distance =
-      soak_case.footprint_width_m / (2.0 * std::tan(0.5 * parameters.lateral_fov));
-  parameters.wall_distance = 0.5 + unit(rng);
-  parameters.lateral_overlap = 0.2 + 0.4 * unit(rng);
-  const PolygonWithHoles& map = soak_case.map;
-  soak_case.start = testing::freePointNear(map, map.hull[0]);
-  soak_case.goal = testing::freePointNear(map, map.hull[map.hull.size() / 2]);
-  return soak_case;
-}
-
 /// True for the planner's precise rejections of a start or goal the map makes impossible
 /// (inside a hole, or joined to the offset area only through a hole).
 bool isPreciseRejection(const std::string& message) {
@@ -115,11 +83,12 @@ bool isPreciseRejection(const std::string& message) {
 /// Plans, smooths and checks one seed; prints a line for a failure. Adds the planning
 /// time of a plan that was made to `planning_times_s`.
 SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& planning_times_s) {
-  const SoakCase soak_case = makeCase(seed, holes_max);
+  const testing::RandomMission random = testing::randomMission(seed, holes_max);
+  const Mission& mission = random.mission;
   std::ostringstream context;
-  context << "seed " << seed << " (size " << std::fixed << std::setprecision(1) << soak_case.size_m
-          << " m, holes " << soak_case.map.holes.size() << ", footprint "
-          << soak_case.footprint_width_m << " m)";
+  context << "seed " << seed << " (size " << std::fixed << std::setprecision(1) << random.size_m
+          << " m, holes " << mission.polygon.holes.size() << ", footprint "
+          << random.footprint_width_m << " m)";
   const auto fail = [&context](const std::string& why) {
     std::cout << "FAIL " << context.str() << ": " << why << std::endl;
     return SoakOutcome::kFailed;
@@ -127,17 +96,17 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
   try {
     const auto started = std::chrono::steady_clock::now();
     const CoveragePlan plan =
-        CoveragePlanner(soak_case.parameters).plan(soak_case.map, soak_case.start, soak_case.goal);
+        CoveragePlanner(mission.parameters).plan(mission.polygon, mission.start, mission.goal);
     planning_times_s.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(soak_case.parameters).generate(plan.waypoints, soak_case.map);
+        TrajectoryGenerator(mission.parameters).generate(plan.waypoints, mission.polygon);
     if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
       return fail("collision: min_obstacle_clearance_m " +
                   std::to_string(trajectory.min_obstacle_clearance_m));
     }
     const double covered = waypointPathReachableCoveragePercent(
-        soak_case.map, plan.offset_free_area, FrustumSensor::fromParameters(soak_case.parameters),
+        mission.polygon, plan.offset_free_area, FrustumSensor::fromParameters(mission.parameters),
         plan.waypoints, RasterResolution{0.0, 1e-3, 1'000'000});
     if (!(covered >= kMinCoveragePercent)) {
       return fail("reachable coverage " + std::to_string(covered) + " %");

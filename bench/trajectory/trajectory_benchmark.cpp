@@ -1,7 +1,9 @@
 // Issue 4's benchmark: smoothing (Algorithm 1), sampling and timing a 10 000-waypoint
 // boustrophedon path (lanes 100 m long and 2 m apart, r = 1 m, 20 rectangular obstacles
 // beside the lanes). Prints the median, minimum and maximum of 21 runs of each stage; the
-// pose buffer is reused between runs, as the smooth_trajectory_generator node does.
+// pose buffer is reused between runs, as the smooth_trajectory_generator node does. The
+// global strategy's smoothing (issue 10, GlobalPathSmoother with the default options) is
+// timed on the same path as a separate row, not part of the total.
 //
 //   trajectory_benchmark
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "trajectory_generation_tools/smoothing/global_path_smoother.h"
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
 #include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
 #include "trajectory_generation_tools/trajectory/trajectory_timing.h"
@@ -55,7 +58,10 @@ int main() {
   const kinematic_coverage::core::TrajectorySampler sampler(parameters);
   const kinematic_coverage::core::TrajectoryTiming timing(parameters);
 
-  std::vector<double> smooth_ms, sample_ms, time_ms, total_ms;
+  std::vector<double> smooth_ms, sample_ms, time_ms, total_ms, global_ms;
+  const kinematic_coverage::core::GlobalSmoothingOptions global_options =
+      kinematic_coverage::core::GlobalSmoothingOptions::fromParameters(parameters);
+  int global_smoothed = 0;
   kinematic_coverage::core::SmoothedPath path;
   std::vector<kinematic_coverage::core::TrajectoryPose> poses;
   double traversal_time_s = 0.0;
@@ -71,15 +77,23 @@ int main() {
     sample_ms.push_back(std::chrono::duration<double, std::milli>(sampled - smoothed).count());
     smooth_ms.push_back(std::chrono::duration<double, std::milli>(smoothed - start).count());
     total_ms.push_back(millisecondsSince(start));
+    const Clock::time_point global_start = Clock::now();
+    global_smoothed = kinematic_coverage::core::GlobalPathSmoother(area, global_options)
+                          .smooth(waypoints)
+                          .statistics.turns_smoothed;
+    global_ms.push_back(millisecondsSince(global_start));
   }
   std::printf("%zu waypoints, %zu primitives, %zu poses, %d of %d turns smoothed, %.1f s\n",
               waypoints.size(), path.primitives.size(), poses.size(),
               path.statistics.turns_smoothed, path.statistics.turns_total, traversal_time_s);
+  std::printf("global strategy: %d of %d turns smoothed\n", global_smoothed,
+              path.statistics.turns_total);
   std::printf("| stage | median ms | min ms | max ms |\n|---|---|---|---|\n");
   const std::pair<const char*, std::vector<double>*> stages[] = {{"smoothing", &smooth_ms},
                                                                  {"sampling", &sample_ms},
                                                                  {"timing", &time_ms},
-                                                                 {"total", &total_ms}};
+                                                                 {"total", &total_ms},
+                                                                 {"global smoothing", &global_ms}};
   for (const auto& [name, times] : stages) {
     const Summary summary = summarize(*times);
     std::printf("| %s | %.2f | %.2f | %.2f |\n", name, summary.median, summary.min, summary.max);

@@ -29,7 +29,8 @@ std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
   const SmoothingStatistics& turns = trajectory.statistics;
   out << (parameters.smoothing ? "smooth: " : "trajectory: ") << turns.turns_smoothed << " of "
       << turns.turns_total << " turns smoothed (inner " << turns.inner << ", outer bisector "
-      << turns.outer_bisector << ", outer tangent " << turns.outer_tangent << "), "
+      << turns.outer_bisector << ", outer tangent " << turns.outer_tangent << ", reverse curve "
+      << turns.reverse_curve << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
       << trajectory.poses.size() << " poses, " << formatNumber(trajectory.traversal_time_s)
       << " s (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 

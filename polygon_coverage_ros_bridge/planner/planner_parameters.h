@@ -22,10 +22,15 @@ struct PlannerParameters {
   double lateral_overlap = 0.4;                      ///< fraction in [0, 1)
   bool smoothing = true;                             ///< false: segments and rotations
   double turning_radius = 1.0;                       ///< m
-  double segment_sampling_distance = 0.5;            ///< m
-  double arc_sampling_distance = 0.1;                ///< m
-  double rotation_sampling_angle = 0.2;              ///< rad
-  std::string replanning_method = "footprint";       ///< "convex_hull", "concave_hull", "footprint"
+  /// "global": every corner's smoothing chosen jointly, minimising traversal time;
+  /// "local": the thesis's Algorithm 1, corner by corner (issue 10).
+  std::string smoothing_strategy = "global";
+  double min_turning_radius = 0.0;         ///< m, global only; 0: equal to turning_radius
+  bool coverage_preserving = false;        ///< global only: smooth only where nothing goes unseen
+  double segment_sampling_distance = 0.5;  ///< m
+  double arc_sampling_distance = 0.1;      ///< m
+  double rotation_sampling_angle = 0.2;    ///< rad
+  std::string replanning_method = "footprint";  ///< "convex_hull", "concave_hull", "footprint"
   double replanning_sliver_fraction =
       0.2;                           ///< remaining parts narrower than this x sweep spacing go
   double replanning_min_area = 1.0;  ///< m^2, smaller remaining parts go

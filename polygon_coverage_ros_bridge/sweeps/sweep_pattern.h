@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
@@ -27,20 +28,27 @@ using TransitionPath = std::function<std::vector<Point2>(const Point2&, const Po
 /// s = (1 - overlap) W apart, the outermost within min(s/2, W/2 - L/2) of the cell's sides
 /// (so that the footprint also reaches half a footprint length beyond a wall); the outer
 /// lanes sit at that margin unless neighbours would then be closer than half a sweep
-/// distance, in which case the lanes are spread evenly. Where a
-/// corner of the cell would stay unseen by every lane's swept footprint, an extra lane
-/// is placed through it. Lane ends stop `lane_end_inset` short of the cell's boundary:
-/// where the walls are closer than half a footprint length (wall_distance < L/2), the
-/// footprint still reaches the whole reachable band from max(0, L/2 - wall_distance)
-/// inside.
+/// distance, in which case the lanes are spread evenly. Where a corner of the cell would
+/// stay unseen by every lane's swept footprint, an extra lane is placed through it. The
+/// lanes' flanks (the sides within 15 degrees of the direction) are then checked along the
+/// lanes' whole extent (issue 11): a point of a flank that lies alongside one of its two
+/// neighbouring lanes (between that lane's ends) must lie in some lane's swept footprint;
+/// where a flank slants away from the lanes and leaves such points unseen, a lane is moved
+/// or one is added until every such point is seen. A corner moves a lane only when that
+/// leaves no more of the flanks unseen. Lane ends stop `lane_end_inset` short of the
+/// cell's boundary: where the walls are closer than half a footprint length
+/// (wall_distance < L/2), the footprint still reaches the whole reachable band from
+/// max(0, L/2 - wall_distance) inside.
 class SweepPatternGenerator {
  public:
   explicit SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset = 0.0)
       : sensor_(sensor), lane_end_inset_(lane_end_inset) {}
 
   /// As above; only corners that are vertices of `area` (the decomposed area) get extra
-  /// lanes: a corner made by a decomposition cut lies on the neighbouring cell's side,
-  /// which that cell's lanes see.
+  /// lanes, and only the parts of a cell's sides that lie on the area's boundary are
+  /// checked, except within W/2 - margin of a decomposition cut: a cut lies on the
+  /// neighbouring cell's side, and that cell's lanes, within the margin of it, see that
+  /// far across it.
   SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
                         const PolygonWithHoles& area);
 
@@ -60,9 +68,18 @@ class SweepPatternGenerator {
   /// True when the corner may need an extra lane (see the constructors).
   bool isAreaVertex(const Point2& corner) const;
 
+  /// The parts of the cell's edges that lie on the area's boundary (every edge without an
+  /// area), less the points within `cut_reach` of the parts that are decomposition cuts.
+  std::vector<std::pair<Point2, Point2>> sidesToSee(const Ring& cell, double cut_reach) const;
+
+  /// The parameter intervals in [0, 1] of the edge a + t (b - a) that lie on area edges.
+  std::vector<std::pair<double, double>> onAreaBoundary(const Point2& a, const Point2& b) const;
+
   FrustumSensor sensor_;
   double lane_end_inset_;
-  std::vector<Point2> area_vertices_;  ///< sorted by x; empty: every corner counts
+  std::vector<Point2> area_vertices_;                  ///< sorted by x; empty: every corner counts
+  std::vector<std::pair<Point2, Point2>> area_edges_;  ///< sorted by their smaller x
+  double widest_area_edge_ = 0.0;                      ///< largest x extent of an area edge
   double vertex_tolerance_ = 0.0;
 };
 

@@ -57,6 +57,14 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
                             " is out of range: it must be in [0, 1)");
   }
   requirePositive("turning_radius", p.turning_radius, "m");
+  requireOneOf("smoothing_strategy", p.smoothing_strategy, {"global", "local"});
+  if (!(std::isfinite(p.min_turning_radius) && p.min_turning_radius >= 0.0 &&
+        p.min_turning_radius <= p.turning_radius)) {
+    throw InvalidInputError(
+        "min_turning_radius = " + formatNumber(p.min_turning_radius) +
+        " is out of range: it must be in (0, turning_radius = " + formatNumber(p.turning_radius) +
+        "], or 0 for equal to turning_radius (m)");
+  }
   requirePositive("segment_sampling_distance", p.segment_sampling_distance, "m");
   requirePositive("arc_sampling_distance", p.arc_sampling_distance, "m");
   requirePositive("rotation_sampling_angle", p.rotation_sampling_angle, "rad");

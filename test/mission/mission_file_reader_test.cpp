@@ -79,6 +79,9 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"lateral_overlap", "0.25"},
       {"smoothing", "false"},
       {"turning_radius", "3.5"},
+      {"smoothing_strategy", "local"},
+      {"min_turning_radius", "1.5"},
+      {"coverage_preserving", "true"},
       {"segment_sampling_distance", "0.25"},
       {"arc_sampling_distance", "0.05"},
       {"rotation_sampling_angle", "0.1"},
@@ -116,6 +119,9 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.lateral_overlap, 0.25);
   EXPECT_FALSE(p.smoothing);
   EXPECT_EQ(p.turning_radius, 3.5);
+  EXPECT_EQ(p.smoothing_strategy, "local");
+  EXPECT_EQ(p.min_turning_radius, 1.5);
+  EXPECT_TRUE(p.coverage_preserving);
   EXPECT_EQ(p.segment_sampling_distance, 0.25);
   EXPECT_EQ(p.arc_sampling_distance, 0.05);
   EXPECT_EQ(p.rotation_sampling_angle, 0.1);

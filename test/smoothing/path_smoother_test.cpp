@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "test/smoothing/smoothing_oracle.h"
@@ -11,43 +10,6 @@
 
 namespace kinematic_coverage::core {
 namespace {
-
-Ring squareHull(const Point2& centre, double half) {
-  return {centre + Point2(-half, -half), centre + Point2(half, -half), centre + Point2(half, half),
-          centre + Point2(-half, half)};
-}
-
-Ring rectangleHole(const Point2& low, const Point2& high) {
-  return {low, {low.x(), high.y()}, high, {high.x(), low.y()}};
-}
-
-/// Checks the path's continuity: every primitive starts where the previous one ends, with
-/// the heading it ended with (rotations turn from the arriving heading to the leaving one);
-/// the statistics match the primitives.
-void expectContinuousPath(const SmoothedPath& path, double scale) {
-  const std::vector<PathPrimitive>& p = path.primitives;
-  int rotations = 0;
-  int arcs = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Pose2 start = p[i].startPose();
-    const Pose2 end = p[i].endPose();
-    ASSERT_TRUE(std::isfinite(start.x + start.y + start.yaw + end.x + end.y + end.yaw));
-    if (p[i].kind() == PrimitiveKind::kRotation) ++rotations;
-    if (p[i].kind() == PrimitiveKind::kSegment) EXPECT_EQ(p[i].variant(), SmoothingVariant::kNone);
-    if (p[i].kind() == PrimitiveKind::kArc) {
-      EXPECT_NE(p[i].variant(), SmoothingVariant::kNone);
-      ++arcs;
-    }
-    if (i == 0) continue;
-    // Positions everywhere; headings too, since sharp corners turn by an explicit rotation.
-    EXPECT_LE((p[i - 1].end() - p[i].start()).norm(), testing::kRelativeGap * scale) << i;
-    EXPECT_LE(testing::headingGap(p[i - 1].endPose().yaw, start.yaw), testing::kHeadingGap) << i;
-  }
-  const SmoothingStatistics& s = path.statistics;
-  EXPECT_EQ(rotations, s.turns_total - s.turns_smoothed);
-  EXPECT_EQ(s.turns_smoothed, s.inner + s.outer_bisector + s.outer_tangent);
-  EXPECT_EQ(arcs, s.inner + 3 * (s.outer_bisector + s.outer_tangent));
-}
 
 TEST(PathSmoother, RejectsInvalidInput) {
   EXPECT_THROW(PathSmoother({}, 0.0), InvalidInputError);
@@ -93,7 +55,7 @@ TEST(PathSmoother, ReversalsShortLegsAndPosesGiveAContinuousPath) {
   const std::vector<Point2> points{{0, 0},     {10, 0},    {0, 0},    {0, 1.5},
                                    {1.5, 1.5}, {1.5, 1.8}, {-5, 1.9}, {-5, 8}};
   const SmoothedPath path = smoother.smooth(points);
-  expectContinuousPath(path, 10.0);
+  testing::expectContinuousPath(path, 10.0);
   EXPECT_EQ(path.statistics.turns_total, 6);
   EXPECT_GE(path.statistics.turns_smoothed, 3);
   std::vector<Pose2> poses;
@@ -109,14 +71,14 @@ TEST(PathSmoother, ExampleUsesEveryVariant) {
   // 1.5 r leg after it (outer, tangent intersection boundary, ending exactly at (21.5, 20),
   // which then has no leg left to smooth and stays sharp).
   PolygonWithHoles area;
-  area.hull = squareHull({20, 20}, 40);
-  area.holes.push_back(rectangleHole({19.35, 10.25}, {19.75, 10.65}));  // inside (20, 10)
-  area.holes.push_back(rectangleHole({20.25, 19.35}, {20.65, 19.75}));  // inside (20, 20)
+  area.hull = testing::squareHull({20, 20}, 40);
+  area.holes.push_back(testing::rectangleHole({19.35, 10.25}, {19.75, 10.65}));  // inside (20, 10)
+  area.holes.push_back(testing::rectangleHole({20.25, 19.35}, {20.65, 19.75}));  // inside (20, 20)
   const std::vector<Point2> points{{0, 0},   {10, 0},    {10, 10},  {20, 10},
                                    {20, 20}, {21.5, 20}, {21.5, 30}};
   const PathSmoother smoother(area, 1.0);
   const SmoothedPath path = smoother.smooth(points);
-  expectContinuousPath(path, 40.0);
+  testing::expectContinuousPath(path, 40.0);
   EXPECT_EQ(path.statistics.turns_total, 5);
   EXPECT_EQ(path.statistics.inner, 2);
   EXPECT_EQ(path.statistics.outer_bisector, 1);
@@ -140,57 +102,10 @@ TEST(PathSmoother, BoustrophedonIsFullySmoothed) {
   PolygonWithHoles area;
   area.hull = {{-5, -5}, {45, -5}, {45, 105}, {-5, 105}};
   const SmoothedPath path = PathSmoother(area, 1.0).smooth(lanes);
-  expectContinuousPath(path, 100.0);
+  testing::expectContinuousPath(path, 100.0);
   EXPECT_EQ(path.statistics.turns_total, 38);
   EXPECT_EQ(path.statistics.turns_smoothed, 38);
   EXPECT_EQ(path.statistics.inner, 38);
-}
-
-TEST(PathSmootherProperties, RandomPathsAreContinuousAndFree) {
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  int smoothed = 0;
-  for (int trial = 0; trial < 300; ++trial) {
-    PolygonWithHoles area;
-    area.hull = squareHull({0, 0}, 60);
-    for (int k = 0; k < 6; ++k) {
-      const Point2 low(80 * unit(rng) - 40, 80 * unit(rng) - 40);
-      area.holes.push_back(rectangleHole(low, low + Point2(1 + 4 * unit(rng), 1 + 4 * unit(rng))));
-      // Keep holes disjoint: drop one that overlaps an earlier one.
-      for (std::size_t j = 0; j + 1 < area.holes.size(); ++j) {
-        const Ring& a = area.holes[j];
-        const Ring& b = area.holes.back();
-        if (a[0].x() <= b[2].x() && b[0].x() <= a[2].x() && a[0].y() <= b[2].y() &&
-            b[0].y() <= a[2].y()) {
-          area.holes.pop_back();
-          break;
-        }
-      }
-    }
-    std::vector<Point2> points;
-    for (int k = 0; k < 30; ++k) {
-      if (!points.empty() && unit(rng) < 0.1) {
-        points.push_back(points.back());  // duplicate
-      } else if (points.size() >= 2 && unit(rng) < 0.1) {
-        points.push_back(points.back() + (points.back() - points[points.size() - 2]));  // straight
-      } else {
-        points.push_back({100 * unit(rng) - 50, 100 * unit(rng) - 50});
-      }
-    }
-    const double r = 0.3 + 3 * unit(rng);
-    const SmoothedPath path = PathSmoother(area, r).smooth(points);
-    SCOPED_TRACE("trial " + std::to_string(trial));
-    expectContinuousPath(path, 150.0);
-    smoothed += path.statistics.turns_smoothed;
-    for (const PathPrimitive& p : path.primitives) {
-      if (p.kind() == PrimitiveKind::kArc) {
-        ASSERT_NE(testing::sampledArcClearance(area, p, 0.01 * r), -1.0);
-        EXPECT_LE(p.curvature(), (1 + 1e-12) / r);
-      }
-    }
-    if (::testing::Test::HasFailure()) return;
-  }
-  EXPECT_GT(smoothed, 1000);
 }
 
 }  // namespace

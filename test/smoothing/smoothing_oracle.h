@@ -11,6 +11,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/smoothing/corner.h"
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
+#include "trajectory_generation_tools/smoothing/path_smoother.h"
 
 namespace kinematic_coverage::core {
 namespace testing {
@@ -19,6 +20,17 @@ namespace testing {
 /// collision index): G1 continuity, curvature, legs, and clearance by dense sampling.
 constexpr double kRelativeGap = 1e-9;  ///< position gap, times the corner's scale
 constexpr double kHeadingGap = 1e-9;   ///< rad
+
+/// The axis-aligned square of half side `half` around `centre`, counter-clockwise.
+inline Ring squareHull(const Point2& centre, double half) {
+  return {centre + Point2(-half, -half), centre + Point2(half, -half), centre + Point2(half, half),
+          centre + Point2(-half, half)};
+}
+
+/// The axis-aligned rectangle from `low` to `high`, clockwise (a hole).
+inline Ring rectangleHole(const Point2& low, const Point2& high) {
+  return {low, {low.x(), high.y()}, high, {high.x(), low.y()}};
+}
 
 inline double cornerScale(const Corner& corner) {
   return std::max(
@@ -68,6 +80,36 @@ inline void expectG1OnLegs(const Corner& corner, const CornerSmoothing& smoothin
     EXPECT_LE((previous.end() - arc.start()).norm(), gap);
     EXPECT_LE(headingGap(previous.endPose().yaw, arc.startPose().yaw), kHeadingGap);
   }
+}
+
+/// Checks a smoothed path's continuity: every primitive starts where the previous one
+/// ends, with the heading it ended with (rotations turn from the arriving heading to the
+/// leaving one); the statistics match the primitives (a reverse curve: two arcs, two
+/// corners).
+inline void expectContinuousPath(const SmoothedPath& path, double scale) {
+  const std::vector<PathPrimitive>& p = path.primitives;
+  int rotations = 0;
+  int arcs = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Pose2 start = p[i].startPose();
+    const Pose2 end = p[i].endPose();
+    ASSERT_TRUE(std::isfinite(start.x + start.y + start.yaw + end.x + end.y + end.yaw));
+    if (p[i].kind() == PrimitiveKind::kRotation) ++rotations;
+    if (p[i].kind() == PrimitiveKind::kSegment) EXPECT_EQ(p[i].variant(), SmoothingVariant::kNone);
+    if (p[i].kind() == PrimitiveKind::kArc) {
+      EXPECT_NE(p[i].variant(), SmoothingVariant::kNone);
+      ++arcs;
+    }
+    if (i == 0) continue;
+    // Positions everywhere; headings too, since sharp corners turn by an explicit rotation.
+    EXPECT_LE((p[i - 1].end() - p[i].start()).norm(), kRelativeGap * scale) << i;
+    EXPECT_LE(headingGap(p[i - 1].endPose().yaw, start.yaw), kHeadingGap) << i;
+  }
+  const SmoothingStatistics& s = path.statistics;
+  EXPECT_EQ(rotations, s.turns_total - s.turns_smoothed);
+  EXPECT_EQ(s.turns_smoothed, s.inner + s.outer_bisector + s.outer_tangent + s.reverse_curve);
+  EXPECT_EQ(s.reverse_curve % 2, 0);
+  EXPECT_EQ(arcs, s.inner + 3 * (s.outer_bisector + s.outer_tangent) + s.reverse_curve);
 }
 
 /// Distance between two closed segments (0 when they cross), in doubles.

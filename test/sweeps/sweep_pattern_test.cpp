@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
@@ -46,6 +49,49 @@ void expectValidLanes(const Ring& cell, double direction, const FrustumSensor& s
     }
     EXPECT_TRUE(seen) << "corner " << corner.transpose();
   }
+}
+
+/// Every point of the cell (a grid over it and points along its edges) lies in the
+/// footprint swept along some lane: within W/2 across the lane and within L/2 beyond its
+/// ends.
+void expectCellSeen(const Ring& cell, double direction, const FrustumSensor& sensor,
+                    const std::vector<std::pair<Point2, Point2>>& lanes) {
+  const Point2 along = directionVector(direction);
+  const Point2 across(along.y(), -along.x());
+  auto seen = [&](const Point2& p) {
+    for (const auto& [a, b] : lanes) {
+      const double lateral = std::abs((p - a).dot(across));
+      const double onward = (p - a).dot(along);
+      if (lateral <= 0.5 * sensor.width() + 1e-7 && onward >= -0.5 * sensor.length() - 1e-7 &&
+          onward <= (b - a).dot(along) + 0.5 * sensor.length() + 1e-7) {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::vector<Point2> points;
+  for (std::size_t i = 0; i < cell.size(); ++i) {
+    const Point2& a = cell[i];
+    const Point2& b = cell[(i + 1) % cell.size()];
+    for (int k = 0; k < 200; ++k) points.push_back(a + (b - a) * (k / 200.0));
+  }
+  Point2 lo = cell.front();
+  Point2 hi = cell.front();
+  for (const Point2& p : cell) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  for (int i = 0; i <= 100; ++i) {
+    for (int j = 0; j <= 100; ++j) {
+      const Point2 p = lo + (hi - lo).cwiseProduct(Point2(i / 100.0, j / 100.0));
+      if (insideRing(p, cell)) points.push_back(p);
+    }
+  }
+  int unseen = 0;
+  for (const Point2& p : points) {
+    if (!seen(p) && ++unseen <= 3) ADD_FAILURE() << "unseen point " << p.transpose();
+  }
+  EXPECT_EQ(unseen, 0) << "of " << points.size() << " points";
 }
 
 TEST(SweepPattern, RectangleLaneCountAndMargins) {
@@ -111,6 +157,63 @@ TEST(SweepPattern, MovesANearbyLaneThroughAnUnseenCornerRatherThanAddingOne) {
   const double top = std::max(lanes[0].first.y(), lanes[1].first.y());
   EXPECT_NEAR(top, 26.2131, 1e-6);
   EXPECT_LE(std::abs(lanes[0].first.y() - lanes[1].first.y()), sensor.sweepDistance());
+}
+
+TEST(SweepPattern, LongSideSlantingAwayFromTheLanesIsSeenAlongItsWholeLength) {
+  // Soak seed 3640 (issue 11): a cell of the offset area whose lanes run parallel to its
+  // left side (a decomposition cut) while its right side, a 46 m hull side, slants away
+  // from them by 2 degrees. Its far corner moved the outer lane onto itself, a lane of no
+  // length, and the next lane, 3.8 m from the side at its top, left a strip along the
+  // side unseen (98.2 % reachable coverage).
+  const Ring cell = {{18.64560583, -19.59048921},
+                     {24.06481484, -20.03310404},
+                     {10.10723561, 23.80470563},
+                     {6.896713399, 22.82024788}};
+  const PolygonWithHoles area{{{-24.26386516, -16.08585079},
+                               {24.06481484, -20.03310404},
+                               {10.10723561, 23.80470563},
+                               {-21.74603609, 14.03738487}},
+                              {}};
+  const FrustumSensor sensor(5.379966478, 0.6664397847, 0.2056220888);
+  const Point2 cut = cell[3] - cell[0];
+  const double direction = std::atan2(cut.y(), cut.x());
+  const auto lanes = SweepPatternGenerator(sensor, 0.0, area).lanes(cell, direction);
+  expectCellSeen(cell, direction, sensor, lanes);
+  // One lane more than before: the corner keeps its lane, the flank gets its own.
+  EXPECT_LE(lanes.size(), 3u);
+}
+
+TEST(SweepPattern, RandomCellsWithSlantedSidesAreSeenEverywhere) {
+  // Quadrilaterals with a flat top and bottom, at least a footprint wide, and two long
+  // sides slanting up to 15 degrees away from the lanes, in random directions and sizes,
+  // with random footprints. (A band narrower than the footprint and slanting across the
+  // lanes can leave a wedge between the ends of two lanes; the decomposition sweeps such
+  // a band along it.)
+  std::mt19937 rng(3640);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_real_distribution<double> slant(-std::tan(0.26), std::tan(0.26));
+  int cells = 0;
+  while (cells < 300) {
+    const double width = 2.0 + 10.9 * unit(rng);
+    const FrustumSensor sensor(width, width * (0.05 + 0.2 * unit(rng)), 0.2 + 0.4 * unit(rng));
+    const double height = 20.0 + 40.0 * unit(rng);
+    const double bottom = width + 25.0 * unit(rng);
+    const double left_top = height * slant(rng);
+    const double right_top = bottom + height * slant(rng);
+    const double direction = M_PI * (2.0 * unit(rng) - 1.0);
+    if (right_top - left_top < width) continue;
+    SCOPED_TRACE(::testing::Message() << "cell " << cells);
+    ++cells;
+    Ring cell;
+    for (const Point2& p :
+         std::vector<Point2>{{0.0, 0.0}, {bottom, 0.0}, {right_top, height}, {left_top, height}}) {
+      cell.push_back(fromSweepFrame(p, direction));
+    }
+    if (signedArea(cell) < 0.0) std::reverse(cell.begin(), cell.end());
+    const auto lanes = SweepPatternGenerator(sensor).lanes(cell, direction);
+    expectValidLanes(cell, direction, sensor);
+    expectCellSeen(cell, direction, sensor, lanes);
+  }
 }
 
 TEST(SweepPattern, FourPatternsJoinLanesAtAlternatingEnds) {

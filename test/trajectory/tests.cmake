@@ -1,6 +1,7 @@
 kc_add_gtest(test_trajectory
   test/trajectory/primitive_path_metrics_test.cpp
   test/trajectory/segment_path_builder_test.cpp
+  test/trajectory/trajectory_generator_test.cpp
   test/trajectory/trajectory_csv_writer_test.cpp
   test/trajectory/trajectory_sampler_test.cpp
   test/trajectory/trajectory_timing_test.cpp

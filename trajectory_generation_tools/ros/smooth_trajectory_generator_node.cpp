@@ -90,8 +90,10 @@ void SmoothTrajectoryGeneratorNode::generate() {
     std::ostringstream summary;
     summary << turns.turns_smoothed << " of " << turns.turns_total << " turns smoothed (inner "
             << turns.inner << ", outer bisector " << turns.outer_bisector << ", outer tangent "
-            << turns.outer_tangent << "), " << trajectory.poses.size() << " poses, "
-            << trajectory.trajectory_length_m << " m, " << trajectory.traversal_time_s << " s";
+            << turns.outer_tangent << ", reverse curve " << turns.reverse_curve
+            << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
+            << trajectory.poses.size() << " poses, " << trajectory.trajectory_length_m << " m, "
+            << trajectory.traversal_time_s << " s";
     const double duration_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ROS_INFO("smooth_trajectory_generator: smooth: %s (%.3f s)", summary.str().c_str(), duration_s);

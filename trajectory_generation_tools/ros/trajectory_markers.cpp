@@ -44,6 +44,7 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
   visualization_msgs::Marker inner = lineList("arcs_inner", header, 0.1f, 0.7f, 0.2f);
   visualization_msgs::Marker bisector = lineList("arcs_outer_bisector", header, 0.1f, 0.3f, 0.9f);
   visualization_msgs::Marker tangent = lineList("arcs_outer_tangent", header, 0.8f, 0.1f, 0.8f);
+  visualization_msgs::Marker reverse = lineList("arcs_reverse_curve", header, 0.1f, 0.7f, 0.7f);
   visualization_msgs::Marker rotations = lineList("rotations", header, 0.9f, 0.1f, 0.1f);
   rotations.type = visualization_msgs::Marker::SPHERE_LIST;
   rotations.scale.x = rotations.scale.y = rotations.scale.z = 0.3;
@@ -60,6 +61,7 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
         visualization_msgs::Marker& marker =
             primitive.variant() == core::SmoothingVariant::kOuterBisector  ? bisector
             : primitive.variant() == core::SmoothingVariant::kOuterTangent ? tangent
+            : primitive.variant() == core::SmoothingVariant::kReverseCurve ? reverse
                                                                            : inner;
         const int steps =
             std::max(1, static_cast<int>(std::ceil(std::abs(primitive.sweep()) / kArcDrawingStep)));
@@ -75,7 +77,8 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
   }
   visualization_msgs::MarkerArray markers;
   markers.markers.push_back(deleteAllMarker(header));
-  for (visualization_msgs::Marker* marker : {&segments, &inner, &bisector, &tangent, &rotations}) {
+  for (visualization_msgs::Marker* marker :
+       {&segments, &inner, &bisector, &tangent, &reverse, &rotations}) {
     if (!marker->points.empty()) markers.markers.push_back(*marker);
   }
   return markers;

@@ -5,21 +5,24 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/smoothing/boundary_edge_index.h"
+#include "trajectory_generation_tools/smoothing/corner_waypoints.h"
 
 namespace kinematic_coverage::core {
 
-/// Waypoints closer than this (m) to the previous kept one are duplicates and dropped.
-constexpr double kDuplicateWaypointDistance = 1e-9;
-
 /// What smoothing a waypoint path did: turns_total counts the interior waypoints where the
 /// heading changes by more than kStraightTurnTolerance (after dropping duplicates),
-/// turns_smoothed those replaced by arcs, split by variant.
+/// turns_smoothed those replaced by arcs, split by variant (counting corners);
+/// kept_for_coverage the corners
+/// that a feasible smoothing could have replaced but that coverage-preserving smoothing
+/// left sharp because every such smoothing would see less than the sharp turn.
 struct SmoothingStatistics {
   int turns_total = 0;
   int turns_smoothed = 0;
   int inner = 0;
   int outer_bisector = 0;
   int outer_tangent = 0;
+  int reverse_curve = 0;  ///< corners taken by reverse curves (two per curve; global only)
+  int kept_for_coverage = 0;
 };
 
 /// A drivable path and how it was made.
@@ -41,7 +44,8 @@ class PathSmoother {
   PathSmoother(const PolygonWithHoles& free_area, double turning_radius);
 
   /// The smoothed path through `waypoints`. Duplicate waypoints are dropped and straight
-  /// ones (heading change <= kStraightTurnTolerance) merged into their legs; fewer than two
+  /// ones (heading change <= kStraightTurnTolerance) merged into their legs
+  /// (cornerWaypoints); fewer than two
   /// distinct waypoints give no primitives. Throws InvalidInputError for a non-finite
   /// coordinate.
   SmoothedPath smooth(const std::vector<Point2>& waypoints) const;

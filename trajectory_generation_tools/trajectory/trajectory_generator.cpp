@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "trajectory_generation_tools/smoothing/global_path_smoother.h"
 #include "trajectory_generation_tools/trajectory/primitive_path_metrics.h"
 #include "trajectory_generation_tools/trajectory/segment_path_builder.h"
 #include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
@@ -27,11 +28,27 @@ SmoothingStatistics segmentPathStatistics(const std::vector<PathPrimitive>& path
 
 }  // namespace
 
+SmoothedPath TrajectoryGenerator::smoothedPath(const std::vector<Pose2>& waypoints,
+                                               const PolygonWithHoles& free_area) const {
+  SmoothedPath local = PathSmoother(free_area, parameters_.turning_radius).smooth(waypoints);
+  if (parameters_.smoothing_strategy == "local") return local;
+  SmoothedPath global =
+      GlobalPathSmoother(free_area, GlobalSmoothingOptions::fromParameters(parameters_))
+          .smooth(waypoints);
+  if (parameters_.coverage_preserving) return global;
+  // The global programme's cost is exact except where a leg piece is too short for the
+  // speed change between its neighbours; the exact times settle those few cases, so that
+  // the global strategy is never slower than Algorithm 1.
+  const TrajectoryTiming timing(parameters_);
+  return timing.traversalTime(global.primitives) <= timing.traversalTime(local.primitives) ? global
+                                                                                           : local;
+}
+
 GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& waypoints,
                                                   const PolygonWithHoles& free_area) const {
   GeneratedTrajectory trajectory;
   if (parameters_.smoothing) {
-    SmoothedPath smoothed = PathSmoother(free_area, parameters_.turning_radius).smooth(waypoints);
+    SmoothedPath smoothed = smoothedPath(waypoints, free_area);
     trajectory.path = std::move(smoothed.primitives);
     trajectory.statistics = smoothed.statistics;
   } else {

@@ -23,9 +23,10 @@ struct GeneratedTrajectory {
   double min_obstacle_clearance_m = 0.0;
 };
 
-/// Turns a waypoint path into a trajectory (Thesis sections 3.2 and 3.3): Algorithm 1's
-/// smoothing against the raw hull and holes (or, with `smoothing: false`, segments with
-/// in-place rotations), sampling, and timing with v_max, a_max and yaw_rate_max.
+/// Turns a waypoint path into a trajectory (Thesis sections 3.2 and 3.3): smoothing against
+/// the raw hull and holes by `smoothing_strategy` (Algorithm 1, PathSmoother, or the
+/// global GlobalPathSmoother; with `smoothing: false`, segments with in-place rotations),
+/// sampling, and timing with v_max, a_max and yaw_rate_max.
 class TrajectoryGenerator {
  public:
   explicit TrajectoryGenerator(const PlannerParameters& parameters) : parameters_(parameters) {}
@@ -36,6 +37,13 @@ class TrajectoryGenerator {
                                const PolygonWithHoles& free_area) const;
 
  private:
+  /// The smoothed path by the strategy of the parameters. Global without coverage
+  /// preservation is never slower than local: where local's exact time is lower (the
+  /// global programme's cost is approximate on legs too short for a speed change), local's
+  /// path is kept.
+  SmoothedPath smoothedPath(const std::vector<Pose2>& waypoints,
+                            const PolygonWithHoles& free_area) const;
+
   PlannerParameters parameters_;
 };
 

@@ -1,0 +1,123 @@
+#include "trajectory_generation_tools/smoothing/global_path_smoother.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "test/smoothing/smoothing_oracle.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+GlobalSmoothingOptions options(double radius, double min_radius) {
+  GlobalSmoothingOptions result;
+  result.turning_radius = radius;
+  result.min_turning_radius = min_radius;
+  return result;
+}
+
+/// Boustrophedon lanes `spacing` apart, 40 m long, in a hull with 5 m of margin.
+std::vector<Point2> lanes(int count, double spacing) {
+  std::vector<Point2> points;
+  for (int i = 0; i < count; ++i) {
+    points.push_back({spacing * i, i % 2 == 0 ? 0.0 : 40.0});
+    points.push_back({spacing * i, i % 2 == 0 ? 40.0 : 0.0});
+  }
+  return points;
+}
+
+PolygonWithHoles lanesHull(int count, double spacing) {
+  PolygonWithHoles area;
+  area.hull = {{-5, -5}, {spacing * count + 5, -5}, {spacing * count + 5, 45}, {-5, 45}};
+  return area;
+}
+
+TEST(GlobalPathSmoother, RejectsInvalidOptions) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(GlobalPathSmoother({}, options(0.0, 0.0)), InvalidInputError);
+  EXPECT_THROW(GlobalPathSmoother({}, options(1.0, 2.0)), InvalidInputError);
+  EXPECT_THROW(GlobalPathSmoother({}, options(1.0, nan)), InvalidInputError);
+  EXPECT_THROW(GlobalPathSmoother({}, options(1.0, -0.5)), InvalidInputError);
+  GlobalSmoothingOptions slow = options(1.0, 1.0);
+  slow.a_max = 0.0;
+  EXPECT_THROW(GlobalPathSmoother({}, slow), InvalidInputError);
+  const GlobalPathSmoother smoother({}, options(1.0, 1.0));
+  EXPECT_THROW(smoother.smooth(std::vector<Point2>{{0, 0}, {nan, 1}}), InvalidInputError);
+}
+
+TEST(GlobalPathSmoother, DegeneratePathsGiveWhatLocalGives) {
+  const GlobalPathSmoother smoother({}, options(1.0, 1.0));
+  EXPECT_TRUE(smoother.smooth(std::vector<Point2>{}).primitives.empty());
+  EXPECT_TRUE(smoother.smooth(std::vector<Point2>{{1, 1}, {1, 1}}).primitives.empty());
+  const SmoothedPath straight =
+      smoother.smooth(std::vector<Point2>{{0, 0}, {1, 1}, {2, 2}, {2, 2}, {5, 5}});
+  ASSERT_EQ(straight.primitives.size(), 1u);
+  EXPECT_EQ(straight.statistics.turns_total, 0);
+  // A reversal and legs far shorter than r.
+  const SmoothedPath reversal = smoother.smooth(
+      std::vector<Point2>{{0, 0}, {10, 0}, {0, 0}, {0, 0.2}, {0.2, 0.2}, {0.2, 0.4}, {5, 5}});
+  testing::expectContinuousPath(reversal, 10.0);
+  EXPECT_EQ(reversal.statistics.turns_total, 5);
+}
+
+TEST(GlobalPathSmoother, JogBetweenLanesIsAReverseCurve) {
+  // The lake mission's lane extension: left, 1 m across, right, with r = 1.
+  const std::vector<Point2> jog{{0, 0}, {20, 0}, {20, 1}, {40, 1}};
+  const SmoothedPath global = GlobalPathSmoother({}, options(1.0, 1.0)).smooth(jog);
+  testing::expectContinuousPath(global, 40.0);
+  EXPECT_EQ(global.statistics.turns_total, 2);
+  EXPECT_EQ(global.statistics.turns_smoothed, 2);
+  EXPECT_EQ(global.statistics.reverse_curve, 2);
+}
+
+TEST(GlobalPathSmoother, SmoothsEveryTurnOfABoustrophedon) {
+  const SmoothedPath path =
+      GlobalPathSmoother(lanesHull(20, 2.0), options(1.0, 1.0)).smooth(lanes(20, 2.0));
+  testing::expectContinuousPath(path, 100.0);
+  EXPECT_EQ(path.statistics.turns_total, 38);
+  EXPECT_EQ(path.statistics.turns_smoothed, 38);
+}
+
+TEST(GlobalPathSmoother, TighterRadiusSmoothsCloselySpacedLanes) {
+  // Lanes 1 m apart with r = 1.5: two inner arcs of 1.5 m do not fit in a 1 m U-turn;
+  // with min_turning_radius 0.5 they do.
+  const PolygonWithHoles area = lanesHull(10, 1.0);
+  const std::vector<Point2> points = lanes(10, 1.0);
+  const SmoothedPath fixed = GlobalPathSmoother(area, options(1.5, 1.5)).smooth(points);
+  const SmoothedPath variable = GlobalPathSmoother(area, options(1.5, 0.5)).smooth(points);
+  testing::expectContinuousPath(fixed, 50.0);
+  testing::expectContinuousPath(variable, 50.0);
+  EXPECT_EQ(variable.statistics.turns_smoothed, variable.statistics.turns_total);
+  EXPECT_EQ(variable.statistics.inner, variable.statistics.turns_total);
+  for (const PathPrimitive& p : variable.primitives) {
+    if (p.kind() != PrimitiveKind::kArc) continue;
+    EXPECT_GE(p.radius(), 0.5 - 1e-12);
+    EXPECT_LE(p.radius(), 1.5 + 1e-12);
+    EXPECT_GT(testing::sampledArcClearance(area, p, 0.005), 1e-9);
+  }
+  EXPECT_LT(fixed.statistics.inner, variable.statistics.inner);
+}
+
+TEST(GlobalPathSmoother, CoveragePreservingKeepsAcuteInnerCornersSharp) {
+  // A zigzag with acute corners and lanes one footprint apart (no overlap): inner arcs
+  // cut the corners' tips, which the sharp path saw.
+  const FrustumSensor sensor(4.0, 3.0, 0.0);
+  PolygonWithHoles area;
+  area.hull = {{-10, -10}, {50, -10}, {50, 30}, {-10, 30}};
+  const std::vector<Point2> zigzag{{0, 0}, {30, 0}, {0, 4}, {30, 8}, {0, 12}};
+  GlobalSmoothingOptions preserving = options(2.0, 2.0);
+  preserving.preserved_sensor = sensor;
+  const SmoothedPath plain = GlobalPathSmoother(area, options(2.0, 2.0)).smooth(zigzag);
+  const SmoothedPath kept = GlobalPathSmoother(area, preserving).smooth(zigzag);
+  testing::expectContinuousPath(kept, 50.0);
+  EXPECT_GT(plain.statistics.inner, 0);
+  EXPECT_EQ(kept.statistics.inner, 0);
+  EXPECT_GT(kept.statistics.kept_for_coverage, 0);
+  EXPECT_EQ(kept.statistics.turns_smoothed + kept.statistics.kept_for_coverage,
+            kept.statistics.turns_total);
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core

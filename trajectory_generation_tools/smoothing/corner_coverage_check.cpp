@@ -1,0 +1,106 @@
+#include "trajectory_generation_tools/smoothing/corner_coverage_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "trajectory_generation_tools/coverage/coverage_raster.h"
+#include "trajectory_generation_tools/coverage/seen_area.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// At most this many cells per side of the local raster; a larger corner gets coarser cells.
+constexpr double kMaxCellsPerSide = 512.0;
+/// Angle (rad) between the footprints of the in-place rotation, swept exactly between them.
+constexpr double kRotationStep = 0.05;
+
+Pose2 poseAt(const Point2& p, const Point2& heading) {
+  return {p.x(), p.y(), std::atan2(heading.y(), heading.x())};
+}
+
+}  // namespace
+
+CornerCoverageCheck::CornerCoverageCheck(const BoundaryEdgeIndex& index,
+                                         const FrustumSensor& sensor)
+    : index_(index), sensor_(sensor) {
+  const double shorter =
+      sensor.length() > 0.0 ? std::min(sensor.width(), sensor.length()) : sensor.width();
+  cell_size_ = shorter / kCellsPerFootprint;
+}
+
+double CornerCoverageCheck::lostArea(const std::vector<Point2>& corner_path,
+                                     const CornerSmoothing& smoothing) const {
+  return measure(corner_path, smoothing).area;
+}
+
+bool CornerCoverageCheck::preserves(const std::vector<Point2>& corner_path,
+                                    const CornerSmoothing& smoothing) const {
+  const Loss loss = measure(corner_path, smoothing);
+  return loss.area <= kToleratedCells * loss.cell_area;
+}
+
+CornerCoverageCheck::Loss CornerCoverageCheck::measure(const std::vector<Point2>& corner_path,
+                                                       const CornerSmoothing& smoothing) const {
+  if (smoothing.arcs.empty() || corner_path.size() < 3) return {};
+  const Point2& a = corner_path[0];
+  const Point2& first = corner_path[1];
+  const Point2& last = corner_path[corner_path.size() - 2];
+  const Point2& c = corner_path.back();
+  const Point2 in = (first - a).normalized();
+  const Point2 out = (c - last).normalized();
+  const double reach = 0.5 * std::hypot(sensor_.width(), sensor_.length());
+  const Point2 before = first - std::min((first - a).norm(), smoothing.entry_distance + reach) * in;
+  const Point2 after = last + std::min((c - last).norm(), smoothing.exit_distance + reach) * out;
+
+  // The smoothed version's poses: straight legs need only their ends (a translated convex
+  // footprint sweeps the hull of its end footprints); arcs are sampled finely.
+  std::vector<Pose2> smoothed{poseAt(before, in)};
+  for (const PathPrimitive& arc : smoothing.arcs) {
+    const int pieces = std::max(1, static_cast<int>(std::ceil(arc.length() / (0.5 * cell_size_))));
+    for (int k = 0; k <= pieces; ++k) smoothed.push_back(arc.poseAt(double(k) / pieces));
+  }
+  smoothed.push_back(poseAt(after, out));
+
+  // The sharp version: the same legs, turning in place at every corner.
+  std::vector<Pose2> sharp_path{poseAt(before, in)};
+  for (std::size_t k = 1; k + 1 < corner_path.size(); ++k) {
+    sharp_path.push_back(poseAt(corner_path[k], corner_path[k] - corner_path[k - 1]));
+  }
+  sharp_path.push_back(poseAt(after, out));
+
+  double x0 = before.x();
+  double x1 = before.x();
+  double y0 = before.y();
+  double y1 = before.y();
+  for (const Pose2& pose : sharp_path) {
+    x0 = std::min(x0, pose.x);
+    x1 = std::max(x1, pose.x);
+    y0 = std::min(y0, pose.y);
+    y1 = std::max(y1, pose.y);
+  }
+  for (const Pose2& pose : smoothed) {
+    x0 = std::min(x0, pose.x);
+    x1 = std::max(x1, pose.x);
+    y0 = std::min(y0, pose.y);
+    y1 = std::max(y1, pose.y);
+  }
+  const double margin = reach + 2.0 * cell_size_;
+  const double extent = std::max(x1 - x0, y1 - y0) + 2.0 * margin;
+  const double cell = std::max(cell_size_, extent / kMaxCellsPerSide);
+  const int columns = static_cast<int>(std::ceil((x1 - x0 + 2.0 * margin) / cell));
+  const int rows = static_cast<int>(std::ceil((y1 - y0 + 2.0 * margin) / cell));
+  const CoverageRaster raster(Point2(x0 - margin, y0 - margin), cell, columns, rows);
+
+  SeenArea sharp(raster);
+  sharp.addWaypointPath(sharp_path, sensor_, kRotationStep);
+  SeenArea smooth(raster);
+  smooth.addTrajectory(smoothed, sensor_);
+  std::size_t lost = 0;
+  for (std::size_t i = 0; i < raster.cellCount(); ++i) {
+    if (sharp.seen(i) && !smooth.seen(i) && index_.inside(raster.cellCentre(i))) ++lost;
+  }
+  return {static_cast<double>(lost) * raster.cellArea(), raster.cellArea()};
+}
+
+}  // namespace kinematic_coverage::core

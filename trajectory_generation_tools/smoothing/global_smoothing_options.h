@@ -1,0 +1,42 @@
+#pragma once
+
+#include <optional>
+
+#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+
+namespace kinematic_coverage::core {
+
+/// What the global smoothing strategy may choose from and what it minimises (issue 10).
+struct GlobalSmoothingOptions {
+  /// The robot's preferred turning radius r: the largest radius an arc uses (m, > 0).
+  double turning_radius = 1.0;
+  /// The smallest radius a corner may use instead (m, in (0, turning_radius]); a tighter
+  /// arc is driven slower, at min(v_max, yaw_rate_max * radius).
+  double min_turning_radius = 1.0;
+  /// The velocity model (INTERFACE section 5) that the traversal time is minimised under.
+  double v_max = 0.5;
+  double a_max = 0.2;
+  double yaw_rate_max = 0.5;
+  /// Set: coverage-preserving smoothing; a corner is smoothed only where this sensor still
+  /// sees what it saw from the sharp corner (CornerCoverageCheck).
+  std::optional<FrustumSensor> preserved_sensor;
+
+  /// The options that `parameters` give: `min_turning_radius` 0 means equal to
+  /// `turning_radius`; `coverage_preserving` sets the sensor of `parameters`.
+  static GlobalSmoothingOptions fromParameters(const PlannerParameters& parameters) {
+    GlobalSmoothingOptions options;
+    options.turning_radius = parameters.turning_radius;
+    options.min_turning_radius = parameters.min_turning_radius > 0.0 ? parameters.min_turning_radius
+                                                                     : parameters.turning_radius;
+    options.v_max = parameters.v_max;
+    options.a_max = parameters.a_max;
+    options.yaw_rate_max = parameters.yaw_rate_max;
+    if (parameters.coverage_preserving) {
+      options.preserved_sensor = FrustumSensor::fromParameters(parameters);
+    }
+    return options;
+  }
+};
+
+}  // namespace kinematic_coverage::core
