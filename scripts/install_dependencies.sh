@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages that building, testing and running kinematic_coverage
 # need. Idempotent and quiet when everything is installed already.
+# --clang adds clang with libFuzzer and the sanitizer runtimes (scripts/run_fuzzers.sh,
+# scripts/run_sanitizer_tests.sh).
 set -euo pipefail
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
 
@@ -17,6 +19,7 @@ packages=(
   librviz-dev rviz pluginlib-dev qtbase5-dev
   xvfb xauth xdotool x11-utils imagemagick
 )
+if [ "${1:-}" = --clang ]; then packages+=(clang libfuzzer-14-dev libclang-rt-14-dev); fi
 
 missing=()
 for package in "${packages[@]}"; do

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test: installs what is missing, builds in Release, builds the test
-# targets and runs ctest (under a virtual display, for the GUI tests).
+# targets and runs ctest (under a virtual display, for the GUI tests), then a fuzz smoke:
+# every libFuzzer target for 5 s under the sanitizers (scripts/run_fuzzers.sh; its clang
+# build takes about 6 minutes on 2 cores; KC_FUZZ_SMOKE=0 leaves it out).
 set -euo pipefail
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -14,3 +16,7 @@ export ROS_HOSTNAME=localhost ROS_HOME="$build_dir/ros_home" ROSCONSOLE_STDOUT_L
 mkdir -p "$ROS_HOME"
 cd "$build_dir"
 xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j"${JOBS:-2}"
+if [ "${KC_FUZZ_SMOKE:-1}" != 0 ]; then
+  echo "== fuzz smoke"
+  BUILD_DIR="$build_dir-fuzz" "$root/scripts/run_fuzzers.sh" --seconds 5
+fi

@@ -5,3 +5,6 @@ target_compile_definitions(planner_peer_benchmark PRIVATE
 
 add_executable(large_hull_benchmark bench/planner/large_hull_benchmark.cpp)
 target_link_libraries(large_hull_benchmark PRIVATE kc_planner)
+
+add_executable(memory_bound_benchmark bench/planner/memory_bound_benchmark.cpp)
+target_link_libraries(memory_bound_benchmark PRIVATE kc_mission kc_planner kc_trajectory)

@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
+#include <string>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
@@ -91,9 +93,39 @@ PolygonWithHoles toPolygonWithHoles(const ExactPolygonWithHoles& polygon) {
   return result;
 }
 
+/// Throws InvalidInputError when the straight skeleton of `ring` would hold more than
+/// kMaxSkeletonPairs vertex pairs (see wall_offset.h); `name` names it ("the hull", "hole 2").
+void checkSkeletonSize(const Ring& ring, const std::string& name) {
+  const std::size_t n = ring.size();
+  const bool counter_clockwise = signedArea(ring) > 0.0;
+  std::size_t reflex = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double turn = cross(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]);
+    if (counter_clockwise ? turn < 0.0 : turn > 0.0) ++reflex;
+  }
+  const double pairs = static_cast<double>(n) * static_cast<double>(reflex);
+  if (pairs <= kMaxSkeletonPairs) return;
+  std::ostringstream message;
+  message << name << " has " << n << " vertices, " << reflex
+          << " of them reflex: its wall offset (a straight skeleton, which keeps data for every "
+             "pair of a vertex and a reflex vertex, about 50 bytes each on a hull) would hold "
+          << static_cast<long long>(pairs) << " pairs, " << std::setprecision(3)
+          << pairs / kMaxSkeletonPairs << " times the limit of "
+          << static_cast<long long>(kMaxSkeletonPairs) << ": simplify " << name
+          << " to fewer vertices (noise far below wall_distance and the sweep distance only adds "
+             "vertices) or plan the area in parts";
+  throw InvalidInputError(message.str());
+}
+
 }  // namespace
 
 OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance) {
+  if (wall_distance > 0.0) {
+    checkSkeletonSize(free_area.hull, "the hull");
+    for (std::size_t i = 0; i < free_area.holes.size(); ++i) {
+      checkSkeletonSize(free_area.holes[i], "hole " + std::to_string(i));
+    }
+  }
   ExactPolygonSet set;
   if (wall_distance <= 0.0) {
     set.insert(toExactCcw(free_area.hull));

@@ -1,5 +1,6 @@
 #include "polygon_coverage_ros_bridge/gtsp/cluster_optimizer.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace kinematic_coverage::core {
@@ -14,18 +15,20 @@ void ClusterOptimizer::propagate(const std::vector<int>& clusters, std::size_t f
     const std::vector<int>& previous = instance_.clusters[clusters[l - 1]];
     const std::vector<int>& current = instance_.clusters[clusters[l]];
     const std::size_t previous_offset = offset_[l - 1];
-    for (std::size_t j = 0; j < current.size(); ++j) {
-      double best = kInfinity;
-      int best_k = 0;
-      for (std::size_t k = 0; k < previous.size(); ++k) {
-        const double d = distance_[previous_offset + k] + instance_.cost(previous[k], current[j]);
-        if (d < best) {
-          best = d;
-          best_k = static_cast<int>(k);
+    // Row by row: the costs from one node to a cluster's nodes are usually adjacent.
+    double* distance = distance_.data() + offset_[l];
+    int* predecessor = predecessor_.data() + offset_[l];
+    std::fill(distance, distance + current.size(), kInfinity);
+    std::fill(predecessor, predecessor + current.size(), 0);
+    for (std::size_t k = 0; k < previous.size(); ++k) {
+      const double base = distance_[previous_offset + k];
+      for (std::size_t j = 0; j < current.size(); ++j) {
+        const double d = base + instance_.cost(previous[k], current[j]);
+        if (d < distance[j]) {
+          distance[j] = d;
+          predecessor[j] = static_cast<int>(k);
         }
       }
-      distance_[offset_[l] + j] = best;
-      predecessor_[offset_[l] + j] = best_k;
     }
   }
 }

@@ -20,6 +20,13 @@ namespace {
 void validateGtspInstance(const GtspInstance& instance) {
   const int n = instance.node_count;
   if (n <= 0) reject("node_count must be positive, got " + std::to_string(n));
+  if (n > kMaxGtspNodes) {
+    std::ostringstream message;
+    message << n << " nodes, " << n - kMaxGtspNodes << " more than the limit of " << kMaxGtspNodes
+            << " (the cost matrix would take " << 8.0 * n * n / (1 << 20)
+            << " MiB): fewer clusters or fewer nodes per cluster";
+    reject(message.str());
+  }
   if (instance.clusters.empty()) reject("no clusters");
   const std::size_t expected = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
   if (instance.costs.size() != expected) {
@@ -53,6 +60,19 @@ void validateGtspInstance(const GtspInstance& instance) {
       message << "cost " << static_cast<long long>(i / n) << " -> " << static_cast<long long>(i % n)
               << " is " << c << " (costs must be finite and >= 0)";
       reject(message.str());
+    }
+  }
+  if (!instance.reverse_nodes.empty()) {
+    if (instance.reverse_nodes.size() != static_cast<std::size_t>(n)) {
+      reject("reverse_nodes has " + std::to_string(instance.reverse_nodes.size()) +
+             " entries, expected none or one per node (" + std::to_string(n) + ")");
+    }
+    for (int node = 0; node < n; ++node) {
+      const int reverse = instance.reverse_nodes[node];
+      if (reverse < 0 || reverse >= n || owner[reverse] != owner[node]) {
+        reject("reverse node " + std::to_string(reverse) + " of node " + std::to_string(node) +
+               " is not in its cluster " + std::to_string(owner[node]));
+      }
     }
   }
   const int m = static_cast<int>(instance.clusters.size());

@@ -17,6 +17,7 @@ GtspLocalSearch::GtspLocalSearch(const GtspInstance& instance, int anchor_cluste
     : instance_(instance),
       cycle_(!instance.isPath()),
       anchor_cluster_(anchor_cluster),
+      reverse_nodes_(instance.reverse_nodes),
       optimizer_(instance) {
   const int m = static_cast<int>(instance.clusters.size());
   cluster_of_.assign(static_cast<std::size_t>(instance.node_count), -1);
@@ -87,7 +88,8 @@ void GtspLocalSearch::index(const std::vector<int>& sequence) {
   backward_prefix_.assign(length, 0.0);
   for (std::size_t i = 0; i + 1 < length; ++i) {
     forward_prefix_[i + 1] = forward_prefix_[i] + cost(sequence[i], sequence[i + 1]);
-    backward_prefix_[i + 1] = backward_prefix_[i] + cost(sequence[i + 1], sequence[i]);
+    backward_prefix_[i + 1] =
+        backward_prefix_[i] + cost(reverse(sequence[i + 1]), reverse(sequence[i]));
   }
 }
 
@@ -186,7 +188,7 @@ bool GtspLocalSearch::orOptPass(std::vector<int>& sequence) {
         const int y = sequence[p + 1];
         const double base = cost(x, y);
         const double forward = cost(x, first) + cost(last, y) - base;
-        const double backward = cost(x, last) + cost(first, y) - base + reversal;
+        const double backward = cost(x, reverse(last)) + cost(reverse(first), y) - base + reversal;
         if (forward < best) {
           best = forward;
           best_edge = p;
@@ -214,7 +216,10 @@ bool GtspLocalSearch::orOptPass(std::vector<int>& sequence) {
       touch(after);
       scratch_.assign(sequence.begin() + static_cast<std::ptrdiff_t>(i),
                       sequence.begin() + static_cast<std::ptrdiff_t>(j + 1));
-      if (best_reversed) std::reverse(scratch_.begin(), scratch_.end());
+      if (best_reversed) {
+        std::reverse(scratch_.begin(), scratch_.end());
+        for (int& node : scratch_) node = reverse(node);
+      }
       sequence.erase(sequence.begin() + static_cast<std::ptrdiff_t>(i),
                      sequence.begin() + static_cast<std::ptrdiff_t>(j + 1));
       std::size_t insert_after = best_edge;
@@ -233,16 +238,18 @@ bool GtspLocalSearch::orOptPass(std::vector<int>& sequence) {
 bool GtspLocalSearch::twoOptPass(std::vector<int>& sequence) {
   bool improved = false;
   const std::size_t length = sequence.size();
-  // Removes edges (a, a+1) and (b, b+1), reversing a+1..b.
+  // Removes edges (a, a+1) and (b, b+1), reversing a+1..b (with reverse nodes).
   auto tryMove = [&](std::size_t a, std::size_t b) {
     if (b < a + 2 || b + 2 > length) return false;
-    const double delta = cost(sequence[a], sequence[b]) + cost(sequence[a + 1], sequence[b + 1]) -
+    const double delta = cost(sequence[a], reverse(sequence[b])) +
+                         cost(reverse(sequence[a + 1]), sequence[b + 1]) -
                          cost(sequence[a], sequence[a + 1]) - cost(sequence[b], sequence[b + 1]) +
                          (backward_prefix_[b] - backward_prefix_[a + 1]) -
                          (forward_prefix_[b] - forward_prefix_[a + 1]);
     if (delta >= -epsilon_) return false;
     std::reverse(sequence.begin() + static_cast<std::ptrdiff_t>(a + 1),
                  sequence.begin() + static_cast<std::ptrdiff_t>(b + 1));
+    for (std::size_t k = a + 1; k <= b; ++k) sequence[k] = reverse(sequence[k]);
     touchRange(sequence, static_cast<std::ptrdiff_t>(a), static_cast<std::ptrdiff_t>(b) + 1);
     index(sequence);
     return true;
@@ -273,10 +280,25 @@ bool GtspLocalSearch::twoOptPass(std::vector<int>& sequence) {
   return improved;
 }
 
-double GtspLocalSearch::improve(std::vector<int>& sequence, Clock::time_point deadline) {
+void GtspLocalSearch::touchChanged(const std::vector<int>& sequence) {
+  for (std::size_t i = 0; i < sequence.size(); ++i) {
+    if (sequence[i] != previous_[i]) {
+      touchRange(sequence, static_cast<std::ptrdiff_t>(i) - 1, static_cast<std::ptrdiff_t>(i) + 1);
+    }
+  }
+}
+
+double GtspLocalSearch::improve(std::vector<int>& sequence, Clock::time_point deadline,
+                                const std::vector<char>* focus) {
+  previous_ = sequence;
   double current = optimizeClusters(sequence);
   if (sequence.size() < 3) return current;
-  for (std::vector<char>& look : look_) look.assign(instance_.clusters.size(), 1);
+  if (focus == nullptr) {
+    for (std::vector<char>& look : look_) look.assign(instance_.clusters.size(), 1);
+  } else {
+    for (std::vector<char>& look : look_) look = *focus;
+    touchChanged(sequence);
+  }
   while (Clock::now() < deadline) {
     index(sequence);
     bool improved = reinsertPass(sequence);
@@ -284,12 +306,7 @@ double GtspLocalSearch::improve(std::vector<int>& sequence, Clock::time_point de
     improved = twoOptPass(sequence) || improved;
     previous_ = sequence;
     const double optimized = optimizeClusters(sequence);
-    for (std::size_t i = 0; i < sequence.size(); ++i) {
-      if (sequence[i] != previous_[i]) {
-        touchRange(sequence, static_cast<std::ptrdiff_t>(i) - 1,
-                   static_cast<std::ptrdiff_t>(i) + 1);
-      }
-    }
+    touchChanged(sequence);
     if (!improved && optimized >= current - epsilon_) {
       current = optimized;
       break;

@@ -14,7 +14,8 @@ namespace kinematic_coverage::core {
 /// and backward edge costs) and cluster optimization, repeated to a local optimum.
 /// Candidate positions come from neighbour lists over clusters, so one pass is linear in
 /// the cluster count, and don't-look bits skip clusters whose surroundings did not change
-/// since they last failed to improve.
+/// since they last failed to improve. A stretch that 2-opt or or-opt turns round takes the
+/// instance's reverse nodes (GtspInstance::reverse_nodes) when it has them.
 ///
 /// A tour is a sequence with fixed ends: in path mode start node, interior, goal node; in
 /// cycle mode the anchor cluster's node at both ends. Moves only rearrange the interior;
@@ -28,7 +29,12 @@ class GtspLocalSearch {
   GtspLocalSearch(const GtspInstance& instance, int anchor_cluster, int neighbour_count);
 
   /// Improves sequence in place to a local optimum (or until deadline); returns its cost.
-  double improve(std::vector<int>& sequence, Clock::time_point deadline);
+  /// `focus`, when given (one flag per cluster), names the clusters whose surroundings
+  /// changed since the sequence was last locally optimal (a child's new edges): moves start
+  /// from those clusters only (and from where cluster optimization changes a node), and
+  /// spread as moves succeed. Without it every cluster is looked at.
+  double improve(std::vector<int>& sequence, Clock::time_point deadline,
+                 const std::vector<char>* focus = nullptr);
 
   /// Replaces the nodes of sequence by the best ones for its cluster order; returns the cost.
   double optimizeClusters(std::vector<int>& sequence);
@@ -41,6 +47,10 @@ class GtspLocalSearch {
 
  private:
   double cost(int from, int to) const { return instance_.cost(from, to); }
+  /// The node that traverses `node` backwards (itself without reverse nodes).
+  int reverse(int node) const { return reverse_nodes_.empty() ? node : reverse_nodes_[node]; }
+  /// Touches the clusters around every position where sequence differs from previous_.
+  void touchChanged(const std::vector<int>& sequence);
   /// Refreshes positions and prefix sums after a change of the sequence.
   void index(const std::vector<int>& sequence);
   /// Calls visit(position) for each position of cluster c (two for the cycle's anchor).
@@ -59,10 +69,11 @@ class GtspLocalSearch {
   const int anchor_cluster_;
   double epsilon_ = 0.0;
   std::vector<int> cluster_of_;
+  const std::vector<int>& reverse_nodes_;
   std::vector<std::vector<int>> neighbours_;
   std::vector<int> position_;
   std::vector<double> forward_prefix_;
-  std::vector<double> backward_prefix_;
+  std::vector<double> backward_prefix_;  ///< the same stretch run backwards (reverse nodes)
   std::vector<int> clusters_buffer_;
   std::vector<int> nodes_buffer_;
   std::vector<int> scratch_;

@@ -265,6 +265,11 @@ class Parser {
   void readSets(int line) {
     requireDimension(line, "GTSP_SET_SECTION");
     if (set_count_ < 0) fail(line, "GTSP_SET_SECTION before GTSP_SETS");
+    // Every set holds a node of its own; checked before the per-set tables are allocated.
+    if (set_count_ > dimension_) {
+      fail(line, "GTSP_SETS " + std::to_string(set_count_) + " exceeds DIMENSION " +
+                     std::to_string(dimension_) + " (every set needs a node)");
+    }
     const std::vector<NumberToken> numbers = readNumbers();
     std::vector<std::vector<int>>& clusters = problem_.instance.clusters;
     clusters.assign(static_cast<std::size_t>(set_count_), {});

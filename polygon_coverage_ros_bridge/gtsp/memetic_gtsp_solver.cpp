@@ -10,15 +10,18 @@ namespace {
 constexpr int kDefaultNeighbourCount = 20;
 /// Share of children made by crossover (the others by mutation of one parent).
 constexpr double kCrossoverShare = 0.8;
-/// Population when not given: kPopulationBase + clusters / 2, at most kMaxPopulation.
+/// Population when not given: kPopulationBase + clusters / 2, at most
+/// GtspOptions::max_population.
 constexpr int kPopulationBase = 10;
-constexpr int kMaxPopulation = 100;
 /// Generations without improvement before stopping, when not given: kStallBase +
 /// clusters / 3, clamped to [kMinStallGenerations, kMaxStallGenerations].
 constexpr int kStallBase = 20;
 constexpr int kMinStallGenerations = 30;
 constexpr int kMaxStallGenerations = 80;
 
+/// Clusters above which GtspOptions::focused_search applies: smaller instances keep the
+/// full search, which is cheap there and finds the optimum of every small test instance.
+constexpr int kFocusedSearchMinClusters = 50;
 /// Tours whose costs differ by less than this (relative) count as equal: duplicates in the
 /// population, and no improvement for the stopping rule.
 constexpr double kRelativeCostTolerance = 1e-9;
@@ -119,6 +122,32 @@ void MemeticGtspSolver::mutate(std::vector<int>& sequence) {
               sequence.begin() + 1 + static_cast<std::ptrdiff_t>(cuts[2]));
 }
 
+void MemeticGtspSolver::markNewEdges(const std::vector<int>& child, const std::vector<int>& first,
+                                     const std::vector<int>* second) {
+  const std::size_t m = instance_.clusters.size();
+  auto successors = [&](const std::vector<int>& sequence, std::vector<int>& successor) {
+    successor.assign(m, -1);
+    for (std::size_t i = 0; i + 1 < sequence.size(); ++i) {
+      successor[search_.clusterOf(sequence[i])] = search_.clusterOf(sequence[i + 1]);
+    }
+  };
+  successors(first, first_successor_);
+  if (second != nullptr) {
+    successors(*second, second_successor_);
+  } else {
+    second_successor_ = first_successor_;
+  }
+  focus_.assign(m, 0);
+  for (std::size_t i = 0; i + 1 < child.size(); ++i) {
+    const int from = search_.clusterOf(child[i]);
+    const int to = search_.clusterOf(child[i + 1]);
+    if (first_successor_[from] != to && second_successor_[from] != to) {
+      focus_[from] = 1;
+      focus_[to] = 1;
+    }
+  }
+}
+
 std::size_t MemeticGtspSolver::tournament(const std::vector<Individual>& population) {
   const std::size_t a = randomIndex(population.size());
   const std::size_t b = randomIndex(population.size());
@@ -140,9 +169,10 @@ GtspSolution MemeticGtspSolver::solve() {
   deadline_ = Clock::now() +
               std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
   const int m = static_cast<int>(instance_.clusters.size());
-  const int population_size = options_.population_size > 0
-                                  ? options_.population_size
-                                  : std::min(kPopulationBase + m / 2, kMaxPopulation);
+  const int population_size =
+      options_.population_size > 0
+          ? options_.population_size
+          : std::max(1, std::min(kPopulationBase + m / 2, options_.max_population));
   const int stall_limit =
       options_.stall_generations > 0
           ? options_.stall_generations
@@ -181,14 +211,20 @@ GtspSolution MemeticGtspSolver::solve() {
     for (int k = 0; k < population_size; ++k) {
       Individual child;
       const std::size_t parent = tournament(population);
+      const std::vector<int>* second = nullptr;
       if (population.size() >= 2 && unit(random_) < kCrossoverShare) {
-        child.sequence =
-            crossover(population[parent].sequence, population[tournament(population)].sequence);
+        second = &population[tournament(population)].sequence;
+        child.sequence = crossover(population[parent].sequence, *second);
       } else {
         child.sequence = population[parent].sequence;
         mutate(child.sequence);
       }
-      child.cost = search_.improve(child.sequence, deadline_);
+      const std::vector<char>* focus = nullptr;
+      if (options_.focused_search && m > kFocusedSearchMinClusters) {
+        markNewEdges(child.sequence, population[parent].sequence, second);
+        focus = &focus_;
+      }
+      child.cost = search_.improve(child.sequence, deadline_, focus);
       pool.push_back(std::move(child));
     }
     std::stable_sort(pool.begin(), pool.end(), byCost);

@@ -13,7 +13,8 @@ namespace kinematic_coverage::core {
 /// population of locally optimal tours (cluster order + one node per cluster), children by
 /// ordered crossover of the cluster orders or by a double-bridge mutation, each improved by
 /// GtspLocalSearch (reinsertion with node choice, or-opt, 2-opt, cluster optimization by a
-/// layered shortest path), (mu + lambda) replacement among tours of distinct cost.
+/// layered shortest path; with GtspOptions::focused_search starting from the child's new
+/// edges), (mu + lambda) replacement among tours of distinct cost.
 ///
 /// Why this design (measured, docs/BENCHMARKS_GTSP.md): with cluster neighbour lists and
 /// don't-look bits one local search costs a few moves per cluster, so a population of up to
@@ -50,6 +51,11 @@ class MemeticGtspSolver {
   std::vector<int> crossover(const std::vector<int>& first, const std::vector<int>& second);
   /// Double bridge: swaps two consecutive random segments of the interior.
   void mutate(std::vector<int>& sequence);
+  /// Sets focus_ to the clusters at either end of an edge of `child` that neither parent
+  /// has (`second` null: a mutation of `first`): the only places where a child of locally
+  /// optimal parents can be improved by a local move, so local search starts there.
+  void markNewEdges(const std::vector<int>& child, const std::vector<int>& first,
+                    const std::vector<int>* second);
   /// Index of the better of two random population members.
   std::size_t tournament(const std::vector<Individual>& population);
   std::size_t randomIndex(std::size_t bound) { return bound <= 1 ? 0 : random_() % bound; }
@@ -61,6 +67,9 @@ class MemeticGtspSolver {
   std::mt19937 random_;
   GtspLocalSearch search_;
   Clock::time_point deadline_;
+  std::vector<int> first_successor_;   ///< per cluster, the next cluster in the first parent
+  std::vector<int> second_successor_;  ///< the same in the second parent
+  std::vector<char> focus_;
 };
 
 }  // namespace kinematic_coverage::core

@@ -32,6 +32,11 @@ constexpr double kRelativeDuplicateTolerance = 1e-9;
 constexpr double kRelativeInsideTolerance = 1e-9;
 /// Clusters up to which the GTSP is solved exactly (Issue 2: exact up to 14 clusters).
 constexpr int kExactClusterLimit = 14;
+/// Population cap of the memetic GTSP solver, half its default; with its focused search
+/// (GtspOptions) the 355-cell lake of docs/RELIABILITY.md (Memory bound) solves in 6-9 s
+/// instead of 15-19 s (60 s, its time cap, with neither), for tours 0.1-0.4 % costlier than
+/// a population of 100 finds. Only instances of more than 80 cells have a larger default.
+constexpr int kGtspMaxPopulation = 50;
 /// Parts of a coverage region smaller than this share of a square sweep distance are
 /// left out: rounding leftovers of the Boolean operations, not area to sweep.
 constexpr double kMinPartShare = 1e-4;
@@ -114,8 +119,36 @@ Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& off
   return entry;
 }
 
+/// Start and goal: the generalized TSP's nodes 0 and 1, before the sweep patterns.
+constexpr std::size_t kTerminalNodes = 2;
+
+/// For every pattern, the pattern of the same cell and direction that runs its path the
+/// other way (start and end swapped), or itself: GtspInstance::reverse_nodes (node k + 2
+/// for pattern k; start and goal are their own reverses).
+std::vector<int> reverseNodes(const std::vector<SweepPattern>& patterns,
+                              const std::vector<std::vector<int>>& clusters) {
+  std::vector<int> reverse(patterns.size() + kTerminalNodes);
+  for (std::size_t node = 0; node < reverse.size(); ++node) reverse[node] = static_cast<int>(node);
+  for (const std::vector<int>& cluster : clusters) {
+    for (int node : cluster) {
+      if (node < static_cast<int>(kTerminalNodes)) continue;
+      const SweepPattern& pattern = patterns[static_cast<std::size_t>(node) - kTerminalNodes];
+      for (int other : cluster) {
+        const SweepPattern& candidate = patterns[static_cast<std::size_t>(other) - kTerminalNodes];
+        if (candidate.direction == pattern.direction && candidate.start() == pattern.end() &&
+            candidate.end() == pattern.start()) {
+          reverse[static_cast<std::size_t>(node)] = other;
+          break;
+        }
+      }
+    }
+  }
+  return reverse;
+}
+
 /// Drops repeated waypoints and waypoints where the path goes straight on, except the
-/// protected ones (entry and exit of the offset free area).
+/// protected ones (entry and exit of the offset free area). The first and last points (the
+/// start and the goal) stay exactly where they are.
 std::vector<Point2> simplifiedPath(const std::vector<Point2>& path, const std::vector<bool>& keep,
                                    double tolerance) {
   std::vector<Point2> points;
@@ -123,6 +156,13 @@ std::vector<Point2> simplifiedPath(const std::vector<Point2>& path, const std::v
   for (std::size_t i = 0; i < path.size(); ++i) {
     if (!points.empty() && (path[i] - points.back()).norm() <= tolerance) {
       if (keep[i]) kept.back() = true;
+      const bool goal = i + 1 == path.size();
+      if (goal && points.size() > 1) {
+        points.back() = path[i];
+      } else if (goal && path[i] != points.back()) {
+        points.push_back(path[i]);
+        kept.push_back(true);
+      }
       continue;
     }
     points.push_back(path[i]);
@@ -227,6 +267,16 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     stage("decompose", t, summary.str());
   }
 
+  // Size limits, before anything of their size is built.
+  checkCellLimit(decompositions, parameters_);
+  if (const std::size_t dropped = fitDirectionsToGtspLimit(decompositions); dropped > 0) {
+    plan.warnings.push_back(
+        "kept only the best lane directions of the cells: " + std::to_string(dropped) +
+        " of their other directions would have taken the generalized TSP over " +
+        std::to_string(kMaxGtspNodes) + " nodes");
+  }
+  checkLaneLimit(decompositions, parameters_);
+
   // Sweep patterns per cell and direction.
   t = Clock::now();
   const SegmentCost segment_cost(parameters_);
@@ -272,6 +322,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   instance.clusters = clusters;
   instance.start_cluster = 0;
   instance.goal_cluster = 1;
+  instance.reverse_nodes = reverseNodes(patterns, clusters);
   instance.costs.assign(n * n, 0.0);
   std::vector<double> pattern_costs;
   for (const SweepPattern& pattern : patterns)
@@ -299,6 +350,8 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   t = Clock::now();
   GtspOptions options;
   options.exact_cluster_limit = kExactClusterLimit;
+  options.max_population = kGtspMaxPopulation;
+  options.focused_search = true;
   const GtspSolution solution = solveGtsp(instance, options);
   {
     std::ostringstream summary;

@@ -7,6 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/planner/planning_limits.h"
 
 namespace kinematic_coverage::core {
 
@@ -52,7 +53,10 @@ class CoveragePlanner {
 
   /// Plans over `free_area` (cleaned: CCW hull, CW holes, no crossings).
   /// Throws InvalidInputError for an impossible request (empty offset free area, a
-  /// start or goal whose joining leg crosses a hole, ...).
+  /// start or goal whose joining leg crosses a hole, ...) and for a plan over the size
+  /// limits of planning_limits.h, saying by how much and what would reduce it. When every kept lane
+  /// direction would give the generalized TSP more than kMaxGtspNodes nodes, cells keep
+  /// only their best directions (a warning says how many were dropped).
   /// `on_stage`, when given, hears of every stage as it finishes.
   CoveragePlan plan(const PolygonWithHoles& free_area, const Point2& start, const Point2& goal,
                     const StageCallback& on_stage = {}) const;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <utility>
 #include <vector>
@@ -58,6 +59,10 @@ class SweepPatternGenerator {
   /// The lanes of `cell` (counter-clockwise, monotone for `direction`), each as its two
   /// ends, in order across the direction; the first end has the smaller coordinate along it.
   std::vector<std::pair<Point2, Point2>> lanes(const Ring& cell, double direction) const;
+
+  /// Sweep patterns per cell and lane direction (both lane orders, both first-lane
+  /// directions): the planner's generalized TSP has this many nodes per kept direction.
+  static constexpr std::size_t kPatternsPerDirection = 4;
 
   /// The four patterns of the cell for one direction. `transition` joins two lane ends
   /// when the straight join would leave the cell.

@@ -205,6 +205,81 @@ TEST(GtspSolver, RejectsInvalidInstances) {
   instance = base();
   instance.node_count = 0;
   expectRejected(instance, "node_count");
+  instance = base();
+  instance.reverse_nodes = {0, 2};
+  expectRejected(instance, "reverse_nodes has 2 entries, expected none or one per node (3)");
+  instance = base();
+  instance.reverse_nodes = {1, 1, 2};
+  expectRejected(instance, "reverse node 1 of node 0 is not in its cluster 0");
+}
+
+TEST(GtspSolver, TooManyNodesAreRefusedBeforeTheirCostsAreRead) {
+  // No cost matrix at all: the node count alone is refused, before anything else is looked at.
+  GtspInstance instance;
+  instance.node_count = kMaxGtspNodes + 1;
+  instance.clusters = {{0}};
+  try {
+    solveGtsp(instance, GtspOptions());
+    ADD_FAILURE() << "accepted " << instance.node_count << " nodes";
+  } catch (const InvalidInputError& error) {
+    const std::string expected = std::to_string(kMaxGtspNodes + 1) +
+                                 " nodes, 1 more than the limit of " +
+                                 std::to_string(kMaxGtspNodes) + " (the cost matrix would take";
+    EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+  }
+}
+
+/// The reverse nodes of randomSweepLikeInstance: within each group of four patterns of a
+/// direction, the one that runs between the same two points the other way.
+std::vector<int> sweepLikeReverseNodes(const GtspInstance& instance, int patterns) {
+  std::vector<int> reverse(static_cast<std::size_t>(instance.node_count));
+  reverse[0] = 0;
+  reverse[1] = 1;
+  for (int node = 2; node < instance.node_count; ++node) {
+    const int k = (node - 2) % patterns;
+    const int flip = (k / 4) % 2 == 0 ? 1 : 3;  // straight across: swap x; diagonal: swap both
+    reverse[node] = node - k + ((k & ~3) | ((k & 3) ^ flip));
+  }
+  return reverse;
+}
+
+TEST(GtspSolver, ReverseNodesKeepTheExactCostOfEveryMove) {
+  // Any reverse map within the clusters is allowed (moves are costed with the nodes they
+  // put in): heuristic tours stay valid and still reach the exact optimum on small instances.
+  std::mt19937 rng(53);
+  for (int trial = 0; trial < 40; ++trial) {
+    GtspInstance instance = randomGtspInstance(rng, 3 + trial % 8, 4, trial % 2 == 0);
+    instance.reverse_nodes.resize(static_cast<std::size_t>(instance.node_count));
+    for (const std::vector<int>& cluster : instance.clusters) {
+      for (int node : cluster) instance.reverse_nodes[node] = cluster[rng() % cluster.size()];
+    }
+    const GtspSolution exact = solveGtsp(instance, GtspOptions());
+    const GtspSolution heuristic = solveGtsp(instance, heuristicOnly(trial + 1));
+    expectValidSolution(instance, heuristic);
+    EXPECT_DOUBLE_EQ(heuristic.cost, exact.cost) << "trial " << trial;
+  }
+}
+
+TEST(GtspSolver, ReverseNodesOnPlannerLikeInstances) {
+  std::mt19937 rng(59);
+  for (int trial = 0; trial < 3; ++trial) {
+    GtspInstance instance = randomSweepLikeInstance(rng, 12, 16);
+    instance.reverse_nodes = sweepLikeReverseNodes(instance, 16);
+    const GtspSolution exact = solveGtsp(instance, GtspOptions());
+    const GtspSolution heuristic = solveGtsp(instance, heuristicOnly(1));
+    expectValidSolution(instance, heuristic);
+    EXPECT_NEAR(heuristic.cost, exact.cost, 1e-9 * exact.cost);
+  }
+  // As the planner solves large instances: reverse nodes and the focused search.
+  GtspInstance large = randomSweepLikeInstance(rng, 58, 16);
+  large.reverse_nodes = sweepLikeReverseNodes(large, 16);
+  GtspOptions planner_options;
+  planner_options.max_population = 50;
+  planner_options.focused_search = true;
+  const GtspSolution focused = solveGtsp(large, planner_options);
+  expectValidSolution(large, focused);
+  const GtspSolution same_seed = solveGtsp(large, planner_options);
+  EXPECT_EQ(focused.nodes, same_seed.nodes);
 }
 
 // Speed is measured by bench/gtsp (docs/BENCHMARKS.md), not asserted here.

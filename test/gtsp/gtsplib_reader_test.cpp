@@ -130,6 +130,11 @@ TEST(GtsplibReader, RejectsMalformedFiles) {
   expectRejected(euclidean + "GTSP_SET_SECTION\n1 1 2 3 -1\n2 -1\n", "test:11: set 2 is empty");
   expectRejected(euclidean + "GTSP_SET_SECTION\n1 1 -1\n1 2 3 -1\n", "test:11: set 1 listed twice");
   expectRejected(euclidean + "GTSP_SET_SECTION\n1 1.5 -1\n", "test:10: node 1.5 is not an integer");
+  // Found by gtsplib_fuzzer: a huge GTSP_SETS made the reader allocate tens of gigabytes.
+  expectRejected(
+      "DIMENSION : 3\nGTSP_SETS : 2999999999\nEDGE_WEIGHT_TYPE : EUC_2D\n"
+      "NODE_COORD_SECTION\n1 0 0\n2 1 0\n3 0 1\nGTSP_SET_SECTION\n1 1 -1\n",
+      "test:8: GTSP_SETS 2999999999 exceeds DIMENSION 3 (every set needs a node)");
   expectRejected(
       "DIMENSION : 3\nEDGE_WEIGHT_TYPE : EUC_2D\nNODE_COORD_SECTION\n1 0 0\n2 1 0\n3 0\n",
       "test:3: NODE_COORD_SECTION has 8 numbers");

@@ -39,6 +39,18 @@ TEST(CoveragePlanner, StartOutsideTheHullIsJoinedByAStraightLeg) {
   EXPECT_EQ(plan.last_inside, plan.waypoints.size() - 2);
 }
 
+TEST(CoveragePlanner, GoalJustOutsideTheOffsetAreaIsTheLastWaypoint) {
+  // Found by planner_fuzzer: a goal closer to its entry point than the duplicate tolerance
+  // was merged into it, so the path ended at the entry point instead of the goal.
+  const PlannerParameters parameters;
+  const Point2 goal(29.0 + 1e-7, 29.0);  // (29, 29) is the nearest offset corner
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(kLake, {0.5, 5}, goal);
+  expectValidPlan(kLake, plan, parameters, {0.5, 5}, goal);
+  ASSERT_FALSE(plan.waypoints.empty());
+  EXPECT_EQ(plan.waypoints.back().position(), goal);
+  EXPECT_EQ(plan.last_inside, plan.waypoints.size() - 2);
+}
+
 TEST(CoveragePlanner, StartInsideAHoleIsRejected) {
   const CoveragePlanner planner{PlannerParameters{}};
   try {
@@ -63,6 +75,74 @@ TEST(CoveragePlanner, EmptyOffsetAreaIsRejected) {
   const PolygonWithHoles narrow = {{{0, 0}, {30, 0}, {30, 1.5}, {0, 1.5}}, {}};
   EXPECT_THROW(CoveragePlanner{PlannerParameters{}}.plan(narrow, {1, 1}, {2, 1}),
                InvalidInputError);
+}
+
+/// The message of the InvalidInputError that planning `area` throws ("" when none).
+std::string refusal(const PlannerParameters& parameters, const PolygonWithHoles& area,
+                    const Point2& start, const Point2& goal) {
+  try {
+    CoveragePlanner(parameters).plan(area, start, goal);
+  } catch (const InvalidInputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(CoveragePlanner, TooManySweepLanesAreRefusedBeforeAnyLaneIsPlaced) {
+  // A 2 km square under a 1 cm footprint: two kept lane directions (its sides) of 333 000
+  // lanes each. Refused right after the decomposition, so the test takes milliseconds.
+  const PolygonWithHoles square = {{{0, 0}, {2000, 0}, {2000, 2000}, {0, 2000}}, {}};
+  PlannerParameters line;
+  line.sensor_model = "line";
+  line.lateral_footprint = 0.01;
+  const std::string message = refusal(line, square, {1, 1}, {1999, 1999});
+  EXPECT_NE(message.find("the cells need at least 666000 sweep lanes, 646000 more than the limit "
+                         "of " +
+                         std::to_string(kMaxSweeps)),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("sweep distance of 0.006 m"), std::string::npos) << message;
+  EXPECT_NE(message.find("grow about 33.3 times"), std::string::npos) << message;
+  EXPECT_NE(message.find("a larger lateral_footprint"), std::string::npos) << message;
+
+  // A frustum sensor 5 mm above the bottom: the message names the frustum's parameters.
+  PlannerParameters frustum;
+  frustum.sensor_distance = 0.005;
+  const std::string frustum_message = refusal(frustum, square, {1, 1}, {1999, 1999});
+  EXPECT_NE(frustum_message.find("a larger sensor_distance"), std::string::npos) << frustum_message;
+  EXPECT_NE(frustum_message.find("lateral_overlap"), std::string::npos) << frustum_message;
+}
+
+TEST(CoveragePlanner, TooManyCellsAreRefusedRightAfterTheDecomposition) {
+  // A comb of 1 100 teeth, 3 m wide and 3 m apart: one cell per tooth and the base. No wall
+  // offset: the straight skeleton of 4 400 vertices would take seconds, and the refusal
+  // comes right after the decomposition either way.
+  constexpr int kTeeth = 1100;
+  const double width = 6.0 * kTeeth - 3.0;
+  Ring hull = {{0, 0}, {width, 0}};
+  for (int i = kTeeth - 1; i >= 0; --i) {
+    const double left = 6.0 * i;
+    if (i < kTeeth - 1) hull.emplace_back(left + 3.0, 10.0);
+    hull.emplace_back(left + 3.0, 20.0);
+    hull.emplace_back(left, 20.0);
+    if (i > 0) hull.emplace_back(left, 10.0);
+  }
+  const PolygonWithHoles comb = {hull, {}};
+  for (const char* type : {"boustrophedon", "trapezoidal"}) {
+    PlannerParameters parameters;
+    parameters.decomposition_type = type;
+    parameters.wall_distance = 0.0;
+    const std::string message = refusal(parameters, comb, {1, 1}, {width - 1, 1});
+    SCOPED_TRACE(type);
+    EXPECT_NE(message.find("the decomposition has 1101 cells, 101 more than the limit of " +
+                           std::to_string(kMaxCells)),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("simplify the polygon"), std::string::npos) << message;
+    EXPECT_EQ(message.find("makes fewer cells") != std::string::npos,
+              std::string(type) == "trapezoidal")
+        << message;
+  }
 }
 
 TEST(CoveragePlanner, AllCostFunctionsAndDecompositions) {

@@ -244,6 +244,14 @@ TEST(CoverageTool, RejectsAnEmptyOffsetFreeArea) {
   expectInvalidMission(mission(kSquare, "wall_distance: 20\n"), "the offset free area is empty");
 }
 
+TEST(CoverageTool, RejectsAPlanOverThePlanningLimits) {
+  // Issue 11: a 2 km square under a 1 cm footprint needs 666 000 sweep lanes.
+  expectInvalidMission(mission("  hull: [[0, 0], [2000, 0], [2000, 2000], [0, 2000]]\n",
+                               "sensor_model: line\nlateral_footprint: 0.01\n"),
+                       "the cells need at least 666000 sweep lanes, 646000 more than the limit "
+                       "of 20000");
+}
+
 std::string writeTrajectory(const std::string& name, const std::string& csv) {
   const std::string path = scratchDir() + "/" + name + ".csv";
   std::ofstream(path) << csv;

@@ -53,7 +53,8 @@ TEST(ParameterValidator, RejectsNonPositiveLengthsSpeedsAndSampling) {
   for (const auto& [name, member] : positive) {
     for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
                              std::numeric_limits<double>::infinity()}) {
-      const std::string message = errorOf([&](PlannerParameters& p) { p.*member = bad; });
+      const std::string message =
+          errorOf([&, field = member](PlannerParameters& p) { p.*field = bad; });
       EXPECT_EQ(message.rfind(name + " = ", 0), 0u) << message;
       EXPECT_NE(message.find("is out of range: it must be a finite number > 0"), std::string::npos)
           << message;
@@ -101,7 +102,7 @@ TEST(ParameterValidator, ChecksTheRobotModelsRanges) {
            {"position_tolerance", &PlannerParameters::position_tolerance},
            {"sim_dt", &PlannerParameters::sim_dt},
            {"sim_time_limit", &PlannerParameters::sim_time_limit}}) {
-    const std::string message = errorOf([&](PlannerParameters& p) { p.*member = 0.0; });
+    const std::string message = errorOf([field = member](PlannerParameters& p) { p.*field = 0.0; });
     EXPECT_EQ(message.rfind(name + " = 0 is out of range: it must be a finite number > 0", 0), 0u)
         << message;
   }

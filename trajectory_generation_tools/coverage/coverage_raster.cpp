@@ -203,7 +203,8 @@ CellMask CoverageRaster::rasterize(const PolygonWithHoles& polygon) const {
     const auto begin = crossings.begin() + static_cast<std::ptrdiff_t>(row_start[row]);
     const auto end = crossings.begin() + static_cast<std::ptrdiff_t>(row_start[row + 1]);
     std::sort(begin, end);
-    for (auto it = begin; it + 1 < end; it += 2) {
+    // `end - it`, not `it + 1 < end`: an empty table's iterators are null.
+    for (auto it = begin; end - it >= 2; it += 2) {
       const int first = firstColumnAtOrRightOf(*it);
       const int last = firstColumnAtOrRightOf(*(it + 1));
       if (first < last) {

@@ -1,0 +1,182 @@
+// libFuzzer target: CoveragePlanner through the path `coverage_tool plan` takes
+// (ParameterValidator as the mission loader applies it, then planMission: validate, clean,
+// plan) on small fuzzed polygons with holes: at most kMaxHullVertices hull vertices and
+// kMaxHoles holes of at most kMaxHoleVertices vertices, coordinates within [-5, 35] m,
+// parameters in range or, now and then, deliberately out of range. Properties of every
+// plan: waypoints are finite and distinct, each yaw is its leg's heading, the path starts
+// at the start and ends at the goal, every leg between first_inside and last_inside lies in
+// the offset free area (the planner test's tolerance), and the inside range and path
+// length are consistent.
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "fuzz/fuzz_check.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/mission.h"
+#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
+
+namespace {
+
+using kinematic_coverage::core::Mission;
+using kinematic_coverage::core::PlannedMission;
+using kinematic_coverage::core::PlannerParameters;
+using kinematic_coverage::core::Point2;
+using kinematic_coverage::core::Pose2;
+using kinematic_coverage::core::Ring;
+using kinematic_coverage::fuzz::fuzzCheck;
+
+constexpr double kBoxLow = -5.0;
+constexpr double kBoxHigh = 35.0;
+/// Coordinates snap to this grid (m) when the input asks for it, to provoke collinear
+/// and touching vertices.
+constexpr double kSnapGrid = 0.5;
+/// Polygon size caps. They keep decompositions to about a dozen cells, where the planner's
+/// generalized TSP takes milliseconds under the sanitizers (at 20 cells it takes about
+/// 0.4 s, which would cap the fuzzer at a few executions a second).
+constexpr int kMaxHullVertices = 12;
+constexpr int kMaxHoles = 2;
+constexpr int kMaxHoleVertices = 6;
+/// A leg may touch the offset free area's boundary within this distance (m), as in
+/// test/planner/plan_properties.h.
+constexpr double kInsideTolerance = 1e-6;
+/// A yaw may differ from its leg's heading by this much (rad).
+constexpr double kYawTolerance = 1e-9;
+
+/// A coordinate in [low, high], snapped to kSnapGrid when `snap`.
+double coordinate(FuzzedDataProvider& input, double low, double high, bool snap) {
+  const double value = input.ConsumeFloatingPointInRange(low, high);
+  return snap ? std::round(value / kSnapGrid) * kSnapGrid : value;
+}
+
+/// A ring of `vertices` vertices: star-shaped about `centre` (angles increasing, so
+/// simple unless snapping collapses vertices) or, when `raw`, arbitrary points.
+Ring ring(FuzzedDataProvider& input, int vertices, const Point2& centre, double max_radius,
+          bool raw, bool snap) {
+  Ring result;
+  const double step = 2.0 * M_PI / vertices;
+  for (int i = 0; i < vertices; ++i) {
+    if (raw) {
+      result.emplace_back(coordinate(input, kBoxLow, kBoxHigh, snap),
+                          coordinate(input, kBoxLow, kBoxHigh, snap));
+      continue;
+    }
+    const double angle = step * (i + input.ConsumeFloatingPointInRange(0.0, 0.5));
+    const double radius = input.ConsumeFloatingPointInRange(0.1 * max_radius, max_radius);
+    Point2 p = centre + radius * Point2(std::cos(angle), std::sin(angle));
+    if (snap) p = (p / kSnapGrid).array().round().matrix() * kSnapGrid;
+    result.push_back(p);
+  }
+  return result;
+}
+
+/// A value that ParameterValidator must reject for most parameters.
+double outOfRange(FuzzedDataProvider& input) {
+  const double values[] = {
+      0.0,  -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+      M_PI, 1.0};
+  return values[input.ConsumeIntegralInRange<int>(0, 5)];
+}
+
+PlannerParameters parameters(FuzzedDataProvider& input) {
+  PlannerParameters p;
+  p.decomposition_type = input.ConsumeBool() ? "boustrophedon" : "trapezoidal";
+  const char* const costs[] = {"distance", "time", "waypoints"};
+  p.cost_function = costs[input.ConsumeIntegralInRange<int>(0, 2)];
+  p.sensor_model = input.ConsumeBool() ? "frustum" : "line";
+  p.wall_distance = input.ConsumeFloatingPointInRange(0.0, 3.0);
+  p.lateral_footprint = input.ConsumeFloatingPointInRange(1.0, 12.0);
+  p.sensor_distance = input.ConsumeFloatingPointInRange(0.3, 6.0);
+  p.lateral_fov = input.ConsumeFloatingPointInRange(0.5, 3.0);
+  p.onward_fov = input.ConsumeFloatingPointInRange(0.1, 3.0);
+  p.lateral_overlap = input.ConsumeFloatingPointInRange(0.0, 0.9);
+  p.turning_radius = input.ConsumeFloatingPointInRange(0.1, 5.0);
+  p.v_max = input.ConsumeFloatingPointInRange(0.1, 3.0);
+  p.a_max = input.ConsumeFloatingPointInRange(0.05, 2.0);
+  p.yaw_rate_max = input.ConsumeFloatingPointInRange(0.1, 2.0);
+  // One parameter in sixteen inputs deliberately out of range.
+  if (input.ConsumeIntegralInRange<int>(0, 15) == 0) {
+    double* const numbers[] = {
+        &p.wall_distance,   &p.lateral_footprint, &p.sensor_distance, &p.lateral_fov, &p.onward_fov,
+        &p.lateral_overlap, &p.turning_radius,    &p.v_max,           &p.a_max};
+    *numbers[input.ConsumeIntegralInRange<int>(0, 8)] = outOfRange(input);
+  }
+  return p;
+}
+
+Mission mission(FuzzedDataProvider& input) {
+  Mission m;
+  m.parameters = parameters(input);
+  const bool snap = input.ConsumeBool();
+  const bool raw = input.ConsumeIntegralInRange<int>(0, 7) == 0;
+  const Point2 middle(15.0, 15.0);
+  m.polygon.hull =
+      ring(input, input.ConsumeIntegralInRange<int>(3, kMaxHullVertices), middle, 20.0, raw, snap);
+  const int holes = input.ConsumeIntegralInRange<int>(0, kMaxHoles);
+  for (int i = 0; i < holes; ++i) {
+    const Point2 centre(coordinate(input, 0.0, 30.0, snap), coordinate(input, 0.0, 30.0, snap));
+    const double radius = input.ConsumeFloatingPointInRange(0.5, 6.0);
+    m.polygon.holes.push_back(ring(input, input.ConsumeIntegralInRange<int>(3, kMaxHoleVertices),
+                                   centre, radius, raw, snap));
+  }
+  m.start = Point2(coordinate(input, kBoxLow, kBoxHigh, snap),
+                   coordinate(input, kBoxLow, kBoxHigh, snap));
+  m.goal = Point2(coordinate(input, kBoxLow, kBoxHigh, snap),
+                  coordinate(input, kBoxLow, kBoxHigh, snap));
+  return m;
+}
+
+void checkPlan(const Mission& m, const PlannedMission& planned) {
+  const std::vector<Pose2>& waypoints = planned.plan.waypoints;
+  fuzzCheck(!waypoints.empty(), "plan without waypoints");
+  for (const Pose2& pose : waypoints) {
+    fuzzCheck(std::isfinite(pose.x) && std::isfinite(pose.y) && std::isfinite(pose.yaw),
+              "non-finite waypoint");
+    fuzzCheck(std::abs(pose.yaw) <= M_PI + 1e-12, "yaw outside [-pi, pi]");
+  }
+  fuzzCheck((waypoints.front().position() - m.start).norm() <= 1e-9,
+            "path does not start at the start");
+  fuzzCheck((waypoints.back().position() - m.goal).norm() <= 1e-9, "path does not end at the goal");
+  const auto& plan = planned.plan;
+  fuzzCheck(plan.first_inside <= plan.last_inside && plan.last_inside < waypoints.size(),
+            "inside range outside the waypoints");
+  double length = 0.0;
+  for (std::size_t i = 0; i + 1 < waypoints.size(); ++i) {
+    const Point2 a = waypoints[i].position();
+    const Point2 b = waypoints[i + 1].position();
+    const std::string leg = "leg " + std::to_string(i);
+    fuzzCheck(a != b, leg + " has no length");
+    length += (b - a).norm();
+    const double heading = std::atan2(b.y() - a.y(), b.x() - a.x());
+    fuzzCheck(std::abs(std::remainder(waypoints[i].yaw - heading, 2.0 * M_PI)) <= kYawTolerance,
+              "the yaw of waypoint " + std::to_string(i) + " is not its leg's heading");
+    if (i >= plan.first_inside && i + 1 <= plan.last_inside) {
+      fuzzCheck(
+          kinematic_coverage::core::segmentInside(plan.offset_free_area, a, b, kInsideTolerance),
+          leg + " leaves the offset free area");
+    }
+  }
+  fuzzCheck(std::isfinite(plan.path_length_m) &&
+                std::abs(plan.path_length_m - length) <= 1e-6 * std::max(1.0, length),
+            "path_length_m " + std::to_string(plan.path_length_m) + " but the legs add up to " +
+                std::to_string(length));
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  FuzzedDataProvider input(data, size);
+  const Mission m = mission(input);
+  kinematic_coverage::fuzz::runExpectingOnlyInvalidInput([&] {
+    kinematic_coverage::core::ParameterValidator().validate(m.parameters);
+    checkPlan(m, kinematic_coverage::core::planMission(m));
+  });
+  return 0;
+}

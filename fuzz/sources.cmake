@@ -1,0 +1,18 @@
+# libFuzzer targets (KC_FUZZ=ON, Clang only). Each one is a LLVMFuzzerTestOneInput over
+# a public entry point of the core; libFuzzer's main comes from -fsanitize=fuzzer.
+# Seed corpora are in fuzz/corpus/<target>/. Build with the `fuzzers` target.
+add_custom_target(fuzzers)
+
+function(kc_add_fuzzer name)
+  add_executable(${name} fuzz/${name}.cpp)
+  target_link_libraries(${name} PRIVATE kinematic_coverage_core)
+  target_compile_options(${name} PRIVATE -Wall -Wextra)
+  target_link_options(${name} PRIVATE -fsanitize=fuzzer)
+  add_dependencies(fuzzers ${name})
+endfunction()
+
+kc_add_fuzzer(mission_file_fuzzer)
+kc_add_fuzzer(gtsplib_fuzzer)
+kc_add_fuzzer(corner_smoothing_fuzzer)
+kc_add_fuzzer(coverage_preserving_fuzzer)
+kc_add_fuzzer(planner_fuzzer)

@@ -1,0 +1,103 @@
+#include "polygon_coverage_ros_bridge/planner/planning_limits.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// One decomposition of `cells` 10 x 4 m rectangles, each with `directions` lane directions
+/// (best first: 0, then 0.1, 0.2, ... radians).
+std::vector<Decomposition> rectangles(std::size_t cells, std::size_t directions) {
+  Decomposition decomposition;
+  for (std::size_t i = 0; i < cells; ++i) {
+    Cell cell;
+    const double x = 20.0 * static_cast<double>(i);
+    cell.polygon = {{x, 0}, {x + 10, 0}, {x + 10, 4}, {x, 4}};
+    for (std::size_t d = 0; d < directions; ++d) cell.sweep_directions.push_back(0.1 * d);
+    decomposition.cells.push_back(cell);
+  }
+  return {decomposition};
+}
+
+TEST(PlanningLimits, GtspNodesAreFourPerDirectionPlusStartAndGoal) {
+  EXPECT_EQ(gtspNodeCount(rectangles(3, 2)), 3u * 2u * 4u + 2u);
+  EXPECT_EQ(gtspNodeCount({}), 2u);
+}
+
+TEST(PlanningLimits, DirectionsWithinTheGtspLimitAreKept) {
+  std::vector<Decomposition> decompositions = rectangles(10, 4);
+  EXPECT_EQ(fitDirectionsToGtspLimit(decompositions), 0u);
+  EXPECT_EQ(gtspNodeCount(decompositions), 10u * 4u * 4u + 2u);
+}
+
+TEST(PlanningLimits, OverTheGtspLimitEveryCellKeepsItsBestDirectionsFirst) {
+  // kMaxCells cells with 4 directions each: 16 002 nodes, over kMaxGtspNodes.
+  std::vector<Decomposition> decompositions = rectangles(kMaxCells, 4);
+  const std::size_t before = gtspNodeCount(decompositions);
+  ASSERT_GT(before, static_cast<std::size_t>(kMaxGtspNodes));
+  const std::size_t dropped = fitDirectionsToGtspLimit(decompositions);
+  const std::size_t after = gtspNodeCount(decompositions);
+  EXPECT_LE(after, static_cast<std::size_t>(kMaxGtspNodes));
+  // No room for one more direction anywhere, and the nodes dropped are the directions'.
+  EXPECT_GT(after + 4, static_cast<std::size_t>(kMaxGtspNodes));
+  EXPECT_EQ(before - after, 4 * dropped);
+  std::size_t previous = 4;
+  for (const Cell& cell : decompositions.front().cells) {
+    // Every cell keeps a prefix of its directions (best first), earlier cells no fewer.
+    ASSERT_GE(cell.sweep_directions.size(), 1u);
+    EXPECT_LE(cell.sweep_directions.size(), previous);
+    previous = cell.sweep_directions.size();
+    for (std::size_t d = 0; d < cell.sweep_directions.size(); ++d) {
+      EXPECT_DOUBLE_EQ(cell.sweep_directions[d], 0.1 * d);
+    }
+  }
+}
+
+TEST(PlanningLimits, MinimumLaneCountIsTheWidthOverTheSweepDistance) {
+  // 10 x 4 m rectangles: 4 m across direction 0 (lanes along x), at least one lane.
+  EXPECT_DOUBLE_EQ(minimumLaneCount(rectangles(3, 1), 0.5), 3 * 8.0);
+  EXPECT_DOUBLE_EQ(minimumLaneCount(rectangles(3, 1), 100.0), 3 * 1.0);
+}
+
+TEST(PlanningLimits, CellAndLaneLimitsRefuseWithWhatToChange) {
+  PlannerParameters parameters;
+  EXPECT_NO_THROW(checkCellLimit(rectangles(kMaxCells, 1), parameters));
+  try {
+    checkCellLimit(rectangles(kMaxCells + 5, 1), parameters);
+    ADD_FAILURE() << "accepted " << kMaxCells + 5 << " cells";
+  } catch (const InvalidInputError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find(std::to_string(kMaxCells + 5) +
+                        " cells, 5 more "
+                        "than the limit of " +
+                        std::to_string(kMaxCells)),
+              std::string::npos)
+        << error.what();
+  }
+  // 4 m across at a sweep distance of 0.01 m: 400 lanes per cell.
+  parameters.sensor_model = "line";
+  parameters.lateral_footprint = 0.02;
+  parameters.lateral_overlap = 0.5;
+  const std::size_t fitting = kMaxSweeps / 400;
+  EXPECT_NO_THROW(checkLaneLimit(rectangles(fitting, 1), parameters));
+  try {
+    checkLaneLimit(rectangles(2 * fitting, 1), parameters);
+    ADD_FAILURE() << "accepted " << 2 * fitting * 400 << " lanes";
+  } catch (const InvalidInputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("at least " + std::to_string(2 * fitting * 400) + " sweep lanes, " +
+                           std::to_string(fitting * 400) + " more than the limit of " +
+                           std::to_string(kMaxSweeps)),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("grow about 2 times"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core
