@@ -44,5 +44,23 @@ TEST(CornerCoverageCheck, AcuteInnerArcLosesTheTipAndAGentleTurnLosesNothing) {
   EXPECT_LT(check.lostArea({b, d, e}, gentle_smoothing), lost);
 }
 
+TEST(CornerCoverageCheck, AFootprintFarShorterThanTheCornerIsMeasuredOnTheBoundedRaster) {
+  // Found by corner_smoothing_fuzzer: a footprint 1 nm long (a tiny onward_fov is valid)
+  // made the arcs' sampling step a fraction of a nanometre, 10^11 samples, and the sample
+  // count overflowed an int. The arcs are now sampled by angle, at a step that the raster's
+  // own (size-limited) cell bounds; the footprint is then as good as a line.
+  const BoundaryEdgeIndex index(PolygonWithHoles{});
+  const Point2 a(0, 0), b(30, 0), c(30 - 30 * std::cos(M_PI / 6), 30 * std::sin(M_PI / 6));
+  const CornerSmoothing smoothing =
+      onlySmoothing(PathSmoother({}, 2.0).smooth(std::vector<Point2>{a, b, c}), b);
+  ASSERT_EQ(smoothing.arcs.size(), 1u);
+  const double short_lost =
+      CornerCoverageCheck(index, FrustumSensor(4.0, 1e-9, 0.0)).lostArea({a, b, c}, smoothing);
+  const double line_lost =
+      CornerCoverageCheck(index, FrustumSensor(4.0, 0.0, 0.0)).lostArea({a, b, c}, smoothing);
+  EXPECT_GT(line_lost, 1.0);
+  EXPECT_NEAR(short_lost, line_lost, 0.05 * line_lost);
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core

@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "test/smoothing/smoothing_oracle.h"
+#include "trajectory_generation_tools/smoothing/corner_coverage_check.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -117,6 +119,67 @@ TEST(GlobalPathSmoother, CoveragePreservingKeepsAcuteInnerCornersSharp) {
   EXPECT_GT(kept.statistics.kept_for_coverage, 0);
   EXPECT_EQ(kept.statistics.turns_smoothed + kept.statistics.kept_for_coverage,
             kept.statistics.turns_total);
+}
+
+/// The arcs of a one-corner path at `b` as the CornerSmoothing they came from.
+CornerSmoothing arcsOf(const SmoothedPath& path, const Point2& b) {
+  CornerSmoothing smoothing;
+  for (const PathPrimitive& p : path.primitives) {
+    if (p.kind() == PrimitiveKind::kArc) smoothing.arcs.push_back(p);
+  }
+  if (smoothing.arcs.empty()) return smoothing;
+  smoothing.entry_distance = (smoothing.arcs.front().start() - b).norm();
+  smoothing.exit_distance = (smoothing.arcs.back().end() - b).norm();
+  return smoothing;
+}
+
+TEST(GlobalPathSmoother, CoveragePreservingChoosesTheFastestSmoothingThatPreserves) {
+  // Coverage is checked only for the smoothings the programme chooses, dropping refused
+  // ones and choosing again. On seeded random corners of every angle, sensors and radii
+  // (variable radius: several candidates per corner): a smoothing it keeps preserves
+  // coverage, and where the unconstrained choice already preserves coverage it is kept
+  // unchanged.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int smoothed = 0;
+  int unconstrained_kept = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    const double radius = 0.5 + 2.5 * unit(rng);
+    const double width = 2.0 + 8.0 * unit(rng);
+    const FrustumSensor sensor(width, (0.3 + 0.7 * unit(rng)) * width, 0.0);
+    // Every other corner a gentle one, which a smoothing can take without loss.
+    const double turn = M_PI * (0.02 + (trial % 2 == 0 ? 0.15 : 0.96) * unit(rng));
+    const Point2 a(0, 0), b(30, 0);
+    const Point2 c = b + (10 + 20 * unit(rng)) * Point2(std::cos(turn), std::sin(turn));
+    GlobalSmoothingOptions preserving = options(radius, 0.3 * radius);
+    preserving.preserved_sensor = sensor;
+    const SmoothedPath free =
+        GlobalPathSmoother({}, options(radius, 0.3 * radius)).smooth({a, b, c});
+    const SmoothedPath kept = GlobalPathSmoother({}, preserving).smooth({a, b, c});
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    testing::expectContinuousPath(kept, 60.0);
+    const BoundaryEdgeIndex index(PolygonWithHoles{});
+    const CornerCoverageCheck check(index, sensor);
+    const CornerSmoothing kept_smoothing = arcsOf(kept, b);
+    if (!kept_smoothing.arcs.empty()) {
+      ++smoothed;
+      EXPECT_TRUE(check.preserves({a, b, c}, kept_smoothing));
+    } else {
+      EXPECT_EQ(kept.statistics.kept_for_coverage, 1);
+    }
+    const CornerSmoothing free_smoothing = arcsOf(free, b);
+    if (!free_smoothing.arcs.empty() && check.preserves({a, b, c}, free_smoothing)) {
+      ++unconstrained_kept;
+      ASSERT_EQ(kept.primitives.size(), free.primitives.size());
+      for (std::size_t k = 0; k < kept.primitives.size(); ++k) {
+        EXPECT_TRUE(kept.primitives[k].end().isApprox(free.primitives[k].end(), 1e-12));
+      }
+    }
+  }
+  // Both branches are exercised: some corners keep their fastest smoothing, and more are
+  // smoothed than that (a slower smoothing that preserves coverage).
+  EXPECT_GT(unconstrained_kept, 10);
+  EXPECT_GT(smoothed, unconstrained_kept);
 }
 
 }  // namespace

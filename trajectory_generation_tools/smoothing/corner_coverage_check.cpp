@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "trajectory_generation_tools/coverage/coverage_raster.h"
@@ -18,6 +19,37 @@ constexpr double kRotationStep = 0.05;
 Pose2 poseAt(const Point2& p, const Point2& heading) {
   return {p.x(), p.y(), std::atan2(heading.y(), heading.x())};
 }
+
+/// An axis-aligned box, grown point by point.
+struct Box {
+  double x0 = std::numeric_limits<double>::infinity();
+  double y0 = std::numeric_limits<double>::infinity();
+  double x1 = -std::numeric_limits<double>::infinity();
+  double y1 = -std::numeric_limits<double>::infinity();
+
+  void add(const Point2& p) {
+    x0 = std::min(x0, p.x());
+    x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y());
+    y1 = std::max(y1, p.y());
+  }
+
+  /// Adds the arc's bounding box: its ends and the points of its circle at the four axis
+  /// directions that its sweep passes.
+  void addArc(const PathPrimitive& arc) {
+    add(arc.start());
+    add(arc.end());
+    const double sweep = std::abs(arc.sweep());
+    for (int quarter = 0; quarter < 4; ++quarter) {
+      const double angle = 0.5 * M_PI * quarter;
+      const double from_start =
+          arc.sweep() >= 0.0 ? angle - arc.startAngle() : arc.startAngle() - angle;
+      if (std::fmod(std::fmod(from_start, 2.0 * M_PI) + 2.0 * M_PI, 2.0 * M_PI) <= sweep) {
+        add(arc.centre() + arc.radius() * Point2(std::cos(angle), std::sin(angle)));
+      }
+    }
+  }
+};
 
 }  // namespace
 
@@ -53,15 +85,6 @@ CornerCoverageCheck::Loss CornerCoverageCheck::measure(const std::vector<Point2>
   const Point2 before = first - std::min((first - a).norm(), smoothing.entry_distance + reach) * in;
   const Point2 after = last + std::min((c - last).norm(), smoothing.exit_distance + reach) * out;
 
-  // The smoothed version's poses: straight legs need only their ends (a translated convex
-  // footprint sweeps the hull of its end footprints); arcs are sampled finely.
-  std::vector<Pose2> smoothed{poseAt(before, in)};
-  for (const PathPrimitive& arc : smoothing.arcs) {
-    const int pieces = std::max(1, static_cast<int>(std::ceil(arc.length() / (0.5 * cell_size_))));
-    for (int k = 0; k <= pieces; ++k) smoothed.push_back(arc.poseAt(double(k) / pieces));
-  }
-  smoothed.push_back(poseAt(after, out));
-
   // The sharp version: the same legs, turning in place at every corner.
   std::vector<Pose2> sharp_path{poseAt(before, in)};
   for (std::size_t k = 1; k + 1 < corner_path.size(); ++k) {
@@ -69,28 +92,32 @@ CornerCoverageCheck::Loss CornerCoverageCheck::measure(const std::vector<Point2>
   }
   sharp_path.push_back(poseAt(after, out));
 
-  double x0 = before.x();
-  double x1 = before.x();
-  double y0 = before.y();
-  double y1 = before.y();
-  for (const Pose2& pose : sharp_path) {
-    x0 = std::min(x0, pose.x);
-    x1 = std::max(x1, pose.x);
-    y0 = std::min(y0, pose.y);
-    y1 = std::max(y1, pose.y);
-  }
-  for (const Pose2& pose : smoothed) {
-    x0 = std::min(x0, pose.x);
-    x1 = std::max(x1, pose.x);
-    y0 = std::min(y0, pose.y);
-    y1 = std::max(y1, pose.y);
-  }
+  // The raster covers both versions with a footprint's reach around them.
+  Box box;
+  for (const Pose2& pose : sharp_path) box.add(pose.position());
+  for (const PathPrimitive& arc : smoothing.arcs) box.addArc(arc);
   const double margin = reach + 2.0 * cell_size_;
-  const double extent = std::max(x1 - x0, y1 - y0) + 2.0 * margin;
+  const double extent = std::max(box.x1 - box.x0, box.y1 - box.y0) + 2.0 * margin;
   const double cell = std::max(cell_size_, extent / kMaxCellsPerSide);
-  const int columns = static_cast<int>(std::ceil((x1 - x0 + 2.0 * margin) / cell));
-  const int rows = static_cast<int>(std::ceil((y1 - y0 + 2.0 * margin) / cell));
-  const CoverageRaster raster(Point2(x0 - margin, y0 - margin), cell, columns, rows);
+  const int columns = static_cast<int>(std::ceil((box.x1 - box.x0 + 2.0 * margin) / cell));
+  const int rows = static_cast<int>(std::ceil((box.y1 - box.y0 + 2.0 * margin) / cell));
+  const CoverageRaster raster(Point2(box.x0 - margin, box.y0 - margin), cell, columns, rows);
+
+  // The smoothed version's poses: straight legs need only their ends (a translated convex
+  // footprint sweeps the hull of its end footprints). Along an arc the footprint turns
+  // about the arc's centre, its points on circles of radius at most rho = radius + reach;
+  // the hull of two footprints a step of dtheta apart misses at most the sagitta
+  // rho dtheta^2 / 8 of those circles, so steps of 2 sqrt(cell / rho) keep that within half
+  // a cell (and at most kRotationStep, as the sharp version's rotation). The raster's size
+  // limit bounds the samples however small the footprint: at most 2 pi / kRotationStep for
+  // an arc of a radius within the raster, fewer for a flatter one.
+  std::vector<Pose2> smoothed{poseAt(before, in)};
+  for (const PathPrimitive& arc : smoothing.arcs) {
+    const double step = std::min(kRotationStep, 2.0 * std::sqrt(cell / (arc.radius() + reach)));
+    const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(arc.sweep()) / step)));
+    for (int k = 0; k <= pieces; ++k) smoothed.push_back(arc.poseAt(double(k) / pieces));
+  }
+  smoothed.push_back(poseAt(after, out));
 
   SeenArea sharp(raster);
   sharp.addWaypointPath(sharp_path, sensor_, kRotationStep);

@@ -5,6 +5,8 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "trajectory_generation_tools/smoothing/corner_coverage_check.h"
@@ -37,7 +39,13 @@ struct Candidate {
   double exit = 0.0;   ///< distance from B along the outgoing leg where it ends
   double speed = 0.0;  ///< speed on it (0: sharp, the robot stops)
   double time = 0.0;   ///< seconds to drive it (a sharp turn: its rotation)
+  /// The sharp corners it replaces (a, b, c, or a, b1, b2, c), for the coverage check.
+  std::vector<Point2> corner_path;
 };
+
+/// A candidate's coverage check: not yet made, passed, or refused (the smoothing sees less
+/// than the sharp corners it replaces).
+enum class CoverageVerdict { kUnchecked, kPreserves, kRefused };
 
 /// Fastest time (s) over a straight piece of `length` from speed v0 to speed v1 under
 /// v_max and a_max (the trapezoid of the velocity model). When the piece is too short to
@@ -144,7 +152,6 @@ SmoothedPath GlobalPathSmoother::smooth(const std::vector<Point2>& waypoints) co
   // Candidates per corner i (waypoint i + 1). A reverse curve over corners i - 1 and i is
   // a candidate of corner i that follows a candidate of corner i - 2.
   std::vector<std::vector<Candidate>> candidates(corners);
-  std::vector<bool> coverage_refused(corners, false);
   for (std::size_t i = 0; i < corners; ++i) {
     const Point2& a = points[i];
     const Point2& b = points[i + 1];
@@ -155,7 +162,7 @@ SmoothedPath GlobalPathSmoother::smooth(const std::vector<Point2>& waypoints) co
         std::atan2(std::abs(incoming.x() * outgoing.y() - incoming.y() * outgoing.x()),
                    incoming.dot(outgoing));
     std::vector<Candidate>& options = candidates[i];
-    options.push_back({std::nullopt, 0.0, 0.0, 0.0, turn / options_.yaw_rate_max});
+    options.push_back({std::nullopt, 0.0, 0.0, 0.0, turn / options_.yaw_rate_max, {}});
 
     // `smoothing` replaces the corners `corner_path` turns at; it enters on leg `in_leg`.
     const auto consider = [&](std::optional<CornerSmoothing> smoothing, double radius,
@@ -176,14 +183,10 @@ SmoothedPath GlobalPathSmoother::smooth(const std::vector<Point2>& waypoints) co
           return;
         }
       }
-      if (coverage && !coverage->preserves(corner_path, *smoothing)) {
-        coverage_refused[i] = true;
-        return;
-      }
       const double speed = std::min(v_max, options_.yaw_rate_max * radius);
       const double time = arcsLength(*smoothing) / speed;
-      options.push_back(
-          {std::move(smoothing), std::max(0.0, entry), std::max(0.0, exit), speed, time});
+      options.push_back({std::move(smoothing), std::max(0.0, entry), std::max(0.0, exit), speed,
+                         time, corner_path});
     };
 
     // The tangent variant depends on where the smoothing may start (Alg. 8 puts the first
@@ -222,78 +225,125 @@ SmoothedPath GlobalPathSmoother::smooth(const std::vector<Point2>& waypoints) co
     }
   }
 
-  // Dynamic programme: best[i][j] is the least time from the start to the end of
-  // candidate j of corner i, over compatible choices at the corners before it; from[i][j]
-  // is the candidate it follows at corner i - corners (-1: the start).
+  // Dynamic programme over the candidates not refused for coverage: best[i][j] is the
+  // least time from the start to the end of candidate j of corner i, over compatible
+  // choices at the corners before it; from[i][j] is the candidate it follows at corner
+  // i - corners (-1: the start). Returns the chosen candidates, (corner, candidate), from
+  // the last corner back; a reverse curve is chosen at the later of its two corners.
+  std::vector<std::vector<CoverageVerdict>> verdict(corners);
+  for (std::size_t i = 0; i < corners; ++i) {
+    verdict[i].assign(candidates[i].size(), CoverageVerdict::kUnchecked);
+  }
   std::vector<std::vector<double>> best(corners);
   std::vector<std::vector<int>> from(corners);
-  for (std::size_t i = 0; i < corners; ++i) {
-    best[i].assign(candidates[i].size(), kInfinity);
-    from[i].assign(candidates[i].size(), -1);
-    for (std::size_t j = 0; j < candidates[i].size(); ++j) {
-      const Candidate& current = candidates[i][j];
-      const std::size_t spanned = current.smoothing ? current.smoothing->corners : 1;
-      const std::size_t leg = i + 1 - spanned;  // the leg it enters on
-      if (leg == 0) {
-        if (piece_free(0, 0.0, current.entry, !current.smoothing)) {
-          best[i][j] = pieceTime(leg_length[0] - current.entry, 0.0, current.speed, v_max, a_max) +
-                       current.time;
-        }
-        continue;
-      }
-      const std::size_t layer = leg - 1;  // the corner before it
-      for (std::size_t p = 0; p < candidates[layer].size(); ++p) {
-        if (best[layer][p] == kInfinity) continue;
-        const Candidate& previous = candidates[layer][p];
-        if (!piece_free(leg, previous.exit, current.entry,
-                        !previous.smoothing && !current.smoothing)) {
+  const auto choose = [&] {
+    for (std::size_t i = 0; i < corners; ++i) {
+      best[i].assign(candidates[i].size(), kInfinity);
+      from[i].assign(candidates[i].size(), -1);
+      for (std::size_t j = 0; j < candidates[i].size(); ++j) {
+        if (verdict[i][j] == CoverageVerdict::kRefused) continue;
+        const Candidate& current = candidates[i][j];
+        const std::size_t spanned = current.smoothing ? current.smoothing->corners : 1;
+        const std::size_t leg = i + 1 - spanned;  // the leg it enters on
+        if (leg == 0) {
+          if (piece_free(0, 0.0, current.entry, !current.smoothing)) {
+            best[i][j] =
+                pieceTime(leg_length[0] - current.entry, 0.0, current.speed, v_max, a_max) +
+                current.time;
+          }
           continue;
         }
-        const double time = best[layer][p] +
-                            pieceTime(leg_length[leg] - previous.exit - current.entry,
-                                      previous.speed, current.speed, v_max, a_max) +
-                            current.time;
-        if (time < best[i][j]) {
-          best[i][j] = time;
-          from[i][j] = static_cast<int>(p);
+        const std::size_t layer = leg - 1;  // the corner before it
+        for (std::size_t p = 0; p < candidates[layer].size(); ++p) {
+          if (best[layer][p] == kInfinity) continue;
+          const Candidate& previous = candidates[layer][p];
+          if (!piece_free(leg, previous.exit, current.entry,
+                          !previous.smoothing && !current.smoothing)) {
+            continue;
+          }
+          const double time = best[layer][p] +
+                              pieceTime(leg_length[leg] - previous.exit - current.entry,
+                                        previous.speed, current.speed, v_max, a_max) +
+                              current.time;
+          if (time < best[i][j]) {
+            best[i][j] = time;
+            from[i][j] = static_cast<int>(p);
+          }
         }
       }
     }
-  }
-  // The last leg to the final waypoint, at rest there. The all-sharp choice is always
-  // feasible, so some choice is finite.
-  const std::size_t last = corners - 1;
-  double least = kInfinity;
-  int choice = 0;
-  for (std::size_t j = 0; j < candidates[last].size(); ++j) {
-    const Candidate& candidate = candidates[last][j];
-    if (best[last][j] == kInfinity ||
-        !piece_free(last + 1, candidate.exit, 0.0, !candidate.smoothing)) {
-      continue;
+    // The last leg to the final waypoint, at rest there. The all-sharp choice is always
+    // feasible (and never refused), so some choice is finite.
+    const std::size_t last = corners - 1;
+    double least = kInfinity;
+    int choice = 0;
+    for (std::size_t j = 0; j < candidates[last].size(); ++j) {
+      const Candidate& candidate = candidates[last][j];
+      if (best[last][j] == kInfinity ||
+          !piece_free(last + 1, candidate.exit, 0.0, !candidate.smoothing)) {
+        continue;
+      }
+      const double time = best[last][j] + pieceTime(leg_length[last + 1] - candidate.exit,
+                                                    candidate.speed, 0.0, v_max, a_max);
+      if (time < least) {
+        least = time;
+        choice = static_cast<int>(j);
+      }
     }
-    const double time = best[last][j] + pieceTime(leg_length[last + 1] - candidate.exit,
-                                                  candidate.speed, 0.0, v_max, a_max);
-    if (time < least) {
-      least = time;
-      choice = static_cast<int>(j);
+    std::vector<std::pair<std::size_t, std::size_t>> chosen;
+    std::size_t i = corners;
+    while (i-- > 0 && choice >= 0) {
+      const Candidate& candidate = candidates[i][static_cast<std::size_t>(choice)];
+      chosen.emplace_back(i, static_cast<std::size_t>(choice));
+      const int previous = from[i][static_cast<std::size_t>(choice)];
+      if (candidate.smoothing && candidate.smoothing->corners == 2) --i;
+      choice = previous;
     }
+    return chosen;
+  };
+
+  // Coverage-preserving smoothing checks only the smoothings the programme chooses (each
+  // check rasterizes the corner): a refused one is dropped and the programme runs again,
+  // until every chosen smoothing preserves coverage. Every round drops a candidate, and
+  // the result is the fastest choice among the candidates that preserve coverage, as if
+  // all had been checked first. A corner left sharp whose fastest choice was refused
+  // counts as kept for coverage.
+  std::vector<bool> coverage_refused(corners, false);
+  std::vector<std::pair<std::size_t, std::size_t>> chosen = choose();
+  while (coverage) {
+    bool refused = false;
+    for (const auto& [i, j] : chosen) {
+      const Candidate& candidate = candidates[i][j];
+      if (!candidate.smoothing || verdict[i][j] != CoverageVerdict::kUnchecked) continue;
+      if (coverage->preserves(candidate.corner_path, *candidate.smoothing)) {
+        verdict[i][j] = CoverageVerdict::kPreserves;
+      } else {
+        verdict[i][j] = CoverageVerdict::kRefused;
+        coverage_refused[i] = true;
+        if (candidate.smoothing->corners == 2) coverage_refused[i - 1] = true;
+        refused = true;
+      }
+    }
+    if (!refused) break;
+    chosen = choose();
   }
 
-  // Walk the choices back; a reverse curve chosen at corner i is assembled at corner i - 1.
+  // A reverse curve chosen at corner i is assembled at corner i - 1.
   std::vector<std::optional<CornerSmoothing>> smoothings(corners);
-  int kept_for_coverage = 0;
-  std::size_t i = corners;
-  while (i-- > 0 && choice >= 0) {
-    const Candidate& chosen = candidates[i][static_cast<std::size_t>(choice)];
-    const int previous = from[i][static_cast<std::size_t>(choice)];
-    if (chosen.smoothing && chosen.smoothing->corners == 2) {
-      smoothings[i - 1] = chosen.smoothing;
-      --i;
+  for (const auto& [i, j] : chosen) {
+    const std::optional<CornerSmoothing>& smoothing = candidates[i][j].smoothing;
+    if (smoothing && smoothing->corners == 2) {
+      smoothings[i - 1] = smoothing;
     } else {
-      smoothings[i] = chosen.smoothing;
-      if (!chosen.smoothing && coverage_refused[i]) ++kept_for_coverage;
+      smoothings[i] = smoothing;
     }
-    choice = previous;
+  }
+  int kept_for_coverage = 0;
+  for (std::size_t i = 0; i < corners; ++i) {
+    if (!smoothings[i] && coverage_refused[i] &&
+        !(i > 0 && smoothings[i - 1] && smoothings[i - 1]->corners == 2)) {
+      ++kept_for_coverage;
+    }
   }
   SmoothedPath path = SmoothedPathAssembler::assemble(points, smoothings);
   path.statistics.kept_for_coverage = kept_for_coverage;

@@ -13,8 +13,8 @@ namespace kinematic_coverage::core {
 /// heading changes by more than kStraightTurnTolerance (after dropping duplicates),
 /// turns_smoothed those replaced by arcs, split by variant (counting corners);
 /// kept_for_coverage the corners
-/// that a feasible smoothing could have replaced but that coverage-preserving smoothing
-/// left sharp because every such smoothing would see less than the sharp turn.
+/// that coverage-preserving smoothing left sharp where the fastest feasible choice was a
+/// smoothing that would see less than the sharp turn.
 struct SmoothingStatistics {
   int turns_total = 0;
   int turns_smoothed = 0;
