@@ -25,7 +25,8 @@ while [ $# -gt 0 ]; do
   esac
 done
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(mission_file_fuzzer gtsplib_fuzzer corner_smoothing_fuzzer planner_fuzzer)
+  targets=(mission_file_fuzzer gtsplib_fuzzer corner_smoothing_fuzzer coverage_preserving_fuzzer
+           planner_fuzzer)
 fi
 "$root/scripts/install_dependencies.sh" --clang
 echo "== build the fuzz targets (clang, libFuzzer, ASan + UBSan) in $build_dir"
