@@ -9,6 +9,7 @@
 # fuzz/corpus/TARGET (read only) and a working corpus BUILD_DIR/corpus/TARGET that grows
 # from run to run. A crash, leak, undefined behaviour, violated property or an input
 # slower than 60 s fails the run; the input is saved as BUILD_DIR/findings/TARGET-*.
+# Several invocations may run at once on one build (one per core), each with its targets.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$root/scripts/sanitizer_env.sh"
@@ -19,7 +20,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --seconds) limit=("-max_total_time=$2"); shift 2 ;;
     --runs) limit=("-runs=$2"); shift 2 ;;
-    -h|--help) sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_fuzzers.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) targets+=("$1"); shift ;;
   esac
@@ -30,8 +31,13 @@ if [ ${#targets[@]} -eq 0 ]; then
 fi
 "$root/scripts/install_dependencies.sh" --clang
 echo "== build the fuzz targets (clang, libFuzzer, ASan + UBSan) in $build_dir"
+mkdir -p "$build_dir"
+# One configure and build at a time, so that campaigns can run side by side on one build.
+exec 9>"$build_dir.lock"
+flock 9
 kc_configure_sanitized "$build_dir" -DKC_FUZZ=ON
 cmake --build "$build_dir" -j"${JOBS:-$(nproc)}" --target "${targets[@]}" >/dev/null
+flock -u 9
 failed=0
 for target in "${targets[@]}"; do
   corpus=$build_dir/corpus/$target

@@ -5,7 +5,7 @@ kc_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
 export ASAN_OPTIONS=detect_leaks=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-export LSAN_OPTIONS=suppressions=$kc_root/cmake/lsan_suppressions.txt
+export LSAN_OPTIONS=suppressions=$kc_root/cmake/lsan_suppressions.txt:print_suppressions=0
 
 # kc_configure_sanitized BUILD_DIR [CMAKE_ARGS...]: configures a RelWithDebInfo clang build
 # with the sanitizers; its log goes to BUILD_DIR.configure.log.
