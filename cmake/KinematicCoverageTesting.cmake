@@ -27,6 +27,6 @@ function(kc_add_gtest name)
   target_link_libraries(${name} ${ARG_LIBRARIES})
   target_compile_definitions(${name} PRIVATE
     KC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    KC_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
+    KC_BENCH_DATA_DIR="${PROJECT_SOURCE_DIR}/bench/data"
     KC_TOOL_PATH="${CMAKE_RUNTIME_OUTPUT_DIRECTORY}/coverage_tool")
 endfunction()

@@ -25,7 +25,7 @@ std::size_t lineCount(const std::string& text) {
 
 TEST(GtspCommand, SolvesAGtsplibFileAndPrintsOneJsonLine) {
   const std::string file =
-      std::string(KC_SHARED_DIR) + "/benchmarks/gtsplib/instances/symmetric/11eil51.gtsp";
+      std::string(KC_BENCH_DATA_DIR) + "/gtsplib/instances/symmetric/11eil51.gtsp";
   std::string out;
   std::string err;
   ASSERT_EQ(run({file, "--seed", "3", "--time-limit", "10"}, &out, &err), 0) << err;

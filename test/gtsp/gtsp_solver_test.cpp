@@ -316,7 +316,7 @@ TEST(GtspSolver, ReachesGtsplibOptima) {
     const char* file;
     double optimum;
   };
-  const std::string dir = std::string(KC_SHARED_DIR) + "/benchmarks/gtsplib/instances/";
+  const std::string dir = std::string(KC_BENCH_DATA_DIR) + "/gtsplib/instances/";
   for (const Case& c : {Case{"symmetric/11eil51.gtsp", 174}, Case{"asymmetric/4br17.gtsp", 31},
                         Case{"symmetric/14st70.gtsp", 316}, Case{"asymmetric/14ft70.gtsp", 7707},
                         Case{"symmetric/20kroA100.gtsp", 9711}}) {

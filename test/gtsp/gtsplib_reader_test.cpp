@@ -152,7 +152,7 @@ TEST(GtsplibReader, MissingFileIsInvalidInput) {
 }
 
 TEST(GtsplibReader, ReadsTheBenchmarkInstances) {
-  const std::string dir = std::string(KC_SHARED_DIR) + "/benchmarks/gtsplib/instances/";
+  const std::string dir = std::string(KC_BENCH_DATA_DIR) + "/gtsplib/instances/";
   const GtsplibProblem ftv = GtsplibReader::readFile(dir + "asymmetric/35ftv170.gtsp");
   EXPECT_EQ(ftv.type, "AGTSP");
   EXPECT_EQ(ftv.instance.node_count, 171);
