@@ -2,8 +2,8 @@
 // obstacles. Decodes A, B, C, the turning radius, an optional hull and up to four small
 // star-shaped holes (disjoint and inside the hull, so that "inside the free area" has one
 // meaning), and extra waypoints; runs CornerSmoother on the corner, and smooths the
-// waypoints A, B, C, ... with Algorithm 1 (PathSmoother) and with the global strategy of
-// issue 10 (GlobalPathSmoother, with a fuzzed min_turning_radius and velocity model;
+// waypoints A, B, C, ... with Algorithm 1 (PathSmoother) and with the global smoothing
+// strategy (GlobalPathSmoother, with a fuzzed min_turning_radius and velocity model;
 // coverage_preserving_fuzzer covers its coverage-preserving option). Properties: those of
 // fuzzed_smoothing.h for both paths, and of a feasible corner smoothing:
 // - the arcs leave [A, B] and join [B, C] tangentially, and meet one another tangentially;

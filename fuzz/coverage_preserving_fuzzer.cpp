@@ -1,4 +1,4 @@
-// libFuzzer target: coverage-preserving smoothing (issue 10: GlobalPathSmoother with a
+// libFuzzer target: coverage-preserving smoothing (the global strategy: GlobalPathSmoother with a
 // preserved sensor) on fuzzed waypoint paths, obstacles and sensors. Decodes a turning
 // radius, 3 to 5 waypoints, obstacles and the global strategy's options as
 // corner_smoothing_fuzzer does (fuzzed_smoothing.h), and a footprint of any proportions.

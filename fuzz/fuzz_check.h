@@ -17,8 +17,8 @@ inline void fuzzCheck(bool holds, const std::string& message) {
   std::abort();
 }
 
-/// Runs `body`; InvalidInputError is the expected outcome for input the contract rejects
-/// (INTERFACE section 3) and is swallowed; any other exception aborts with its message.
+/// Runs `body`; InvalidInputError, the expected outcome for invalid input (docs/REFERENCE.md,
+/// Geometry and input rules), is swallowed; any other exception aborts with its message.
 template <typename Body>
 void runExpectingOnlyInvalidInput(Body body) {
   try {

@@ -162,7 +162,7 @@ inline void checkSmoothedPath(const PolygonWithHoles& area, const std::vector<Po
   }
 }
 
-/// The global strategy's options (issue 10) without a preserved sensor: the corner's
+/// The global smoothing strategy's options without a preserved sensor: the corner's
 /// radius as turning_radius, a smaller or equal min_turning_radius and a velocity model.
 inline GlobalSmoothingOptions globalOptions(FuzzedDataProvider& input, double radius) {
   GlobalSmoothingOptions options;

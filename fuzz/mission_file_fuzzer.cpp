@@ -3,7 +3,7 @@
 // polygon, start and goal, and PolygonCleaner. Properties: the parameters of a parsed
 // mission pass ParameterValidator; the cleaned free area has a counter-clockwise simple
 // hull, clockwise simple holes and a positive area no larger than the raw hull's
-// (INTERFACE section 3).
+// (docs/REFERENCE.md, Geometry and input rules).
 
 #include <cmath>
 #include <cstddef>
@@ -29,7 +29,7 @@ using kinematic_coverage::core::PolygonWithHoles;
 using kinematic_coverage::core::Ring;
 using kinematic_coverage::fuzz::fuzzCheck;
 
-/// Checks that the cleaner's output is what INTERFACE section 3 promises.
+/// Checks the cleaner's output against docs/REFERENCE.md, Geometry and input rules.
 void checkCleaned(const PolygonWithHoles& raw, const CleanedPolygon& cleaned) {
   const PolygonWithHoles& free_area = cleaned.free_area;
   const PolygonValidator validator;

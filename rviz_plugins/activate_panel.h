@@ -11,8 +11,8 @@ class QLabel;
 namespace kinematic_coverage::rviz_plugins {
 
 /// rviz panel with an "Activate" button (Alt+A) that publishes std_msgs/Empty on `activate`:
-/// coverage_planner then plans with the newest polygon, start and goal (INTERFACE
-/// section 4). Together with the Start and Goal tools it is the thesis's set-then-activate
+/// coverage_planner then plans with the newest polygon, start and goal (docs/REFERENCE.md,
+/// Nodes and topics). Together with the Start and Goal tools it is the thesis's set-then-activate
 /// workflow (Fig. 3.14). A line under the button says when it last sent and whether anyone
 /// listens.
 class ActivatePanel : public rviz::Panel {

@@ -24,7 +24,7 @@ namespace kinematic_coverage::rviz_plugins {
 /// geometry_msgs/PointStamped in the fixed frame and shows it as a sphere labelled with the
 /// point's name, until the next click moves it. It replaces rviz's Publish Point, whose one
 /// topic for every point made a wrong click unrecoverable (thesis Fig. 3.14); the planner
-/// only plans on `activate` (INTERFACE section 4), so a point can be set again any number of
+/// only plans on `activate` (by default), so a point can be set again any number of
 /// times before.
 class LabelledPointTool : public rviz::Tool {
   Q_OBJECT

@@ -1,4 +1,4 @@
-# The rviz plugins (catkin builds only, issue 7): the Set Start and Set Goal tools and the
+# The rviz plugins (catkin builds only): the Set Start and Set Goal tools and the
 # Activate panel. rviz is found here, not in catkin's COMPONENTS, so only this library links
 # Ogre and Qt; AUTOMOC is on for this target only.
 find_package(rviz REQUIRED)

@@ -5,7 +5,7 @@
 namespace kinematic_coverage::rviz_plugins {
 
 /// rviz tool "Set Start" (shortcut s): a left click sets the mission's start, published on
-/// `start` for coverage_planner (INTERFACE section 4) and shown as a green sphere.
+/// `start` for coverage_planner (docs/REFERENCE.md, Nodes and topics) and shown as a green sphere.
 class StartTool : public LabelledPointTool {
  public:
   StartTool();

@@ -5,8 +5,8 @@
 
 namespace kinematic_coverage::core {
 
-/// Thrown for input that the contract rejects (INTERFACE section 3): bad geometry,
-/// parameters out of range, an impossible request. The message names the problem
+/// Thrown for input the package rejects (docs/REFERENCE.md, Geometry and input rules): bad
+/// geometry, parameters out of range, an impossible request. The message names the problem
 /// precisely; boundaries (coverage_tool, nodes) catch it and report it (exit 2, ROS_ERROR).
 class InvalidInputError : public std::runtime_error {
  public:

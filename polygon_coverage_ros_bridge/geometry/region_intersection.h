@@ -9,7 +9,7 @@ namespace kinematic_coverage::core {
 /// The parts of `area` that lie in any of `regions` (exact Boolean operations, results
 /// rounded to doubles), each a polygon with a counter-clockwise hull and clockwise
 /// holes; parts smaller than `min_area` square metres are left out. Replanning covers
-/// only what is left to see (issue 8): the offset free area intersected with the
+/// only what is left to see: the offset free area intersected with the
 /// remaining area. Throws InvalidInputError for non-finite coordinates.
 std::vector<PolygonWithHoles> intersectWithRegions(const PolygonWithHoles& area,
                                                    const std::vector<PolygonWithHoles>& regions,

@@ -14,7 +14,7 @@ namespace kinematic_coverage::core {
 /// with 1 966 take 396 MB), so the limit keeps one offset under about 400 MB.
 constexpr double kMaxSkeletonPairs = 8e6;
 
-/// The offset free area (INTERFACE section 3) and what was dropped to get it.
+/// The offset free area (docs/REFERENCE.md, Geometry and input rules) and what it dropped.
 struct OffsetFreeArea {
   PolygonWithHoles area;              ///< CCW hull, CW holes
   std::vector<std::string> warnings;  ///< one line per dropped part

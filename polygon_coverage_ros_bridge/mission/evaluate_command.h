@@ -7,7 +7,7 @@
 namespace kinematic_coverage::core {
 
 /// `coverage_tool evaluate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value
-/// ...]` (INTERFACE section 7): the coverage of any trajectory, such as a robot's actual
+/// ...]`: the coverage of any trajectory, such as a robot's actual
 /// poses. Loads the mission, validates and cleans its polygon as `plan` does (its start
 /// and goal are not used), computes the offset free area, reads the trajectory
 /// (PoseCsvReader: columns x, y, yaw required, t and kind optional) and writes

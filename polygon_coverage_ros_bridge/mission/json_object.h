@@ -6,7 +6,7 @@
 
 namespace kinematic_coverage::core {
 
-/// A JSON object of numbers and nested objects, for `metrics.json` (INTERFACE section 7),
+/// A JSON object of numbers and nested objects, for `metrics.json` (docs/REFERENCE.md, Metrics),
 /// written without an external library. Keys keep their insertion order and are escaped
 /// as JSON requires; numbers are written in shortest round-trip form.
 class JsonObject {

@@ -7,7 +7,7 @@
 
 namespace kinematic_coverage::core {
 
-/// A coverage mission as a mission file describes it (INTERFACE section 7): the raw area
+/// A coverage mission as its file describes it (docs/REFERENCE.md, File formats): the raw area
 /// (not yet validated or cleaned), where the robot starts and ends, and the parameters.
 struct Mission {
   std::string frame_id = "map";  ///< frame of every coordinate, carried to every output

@@ -20,10 +20,10 @@ struct PlannedMission {
   double planning_time_s = 0.0;
 };
 
-/// Validates the mission's polygon, start and goal (INTERFACE section 3), cleans the
-/// polygon and plans it: the one sequence that coverage_tool, the nodes and the
-/// benchmarks share. `on_stage`, when given, hears of every stage as it finishes. Throws
-/// InvalidInputError for invalid input or an impossible request.
+/// Validates the mission's polygon, start and goal (docs/REFERENCE.md, Geometry and input
+/// rules), cleans the polygon and plans it: the one sequence that coverage_tool, the nodes
+/// and the benchmarks share. `on_stage`, when given, hears of every stage as it finishes.
+/// Throws InvalidInputError for invalid input or an impossible request.
 PlannedMission planMission(const Mission& mission, const StageCallback& on_stage = {});
 
 }  // namespace kinematic_coverage::core

@@ -6,8 +6,8 @@
 
 namespace kinematic_coverage::core {
 
-/// `coverage_tool plan MISSION.yaml --out DIR [--set name=value ...]` (INTERFACE section
-/// 7): loads the mission, validates and cleans the polygon, plans with CoveragePlanner,
+/// `coverage_tool plan MISSION.yaml --out DIR [--set name=value ...]` (docs/REFERENCE.md,
+/// coverage_tool): loads the mission, validates and cleans the polygon, plans with CoveragePlanner,
 /// smooths, samples and times the trajectory (TrajectoryGenerator), and writes
 /// DIR/waypoints.csv, DIR/trajectory.csv, DIR/metrics.json (planning_time_s: validation
 /// + cleaning + planning; cells, waypoint_count, path_length_m, time_cost_s, the

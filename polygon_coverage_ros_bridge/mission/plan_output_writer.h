@@ -28,7 +28,7 @@ struct PlanOutputRequest {
 
 /// Smooths, samples and times the plan's trajectory (TrajectoryGenerator), measures its
 /// coverage, and writes DIR/waypoints.csv, DIR/trajectory.csv, DIR/metrics.json and
-/// DIR/plot.png (INTERFACE section 7), with one progress line per stage on `out`.
+/// DIR/plot.png (docs/REFERENCE.md, File formats), with one progress line per stage on `out`.
 /// Returns the written paths. Throws InvalidInputError when a file cannot be written.
 std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
                                           const std::string& out_dir, std::ostream& out);

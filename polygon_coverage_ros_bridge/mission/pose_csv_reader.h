@@ -22,7 +22,7 @@ struct PoseTable {
   bool has_kind = false;
 };
 
-/// Reads CSV pose files (`trajectory.csv`, `visited` files, INTERFACE section 7): a header
+/// Reads pose files (`trajectory.csv`, `visited` files; docs/REFERENCE.md, File formats): a header
 /// row naming the columns, `x`, `y`, `yaw` required, `t` and `kind` optional, any other
 /// columns allowed and ignored, in any order. Fields are separated by commas (no quoting);
 /// surrounding spaces, CRLF line ends and blank lines are accepted. Every problem is an

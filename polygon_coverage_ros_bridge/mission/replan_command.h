@@ -7,7 +7,7 @@
 namespace kinematic_coverage::core {
 
 /// `coverage_tool replan MISSION.yaml --updated UPDATED.yaml --visited FILE.csv --out DIR
-/// [--set name=value ...]` (INTERFACE section 7): replans after obstacles moved
+/// [--set name=value ...]` (docs/REFERENCE.md, coverage_tool): replans after obstacles moved
 /// (Replanner: the remaining area by `replanning_method`, planned from the last visited
 /// pose to the mission's goal) and writes the files of `plan` (metrics.json also with
 /// `combined_coverage_percent`, the plot's heatmap showing visited and new together) and

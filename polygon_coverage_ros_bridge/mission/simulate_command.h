@@ -7,7 +7,7 @@
 namespace kinematic_coverage::core {
 
 /// `coverage_tool simulate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value
-/// ...]` (INTERFACE section 7): a robot model (TrajectoryFollower, parameters from the
+/// ...]`: a robot model (TrajectoryFollower, parameters from the
 /// mission and --set) follows the trajectory's poses from rest at the first one
 /// (RobotSimulator). Writes DIR/actual.csv (t,x,y,yaw at every simulation step, the start
 /// first), DIR/metrics.json (exactly traversal_time_s, tracking_error_sum_m,

@@ -18,7 +18,7 @@ struct TrajectoryCoverage {
   Heatmap heatmap;           ///< separate visits per cell, for plot.png
 };
 
-/// Measures the coverage (INTERFACE section 6) of a trajectory's sampled `poses` over a
+/// Measures the coverage of a trajectory's sampled `poses` over a
 /// mission's cleaned free area, with the sensor that `parameters` describe, on the raster
 /// of reportingResolution(): the one measurement behind `plan`'s figures for its own
 /// trajectory and `evaluate`'s for any trajectory file, so that both agree on the same
@@ -34,7 +34,7 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
 std::string coverageSummary(const TrajectoryCoverage& coverage);
 
 /// Sets `coverage_percent`, `coverage_loss_percent` and `reachable_coverage_percent` of
-/// metrics.json (INTERFACE section 7).
+/// metrics.json (docs/REFERENCE.md, Metrics).
 void setCoverageMetrics(const CoverageReport& report, JsonObject& metrics);
 
 }  // namespace kinematic_coverage::core

@@ -7,8 +7,8 @@
 
 namespace kinematic_coverage::core {
 
-/// Writes `waypoints.csv` (INTERFACE section 7): a header row `x,y,yaw`, then one row per
-/// waypoint, yaw wrapped into (-pi, pi], numbers in shortest round-trip form.
+/// Writes `waypoints.csv` (docs/REFERENCE.md, File formats): a header row `x,y,yaw`, then
+/// one row per waypoint, yaw wrapped into (-pi, pi], numbers in shortest round-trip form.
 class WaypointCsvWriter {
  public:
   /// The file's text. Throws std::domain_error for a non-finite value (a bug upstream).

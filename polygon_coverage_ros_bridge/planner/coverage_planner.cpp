@@ -30,7 +30,7 @@ constexpr double kDuplicateWaypointTolerance = 5e-7;
 constexpr double kRelativeDuplicateTolerance = 1e-9;
 /// A point this close (relative) to the offset free area counts as inside it.
 constexpr double kRelativeInsideTolerance = 1e-9;
-/// Clusters up to which the GTSP is solved exactly (Issue 2: exact up to 14 clusters).
+/// Clusters up to which the GTSP is solved exactly (the subset dynamic programme).
 constexpr int kExactClusterLimit = 14;
 /// Population cap of the memetic GTSP solver, half its default; with its focused search
 /// (GtspOptions) the 355-cell lake of docs/RELIABILITY.md (Memory bound) solves in 6-9 s
@@ -214,7 +214,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   for (const Point2& p : free_area.hull) scale = std::max(scale, p.cwiseAbs().maxCoeff());
   const double tolerance = kRelativeInsideTolerance * scale;
 
-  // Wall offset (INTERFACE section 3).
+  // Wall offset (docs/REFERENCE.md, Geometry and input rules).
   Clock::time_point t = Clock::now();
   OffsetFreeArea offset = computeOffsetFreeArea(free_area, parameters_.wall_distance);
   plan.offset_free_area = std::move(offset.area);
@@ -381,7 +381,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   append(graph.shortestPath(position, goal_inside), false);
   keep.back() = true;
   append({goal}, true);
-  // Jogs shorter than a turning radius would stay sharp turns (issue 4); a shift within
+  // Jogs shorter than a turning radius would stay sharp turns in smoothing; a shift within
   // half the lateral overlap keeps what the neighbouring lanes rely on seen.
   const JogRemoval jog_removal(graph, parameters_.turning_radius,
                                0.5 * (sensor.width() - sensor.sweepDistance()));

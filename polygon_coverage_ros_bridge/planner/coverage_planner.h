@@ -24,13 +24,13 @@ using StageCallback = std::function<void(const PlanningStage&)>;
 /// A coverage waypoint path and what the planner learned on the way.
 struct CoveragePlan {
   /// Waypoints; each yaw is the heading of the leg leaving it (the incoming heading at
-  /// the last one), INTERFACE section 4.
+  /// the last one); docs/REFERENCE.md, File formats.
   std::vector<Pose2> waypoints;
   /// Index range [first_inside, last_inside] of the waypoints within the offset free
   /// area; legs before and after it join a start or goal outside that area.
   std::size_t first_inside = 0;
   std::size_t last_inside = 0;
-  /// The offset free area that was planned (INTERFACE section 3).
+  /// The offset free area that was planned (docs/REFERENCE.md, Geometry and input rules).
   PolygonWithHoles offset_free_area;
   /// The cells of the chosen decomposition, counter-clockwise.
   std::vector<Ring> cells;
@@ -62,7 +62,7 @@ class CoveragePlanner {
                     const StageCallback& on_stage = {}) const;
 
   /// As plan(), covering only the parts of the offset free area inside `coverage_region`
-  /// (replanning, issue 8: the area still to see). The parts, however many, are swept in
+  /// (replanning: the area still to see). The parts, however many, are swept in
   /// one generalized TSP; transitions use the whole offset free area. With nothing to
   /// cover, the path goes from start to goal.
   CoveragePlan planRegion(const PolygonWithHoles& free_area,

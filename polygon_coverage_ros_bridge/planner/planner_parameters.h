@@ -4,7 +4,7 @@
 
 namespace kinematic_coverage::core {
 
-/// Every parameter of INTERFACE section 5, with its default. The same names are the keys
+/// Every parameter (docs/REFERENCE.md, Parameters) with its default. The same names are the keys
 /// of mission files, `--set name=value`, config/default.yaml and the nodes' private
 /// parameters. Units: metres, radians, seconds.
 struct PlannerParameters {
@@ -23,7 +23,7 @@ struct PlannerParameters {
   bool smoothing = true;                             ///< false: segments and rotations
   double turning_radius = 1.0;                       ///< m
   /// "global": every corner's smoothing chosen jointly, minimising traversal time;
-  /// "local": the thesis's Algorithm 1, corner by corner (issue 10).
+  /// "local": the thesis's Algorithm 1, corner by corner.
   std::string smoothing_strategy = "global";
   double min_turning_radius = 0.0;         ///< m, global only; 0: equal to turning_radius
   bool coverage_preserving = false;        ///< global only: smooth only where nothing goes unseen

@@ -8,8 +8,8 @@
 
 namespace kinematic_coverage::core {
 
-/// Size limits of planning (INTERFACE section 3: inputs over the size limits the package
-/// documents are invalid input), checked right after the decomposition, before anything of
+/// Size limits of planning (docs/REFERENCE.md, Geometry and input rules: inputs over them
+/// are invalid input), checked right after the decomposition, before anything of
 /// their size is built. The polygon's own limits (vertices, holes) are in
 /// validation/polygon_validator.h, the generalized TSP's (kMaxGtspNodes) in
 /// gtsp/gtsp_instance.h. Measured in docs/RELIABILITY.md (Memory bound).

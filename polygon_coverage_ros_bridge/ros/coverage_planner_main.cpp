@@ -1,4 +1,4 @@
-// The coverage_planner node (INTERFACE section 4).
+// The coverage_planner node (docs/REFERENCE.md, Nodes and topics).
 
 #include <ros/ros.h>
 

@@ -14,8 +14,8 @@
 
 namespace kinematic_coverage::nodes {
 
-/// The `coverage_planner` node (INTERFACE section 4): keeps the newest polygon, start and
-/// goal, plans with the core's planMission when `activate` arrives or `~plan` is called
+/// The `coverage_planner` node (docs/REFERENCE.md, Nodes and topics): keeps the newest
+/// polygon, start and goal, plans with the core's planMission on `activate` or a `~plan` call
 /// (or, with `~plan_on_receive`, as soon as all three are known and whenever one changes),
 /// and publishes the waypoints on `waypoint_list`, what it computed on `~markers` and the
 /// outcome of every request on `~status` (latched, so a late subscriber sees the last one). Start

@@ -14,7 +14,7 @@
 
 namespace kinematic_coverage::nodes {
 
-/// The core's polygon from a message (z ignored, INTERFACE section 2). Non-finite
+/// The core's polygon from a message (z ignored; docs/REFERENCE.md, Messages). Non-finite
 /// coordinates pass through: PolygonValidator names them.
 core::PolygonWithHoles fromMessage(const ::kinematic_coverage::PolygonWithHoles& message);
 
@@ -26,7 +26,7 @@ core::PolygonWithHoles fromMessage(const ::kinematic_coverage::PolygonWithHoles&
 core::Point2 fromMessage(const geometry_msgs::Point& point);
 
 /// Poses as a PoseArray: positions at z = 0, orientations the headings as yaw quaternions
-/// (INTERFACE section 4).
+/// (docs/REFERENCE.md, Messages).
 geometry_msgs::PoseArray toPoseArray(const std::vector<core::Pose2>& poses,
                                      const std_msgs::Header& header);
 
@@ -42,7 +42,7 @@ geometry_msgs::PoseArray toPoseArray(const std::vector<core::TrajectoryPose>& po
 nav_msgs::Path toPath(const std::vector<core::TrajectoryPose>& poses,
                       const std_msgs::Header& header);
 
-/// A `~status` message (INTERFACE section 2) stamped now, in `frame_id`.
+/// A `~status` message (docs/REFERENCE.md, Messages) stamped now, in `frame_id`.
 ::kinematic_coverage::PlanStatus statusMessage(const std::string& stage, bool success,
                                                const std::string& message, double duration_s,
                                                const std::string& frame_id);

@@ -1,6 +1,6 @@
-// The mission_publisher node (INTERFACE section 4): publishes the polygon, start and goal
-// of the mission file named by `~mission`, latched, in the mission's frame, so that a
-// launch file can run a mission without anyone publishing by hand.
+// The mission_publisher node (docs/REFERENCE.md, Nodes and topics): publishes the polygon,
+// start and goal of the mission file named by `~mission`, latched, in the mission's frame,
+// so that a launch file can run a mission without anyone publishing by hand.
 
 #include <geometry_msgs/PointStamped.h>
 #include <ros/ros.h>

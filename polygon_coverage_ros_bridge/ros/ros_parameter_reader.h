@@ -6,7 +6,7 @@
 
 namespace kinematic_coverage::nodes {
 
-/// The planner parameters of INTERFACE section 5 from a node's private namespace: the
+/// The planner parameters (docs/REFERENCE.md, Parameters) from a node's private namespace: the
 /// built-in defaults (equal to config/default.yaml), overridden by each parameter that is
 /// set, read and validated exactly as a mission file's keys. Throws
 /// core::InvalidInputError naming the parameter for a wrong type or a value out of range.

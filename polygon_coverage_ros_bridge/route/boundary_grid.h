@@ -8,7 +8,7 @@ namespace kinematic_coverage::core {
 
 /// The boundary of a polygon with holes, its edges bucketed in a uniform grid, answering
 /// fast whether a straight segment stays inside the closed polygon: the visibility test
-/// of the transition router (issue 2, "shortest paths in the offset free area").
+/// of the transition router (shortest paths in the offset free area).
 ///
 /// Boundary points count as inside within tolerance(). A segment may run along an edge
 /// and may pass through a vertex, also a pinch point where rings touch, as long as it

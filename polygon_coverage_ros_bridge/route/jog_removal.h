@@ -8,7 +8,7 @@
 namespace kinematic_coverage::core {
 
 /// Removes the short jogs of a waypoint path that no robot with a turning radius can
-/// smooth (issue 4): where lanes of neighbouring cells or a lane and its transition meet a
+/// smooth: where lanes of neighbouring cells or a lane and its transition meet a
 /// few centimetres apart, the path bends twice within less than a turning radius, and
 /// Algorithm 1 can smooth neither bend. A waypoint goes when one of its legs is shorter
 /// than `short_leg`, it lies at most `max_deviation` from the straight segment that would

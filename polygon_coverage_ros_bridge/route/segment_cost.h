@@ -7,7 +7,7 @@
 
 namespace kinematic_coverage::core {
 
-/// The cost of driving one straight segment under `cost_function` (INTERFACE section 5),
+/// The cost of driving one straight segment under `cost_function` (docs/REFERENCE.md, Parameters),
 /// the edge weight of the planner's transitions and of its generalized TSP.
 ///
 /// "distance": the length. "time": rest-to-rest with a trapezoidal velocity profile

@@ -11,8 +11,8 @@
 namespace kinematic_coverage::core {
 
 /// Cheapest routes between points of a polygon with holes (the offset free area), for
-/// the transitions between sweep patterns (issue 2, "shortest paths in the offset free
-/// area (visibility graph)"; Thesis section 3.1, its reference [10]).
+/// the transitions between sweep patterns (shortest paths in the offset free
+/// area by a visibility graph; Thesis section 3.1, its reference [10]).
 ///
 /// Nodes are the vertices a route may bend at (reflex corners, pinch points); edges join
 /// mutually visible nodes, weighted by SegmentCost, so a route costs the sum of its

@@ -5,10 +5,10 @@
 
 namespace kinematic_coverage::core {
 
-/// The sensor's footprint on the bottom (INTERFACE section 6): a rectangle centred on the
-/// pose, `width` across the heading and `length` along it. A frustum sensor at distance d
-/// sees W = 2 d tan(lateral_fov / 2), L = 2 d tan(onward_fov / 2); a line sensor sees
-/// W = lateral_footprint, L = 0.
+/// The sensor's footprint on the bottom (docs/REFERENCE.md, Sensor footprint and coverage):
+/// a rectangle centred on the pose, `width` across the heading and `length` along it. At
+/// distance d a frustum sensor sees W = 2 d tan(lateral_fov / 2), L = 2 d tan(onward_fov / 2);
+/// a line sensor sees W = lateral_footprint, L = 0.
 class FrustumSensor {
  public:
   FrustumSensor(double width, double length, double lateral_overlap);

@@ -16,7 +16,7 @@ constexpr double kRelativeLaneInset = 1e-9;
 /// A lane within this (relative) distance of an existing one is the same lane.
 constexpr double kRelativeLaneMerge = 1e-6;
 /// Sides within this angle (radians, 15 degrees) of the lanes' direction are flanks: every
-/// point of a flank that lies alongside a lane must lie in a lane's footprint (issue 11).
+/// point of a flank that lies alongside a lane must lie in a lane's footprint (soak seed 3640).
 /// Where the lanes are not parallel to such a side, it leaves a wedge between the ends of
 /// two neighbouring lanes that runs along the lanes for up to (s - W/2) / tan(angle) - L/2:
 /// most of a lane's length when the side is nearly parallel to them (soak seed 3640: 2
@@ -377,7 +377,7 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& 
   // most one sweep distance apart, outer lanes within the margin of the cell's sides)
   // and without leaving more of the flanks unseen, otherwise an extra lane is added.
   // Moving beats adding: an extra lane beside a lane a few centimetres away makes a
-  // pattern that doubles back on itself and a jog no turning radius can smooth (issue 4).
+  // pattern that doubles back on itself and a jog no turning radius can smooth.
   // A moved lane stays where it was moved.
   std::vector<Interval> spans = intervalsAt(positions);
   FlankGap gap = flankGapAt(positions);

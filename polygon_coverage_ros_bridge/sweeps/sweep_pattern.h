@@ -32,7 +32,7 @@ using TransitionPath = std::function<std::vector<Point2>(const Point2&, const Po
 /// distance, in which case the lanes are spread evenly. Where a corner of the cell would
 /// stay unseen by every lane's swept footprint, an extra lane is placed through it. The
 /// lanes' flanks (the sides within 15 degrees of the direction) are then checked along the
-/// lanes' whole extent (issue 11): a point of a flank that lies alongside one of its two
+/// lanes' whole extent (soak seed 3640): a point of a flank that lies alongside one of its two
 /// neighbouring lanes (between that lane's ends) must lie in some lane's swept footprint;
 /// where a flank slants away from the lanes and leaves such points unseen, a lane is moved
 /// or one is added until every such point is seen. A corner moves a lane only when that

@@ -4,7 +4,7 @@
 
 namespace kinematic_coverage::core {
 
-/// Checks planner parameters against their ranges (INTERFACE section 3): turning_radius,
+/// Checks planner parameters against their ranges (docs/REFERENCE.md, Parameters): turning_radius,
 /// sensor_distance, v_max, a_max, yaw_rate_max, the sampling distances and angle,
 /// lateral_footprint and alpha > 0; wall_distance >= 0; lateral_overlap in [0, 1);
 /// lateral_fov and onward_fov in (0, pi); every number finite; every name-valued

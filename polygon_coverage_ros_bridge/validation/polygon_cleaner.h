@@ -16,12 +16,12 @@ struct CleanedPolygon {
   std::vector<std::string> warnings;
 };
 
-/// Cleans an input polygon as INTERFACE section 3 says, with exact Boolean operations
-/// (CGAL's Exact_predicates_exact_constructions_kernel): duplicate consecutive vertices are
-/// dropped; holes that overlap or touch each other along an edge (or at several points, or
-/// one inside the other) are merged; the parts of holes outside the hull are cut off, and
-/// a hole crossing or touching the hull along an edge cuts the hull back. Holes are named
-/// as in PolygonValidator ("hole 2" is the input's third hole).
+/// Cleans an input polygon (docs/REFERENCE.md, Geometry and input rules) with exact
+/// Boolean operations (CGAL's Exact_predicates_exact_constructions_kernel): duplicate
+/// consecutive vertices are dropped; holes that overlap or touch each other along an edge
+/// (or at several points, or one inside the other) are merged; the parts of holes outside
+/// the hull are cut off, and a hole crossing or touching the hull along an edge cuts the
+/// hull back. Holes are named as in PolygonValidator ("hole 2" is the input's third hole).
 class PolygonCleaner {
  public:
   /// Cleans `raw`, which must have passed PolygonValidator::validate. Throws

@@ -7,8 +7,8 @@
 
 namespace kinematic_coverage::core {
 
-/// Size limits of the input the package accepts (INTERFACE section 3: "inputs over the
-/// size limits the package documents" are invalid input). They keep the exact-arithmetic
+/// Size limits of the input the package accepts (docs/REFERENCE.md, Geometry and input
+/// rules: inputs over them are invalid input). They keep the exact-arithmetic
 /// cleaning and the planner within seconds and bounded memory.
 /// At most this many vertices in the hull and all holes together.
 constexpr std::size_t kMaxTotalVertices = 100000;
@@ -17,8 +17,8 @@ constexpr std::size_t kMaxHoles = 5000;
 /// Largest absolute value of a coordinate, metres (UTM northings stay below 1e7 m).
 constexpr double kMaxCoordinateMagnitude = 1e8;
 
-/// Checks raw input polygons against INTERFACE section 3 before cleaning, with exact
-/// predicates (CGAL's Exact_predicates_inexact_constructions_kernel), and throws
+/// Checks raw input polygons before cleaning (docs/REFERENCE.md, Geometry and input rules),
+/// with exact predicates (CGAL's Exact_predicates_inexact_constructions_kernel), and throws
 /// InvalidInputError naming the first problem: which ring ("hull", "hole 2"; holes are
 /// numbered from 0 in input order, as `polygon.holes[2]` in a mission file), which vertex
 /// (numbered from 0 in input order) or which pair of edges (edge i joins vertex i to the
@@ -34,7 +34,7 @@ class PolygonValidator {
   /// Rejects a non-finite or too large start or goal, or one strictly inside a hole of
   /// `polygon` (the raw polygon, so that the hole is named as in the input), e.g.
   /// "start (5, 5) lies inside hole 2". `name` is "start" or "goal". Outside the hull is
-  /// allowed: the planner joins such a point by a straight leg (INTERFACE section 3).
+  /// allowed: the planner joins such a point by a straight leg.
   void validateEndpoint(const std::string& name, const Point2& point,
                         const PolygonWithHoles& polygon) const;
 

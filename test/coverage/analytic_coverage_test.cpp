@@ -1,6 +1,6 @@
 // Coverage on the raster that coverage_tool reports on (reportingResolution) against the
-// seen areas of motions known in closed form (issue 5: "tests against analytic cases (a
-// straight sweep over a rectangle, a full circle turn, an in-place rotation) to 0.1 %").
+// seen areas of motions known in closed form, to 0.1 % of the free area (a straight sweep
+// over a rectangle, a full circle turn, an in-place rotation).
 // The trajectories are sampled as TrajectoryGenerator samples them (0.5 m segments, 0.1 m
 // arcs, 0.2 rad rotations) unless a case needs the continuous motion.
 #include <gtest/gtest.h>
@@ -24,7 +24,7 @@ constexpr double kFreeAreaM2 = 1600.0;
 const FrustumSensor kWideSensor(6.0 * std::tan(2.27 / 2.0), 6.0 * std::tan(0.26), 0.0);
 const FrustumSensor kNarrowSensor(6.0 * std::tan(0.6), 6.0 * std::tan(0.26), 0.0);
 
-/// Issue 5's accuracy: 0.1 % of the free area, in square metres.
+/// The reported coverage's accuracy: 0.1 % of the free area, in square metres.
 constexpr double kTolerance = 1e-3 * kFreeAreaM2;
 
 /// Area of the free area's cells that `poses` see, on the reporting raster.
@@ -166,7 +166,7 @@ double unionOfTurnedFootprints(const FrustumSensor& sensor, const std::vector<do
 
 TEST(AnalyticCoverage, SampledTurnInPlaceSeesTheUnionOfItsFootprints) {
   // A trajectory's rotation poses share a position: the area seen is the union of their
-  // footprints (INTERFACE section 6), which misses slivers of the disk between them.
+  // footprints, which misses slivers of the disk between them.
   for (const FrustumSensor& sensor : {kWideSensor, kNarrowSensor}) {
     const std::vector<Pose2> poses = turnInPlace({20.0, 20.0}, 32);  // 0.196 rad apart
     std::vector<double> yaws;

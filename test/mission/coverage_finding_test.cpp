@@ -1,4 +1,4 @@
-// The thesis's coverage finding (Thesis Chapter 4, Fig. 4.2 and 4.6; issue 5): with
+// The thesis's coverage finding (Thesis Chapter 4, Fig. 4.2 and 4.6): with
 // 40 % lateral overlap smoothing costs no coverage, while on a path with acute corners
 // and no overlap the inner smoothings cut corners and lose coverage. Measured as
 // coverage_tool measures it: planMission, TrajectoryGenerator, measureTrajectoryCoverage.
@@ -95,7 +95,7 @@ TEST(CoverageFinding, AcuteCornersSmoothedLoseCoverage) {
 }
 
 TEST(CoverageFinding, CoveragePreservingSmoothingLosesNoCoverageAndIsFaster) {
-  // Issue 10 on the acute-corner mission: at most 0.05 points more loss than the sharp
+  // On the acute-corner mission: at most 0.05 points more loss than the sharp
   // path, in less time.
   const MissionTrajectory preserved = planTrajectory(
       "parallelogram_60.yaml", true, {"smoothing_strategy=global", "coverage_preserving=true"});
@@ -113,7 +113,7 @@ TEST(CoverageFinding, CoveragePreservingSmoothingLosesNoCoverageAndIsFaster) {
 }
 
 TEST(CoverageFinding, ReportedFiguresAgreeWithAFineRaster) {
-  // Issue 5: accurate to 0.1 % of the free area.
+  // The reported figures: accurate to 0.1 % of the free area.
   for (const std::string mission : {"lake_30x30.yaml", "parallelogram_60.yaml"}) {
     for (const bool smoothing : {true, false}) {
       SCOPED_TRACE(mission + (smoothing ? " smoothed" : " unsmoothed"));

@@ -158,7 +158,7 @@ TEST(CoveragePlanner, AllCostFunctionsAndDecompositions) {
   }
 }
 
-/// Issue 2: on 200 seeded random maps (hulls 50 to 200 m across, 0 to 15 holes,
+/// The planner's guarantee: on 200 seeded random maps (hulls 50 to 200 m across, 0 to 15 holes,
 /// footprints from 12.9 m down to 2 m), every leg lies in the offset free area and the
 /// footprints swept along the legs cover at least 99 % of the reachable area.
 TEST(CoveragePlanner, RandomMapsAreCoveredInsideTheOffsetArea) {

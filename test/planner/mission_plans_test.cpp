@@ -28,7 +28,7 @@ std::size_t laneCount(const Mission& mission, const PlannedMission& planned) {
   return lanes;
 }
 
-/// Issue 4 on a mission's trajectory: consecutive poses at most the sampling distance
+/// On a mission's trajectory: consecutive poses at most the sampling distance
 /// apart, heading equal to the direction of travel on segments and arcs, every pose in
 /// the free area, curvature at most 1 / r.
 void expectValidTrajectory(const Mission& mission, const PlannedMission& planned,
@@ -72,7 +72,7 @@ TEST(MissionPlans, Lake30x30) {
         TrajectoryGenerator(variant.parameters).generate(planned.plan.waypoints, planned.free_area);
     expectValidTrajectory(variant, planned, trajectory);
     if (smoothing) {
-      // Issue 10: the default (global) strategy smooths at least 98 % of the turns.
+      // The default (global) smoothing strategy smooths at least 98 % of the turns.
       const SmoothingStatistics& turns = trajectory.statistics;
       ASSERT_GT(turns.turns_total, 0);
       EXPECT_GE(turns.turns_smoothed, 0.98 * turns.turns_total)
@@ -98,7 +98,7 @@ TEST(MissionPlans, Lake7x5HasAtLeastFiveSweeps) {
 }
 
 TEST(MissionPlans, GlobalSmoothingIsNeverSlowerThanLocal) {
-  // Issue 10, on the shipped missions with their parameters; with a variable radius the
+  // The global strategy, on the shipped missions with their parameters; with a variable radius the
   // curvature stays at most 1 / min_turning_radius.
   for (const std::string name : {"lake_30x30.yaml", "lake_7_5.yaml", "parallelogram_60.yaml"}) {
     SCOPED_TRACE(name);

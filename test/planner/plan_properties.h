@@ -7,7 +7,7 @@
 
 namespace kinematic_coverage::core {
 
-/// Legs may leave the offset free area by this much (Issue 2).
+/// Legs may leave the offset free area by this much (rounding).
 constexpr double kLegTolerance = 1e-6;
 
 /// The properties every plan must have: it starts at the start and ends at the goal,

@@ -11,7 +11,7 @@
 
 namespace kinematic_coverage::core::testing {
 
-/// Issue 8's drift scenario on the lake mission: the robot followed the first
+/// The replanning drift scenario on the lake mission: the robot followed the first
 /// `followed_share` of the planned trajectory, then both obstacles moved by `shift`.
 struct DriftScenario {
   Mission mission;

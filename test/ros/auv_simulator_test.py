@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 9 rostest: auv_simulator follows the lake trajectory. `pose` stays near the
+"""Simulated-robot rostest: auv_simulator follows the lake trajectory. `pose` stays near the
 trajectory, `visited` grows oldest first from the trajectory's first pose, the robot
 arrives at the end; a newer trajectory restarts it from where it is with the history
 kept, and an empty or older trajectory is refused without stopping the node."""

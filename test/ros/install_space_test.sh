@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Install-space test (issue 6): installs the package from a configured and built build
+# Install-space test: installs the package from a configured and built build
 # directory into a temporary directory, sources that prefix's setup.bash only, runs
 # `roslaunch kinematic_coverage mission.launch` (which starts its own master on a free
 # port) and waits for a `trajectory` message. Exit status 0 when one arrives, non-zero

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 6 rostest: the lake mission through mission_publisher, coverage_planner and
+"""Pipeline rostest: the lake mission through mission_publisher, coverage_planner and
 smooth_trajectory_generator. The received trajectory lies in the free area, is
 continuous, starts at the start and ends at the goal; both ~status report success."""
 

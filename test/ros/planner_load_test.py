@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 11 rostest, nodes under load: a burst of 1 000 polygons (100 a second for 10 s) to a
+"""Reliability rostest, nodes under load: a burst of 1 000 polygons (100 a second for 10 s) to a
 coverage_planner with plan_on_receive. Polygon k is a rectangle with six holes, placed at
 x = 100 k m and 60 + k % 7 m wide, so that a waypoint list tells which polygon it answers;
 planning one takes longer than the 10 ms between them. The node plans one polygon at a time

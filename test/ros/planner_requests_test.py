@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 6 rostest: bad input, the ~plan service, replanning on a changed polygon and
+"""Node rostest: bad input, the ~plan service, replanning on a changed polygon and
 start/goal in another frame, against a running coverage_planner and
 smooth_trajectory_generator."""
 

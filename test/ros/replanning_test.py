@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 8 rostest: `updated_polygon` and `visited` in, a new `waypoint_list` and
+"""Replanning rostest: `updated_polygon` and `visited` in, a new `waypoint_list` and
 `trajectory` out, starting at the last visited pose and avoiding the moved obstacles."""
 
 import math

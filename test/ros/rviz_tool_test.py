@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 7 rostest: the rviz Set Start / Set Goal tools and the Activate panel in the real
+"""rviz plugin rostest: the rviz Set Start / Set Goal tools and the Activate panel in the real
 rviz, driven with xdotool under Xvfb (thesis Fig. 3.14: set and change start and goal, then
 activate). The test publishes the lake's polygon, starts rviz with config/rviz/pipeline.rviz
 (a TopDownOrtho view of known scale, so a pixel maps to known metres), picks Start by its

@@ -3,11 +3,11 @@ if(catkin_FOUND)
   find_package(rostest REQUIRED)
   add_rostest(test/ros/pipeline_lake.test DEPENDENCIES ${KC_NODE_TARGETS})
   add_rostest(test/ros/planner_requests.test DEPENDENCIES ${KC_NODE_TARGETS})
-  # Issue 11: 100 polygons a second for 10 s to coverage_planner with plan_on_receive.
+  # Load: 100 polygons a second for 10 s to coverage_planner with plan_on_receive.
   add_rostest(test/ros/planner_load.test DEPENDENCIES ${KC_NODE_TARGETS})
   add_rostest(test/ros/replanning.test DEPENDENCIES ${KC_NODE_TARGETS})
   add_rostest(test/ros/auv_simulator.test DEPENDENCIES ${KC_NODE_TARGETS})
-  # GUI test of the rviz tools (issue 7): needs a DISPLAY (xvfb-run), skips without one.
+  # GUI test of the rviz tools: needs a DISPLAY (xvfb-run), skips without one.
   add_rostest(test/ros/rviz_tool.test
     DEPENDENCIES ${KC_NODE_TARGETS} kinematic_coverage_rviz_plugins)
   # The launch files name only packages and arguments that exist.

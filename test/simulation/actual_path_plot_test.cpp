@@ -1,5 +1,5 @@
 // The actual path of `coverage_tool simulate` in CoveragePlot: coloured by tracking error,
-// with its colour bar (INTERFACE section 7, simulate's plot.png).
+// with its colour bar (simulate's plot.png; docs/REFERENCE.md, coverage_tool).
 #include <cairo.h>
 #include <gtest/gtest.h>
 

@@ -42,7 +42,7 @@ RobotRun planAndSimulate(const std::string& mission_name,
 }
 
 /// The overrides with `smoothing` on or off, smoothing by the thesis's Algorithm 1 (the
-/// global strategy of issue 10 makes the smoothed runs faster than the thesis's).
+/// global smoothing strategy makes the smoothed runs faster than the thesis's).
 std::vector<std::string> with(std::vector<std::string> overrides, const std::string& smoothing) {
   overrides.push_back("smoothing=" + smoothing);
   overrides.push_back("smoothing_strategy=local");

@@ -10,10 +10,10 @@
 namespace kinematic_coverage::core {
 namespace testing {
 
-/// A seeded random mission as issue 2 sizes them: a hull 50 to 200 m across with up to
+/// A seeded random mission as the planner's tests size them: a hull 50 to 200 m across with up to
 /// `holes_max` holes, a footprint 2 to 12.9 m wide, a wall distance of 0.5 to 1.5 m and a
 /// lateral overlap of 0.2 to 0.6; start and goal near two hull vertices, pulled inwards out
-/// of every hole. Shared by the soak (issue 11) and the smoothing comparison (issue 10).
+/// of every hole. Shared by the soak test and the smoothing comparison benchmark.
 struct RandomMission {
   Mission mission;
   double size_m = 0.0;

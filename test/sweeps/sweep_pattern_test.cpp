@@ -160,7 +160,7 @@ TEST(SweepPattern, MovesANearbyLaneThroughAnUnseenCornerRatherThanAddingOne) {
 }
 
 TEST(SweepPattern, LongSideSlantingAwayFromTheLanesIsSeenAlongItsWholeLength) {
-  // Soak seed 3640 (issue 11): a cell of the offset area whose lanes run parallel to its
+  // Soak test seed 3640: a cell of the offset area whose lanes run parallel to its
   // left side (a decomposition cut) while its right side, a 46 m hull side, slants away
   // from them by 2 degrees. Its far corner moved the outer lane onto itself, a lane of no
   // length, and the next lane, 3.8 m from the side at its top, left a strip along the

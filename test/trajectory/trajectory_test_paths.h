@@ -43,7 +43,7 @@ inline std::vector<PathPrimitive> randomG1Path(std::mt19937& rng, int count) {
   return path;
 }
 
-/// Checks the sampling contract of INTERFACE section 7 on `poses` sampled from `path`:
+/// Checks the sampling rules (docs/REFERENCE.md, File formats) on `poses` sampled from `path`:
 /// gaps within the intervals, every non-degenerate primitive's start and end present, no
 /// repeated pose except a rotation's, yaw in (-pi, pi] and along the direction of travel.
 inline void expectSamplingContract(const std::vector<PathPrimitive>& path,

@@ -10,7 +10,7 @@
 
 namespace kinematic_coverage::core {
 
-/// The coverage figures of one trajectory (INTERFACE sections 3 and 6).
+/// The coverage figures of one trajectory (docs/REFERENCE.md, Sensor footprint and coverage).
 struct CoverageReport {
   /// Seen share of the free area, percent.
   double coverage_percent = 0.0;
@@ -20,13 +20,13 @@ struct CoverageReport {
   double reachable_coverage_percent = 0.0;
 };
 
-/// Cell edge (metres) of the rasters on which coverage_tool measures coverage: issue 5
-/// asks for cells of at most 5 cm, accurate to 0.1 % of the free area.
+/// Cell edge (metres) of the rasters on which coverage_tool measures coverage: cells of
+/// at most 5 cm, accurate to 0.1 % of the free area.
 constexpr double kReportingCellSize = 0.05;
 
-/// The resolution of the coverage figures that coverage_tool reports (INTERFACE section
-/// 6): the automatic cell size for a worst-case error of 0.1 % of the free area, but no
-/// finer than kReportingCellSize. Maps up to about 100 m across get 5 cm cells, whose
+/// The resolution of the coverage figures that coverage_tool reports: the automatic cell
+/// size for a worst-case error of 0.1 % of the free area, but no finer than
+/// kReportingCellSize. Maps up to about 100 m across get 5 cm cells, whose
 /// error is far below 0.1 % (test/coverage/analytic_coverage_test.cpp) although the worst
 /// case (perimeter * cell / 2) is looser; larger maps get the coarser cells that the bound
 /// allows, which the 4 000 000-cell budget coarsens further on large maps (by 1 % on a
@@ -48,7 +48,7 @@ class CoverageEvaluator {
   const CellMask& offsetFreeArea() const { return offset_free_area_; }
   const CellMask& reachableArea() const { return reachable_area_; }
 
-  /// What the sensor sees along a sampled trajectory (INTERFACE section 6).
+  /// The seen area of a sampled trajectory (docs/REFERENCE.md, Sensor footprint and coverage).
   SeenArea seeTrajectory(const std::vector<Pose2>& poses) const;
 
   /// What the sensor sees along a waypoint path driven as straight legs with in-place

@@ -39,7 +39,7 @@ struct RasterResolution {
 };
 
 /// A grid of square cells over a bounding box, on which areas are sampled at the cell
-/// centres (even-odd scanline rasterization). Coverage (INTERFACE section 6) is counted
+/// centres (even-odd scanline rasterization). Coverage is counted
 /// on it in pure doubles, with no exact geometry, so that evaluating a map is fast.
 class CoverageRaster {
  public:

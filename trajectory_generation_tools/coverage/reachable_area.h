@@ -12,7 +12,7 @@ namespace kinematic_coverage::core {
 /// Throws InvalidInputError for a negative or non-finite radius or a mask of the wrong size.
 CellMask dilateMask(const CoverageRaster& raster, const CellMask& mask, double radius);
 
-/// The reachable area (INTERFACE section 3): the free cells within half a footprint
+/// The reachable area: the free cells within half a footprint
 /// length of the offset free area; with a line sensor (length 0) the offset free area.
 /// Throws InvalidInputError for a negative or non-finite length or masks of the wrong size.
 CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,

@@ -12,7 +12,7 @@
 
 namespace kinematic_coverage::core {
 
-/// The heatmap of INTERFACE section 6 as a grid, for plots: `visits[index]` is how many
+/// The heatmap as a grid, for plots: `visits[index]` is how many
 /// separate times the sensor saw the cell, saturating at 65535 (row-major from `origin`,
 /// the grid's minimum corner, with square cells of `cell_size`).
 struct Heatmap {
@@ -23,8 +23,8 @@ struct Heatmap {
   std::vector<std::uint16_t> visits;
 };
 
-/// The area that a sensor sees along trajectories, on a CoverageRaster (INTERFACE
-/// section 6; the thesis's coverage and heatmaps, Fig. 4.2 and 4.6): the union of the
+/// The seen area (docs/REFERENCE.md, Sensor footprint and coverage) on a CoverageRaster
+/// (the thesis's coverage and heatmaps, Fig. 4.2 and 4.6): the union of the
 /// footprints at the poses and, for each two consecutive poses at different positions
 /// (farther apart than kSamePositionTolerance), the convex hull of their footprints. Each pair of
 /// consecutive poses is one step; a cell seen in consecutive steps is one visit, so the heatmap
@@ -60,7 +60,7 @@ class SeenArea {
   /// The seen cells as a mask.
   CellMask seenMask() const;
 
-  /// Seen share of the cells of `region`, in percent (INTERFACE section 6's
+  /// Seen share of the cells of `region`, in percent (the reported
   /// coverage_percent when `region` is the free area). Throws InvalidInputError when the
   /// region has no cell or the wrong size.
   double coveragePercent(const CellMask& region) const;

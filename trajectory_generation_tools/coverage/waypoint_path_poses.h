@@ -8,7 +8,7 @@ namespace kinematic_coverage::core {
 
 /// Two consecutive poses closer than this (metres) are at the same position: a waypoint
 /// path skips the second; a trajectory sees their two footprints, not the convex hull of
-/// them (INTERFACE section 6).
+/// them (docs/REFERENCE.md, Sensor footprint and coverage).
 constexpr double kSamePositionTolerance = 1e-9;
 
 /// Default angle (radians) between the sampled poses of an in-place rotation.

@@ -16,9 +16,9 @@ struct CoveragePlotData {
   /// The raw free area: the hull outlined, the holes filled as obstacles. The hull needs
   /// at least 3 vertices and a non-zero extent in x and y.
   PolygonWithHoles free_area;
-  /// The free area shrunk by the clearance (INTERFACE section 4), outlined dashed.
+  /// The offset free area (free area shrunk by wall_distance), outlined dashed.
   std::optional<PolygonWithHoles> offset_free_area;
-  /// Visit counts (INTERFACE section 6), drawn over the free area only.
+  /// Visit counts (the heatmap), drawn over the free area only.
   std::optional<Heatmap> heatmap;
   /// The planner's waypoint path, a thin dashed polyline with a dot at each waypoint.
   std::vector<Pose2> waypoints;
@@ -86,7 +86,7 @@ struct CoveragePlotLayout {
 };
 
 /// Renders coverage plots to PNG files with cairo (`plot.png` of coverage_tool plan,
-/// evaluate and simulate, INTERFACE section 7): obstacles, the heatmap in discrete colours
+/// evaluate and simulate): obstacles, the heatmap in discrete colours
 /// for 0, 1, 2, 3 and 4+ visits with its colour bar, paths, start and goal, an actual path
 /// coloured by tracking error with its colour bar, title lines and axes in metres with an
 /// equal aspect ratio.

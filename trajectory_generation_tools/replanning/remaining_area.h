@@ -8,7 +8,7 @@
 
 namespace kinematic_coverage::core {
 
-/// The area still to see after a robot visited some poses, made fit to plan (issue 8).
+/// The area still to see after a robot visited some poses, made fit to plan.
 struct RemainingArea {
   /// Valid polygons with holes (CCW hulls, CW holes, simple rings, at most
   /// replanning_simplify_tolerance from the exact remaining area's boundary).
@@ -26,7 +26,7 @@ struct RemainingArea {
 /// - `convex_hull`: minus the convex hull of every footprint corner (Fig. 3.9a; it also
 ///   discards unvisited area inside the hull, as the thesis found);
 /// - `concave_hull`: minus the alpha shape of the footprint corners (`alpha`, Fig. 3.9c);
-/// - `footprint`: minus the seen area of INTERFACE section 6 (footprints and the hulls of
+/// - `footprint`: minus the seen area (footprints and the hulls of
 ///   consecutive pairs, Fig. 3.9b).
 /// Made robust as the thesis's conclusions propose: computed on a raster (so every result
 /// is a valid polygon, never the non-simple polygons of its Fig. 3.12), slivers narrower

@@ -10,7 +10,7 @@
 
 namespace kinematic_coverage::core {
 
-/// A replanned mission (issue 8, thesis section 3.4) and what it was made from.
+/// A replanned mission (thesis section 3.4) and what it was made from.
 struct ReplannedMission {
   PolygonWithHoles free_area;     ///< the updated polygon, validated and cleaned
   RemainingArea remaining;        ///< the area still to see
@@ -24,8 +24,8 @@ struct ReplannedMission {
 /// remaining area from the visited poses (RemainingAreaCalculator, `replanning_method`),
 /// and plans its parts in one generalized TSP from the last visited pose to the goal.
 /// A last pose that a moved obstacle now covers starts from the nearest point outside it
-/// when that is within `wall_distance`; deeper inside is invalid input (INTERFACE
-/// section 3).
+/// when that is within `wall_distance`; deeper inside is invalid input
+/// (docs/REFERENCE.md, Geometry and input rules).
 class Replanner {
  public:
   /// Throws InvalidInputError for parameters out of range.

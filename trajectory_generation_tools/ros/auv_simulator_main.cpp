@@ -1,4 +1,4 @@
-// The auv_simulator node (INTERFACE section 4).
+// The auv_simulator node (docs/REFERENCE.md, Nodes and topics).
 
 #include <ros/ros.h>
 

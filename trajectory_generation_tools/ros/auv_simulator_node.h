@@ -10,8 +10,8 @@
 
 namespace kinematic_coverage::nodes {
 
-/// The `auv_simulator` node (INTERFACE section 4): a simulated robot for the whole loop
-/// (plan, follow, drift, replan) without a vehicle. It follows each `trajectory` it
+/// The `auv_simulator` node (docs/REFERENCE.md, Nodes and topics): a simulated robot for
+/// the whole loop (plan, follow, drift, replan) without a vehicle. It follows each `trajectory` it
 /// receives with the core's robot model (TrajectoryFollower, parameters from the private
 /// namespace as in config/default.yaml, read at every trajectory), in simulated time that
 /// runs `~real_time_factor` times faster than ROS time, and publishes at `~publish_rate`

@@ -10,7 +10,7 @@
 
 namespace kinematic_coverage::nodes {
 
-/// The coverage heatmap of a trajectory for rviz (INTERFACE section 6, the thesis's
+/// The coverage heatmap of a trajectory for rviz (the thesis's
 /// Fig. 4.2): one flat square per cell of the free area on a raster of at most
 /// `max_cells` cells, coloured as plot.png colours separate visits (red: never seen). A
 /// display aid: the figures of record come from coverage_tool's finer raster.

@@ -1,4 +1,4 @@
-// The replanner node (INTERFACE section 4).
+// The replanner node (docs/REFERENCE.md, Nodes and topics).
 
 #include <ros/ros.h>
 

@@ -14,7 +14,7 @@
 
 namespace kinematic_coverage::nodes {
 
-/// The `replanner` node (INTERFACE section 4; thesis section 3.4): keeps the visited
+/// The `replanner` node (docs/REFERENCE.md, Nodes and topics; thesis Sec. 3.4): keeps the visited
 /// history (`visited` replaces it, each `pose` is appended) and the last `goal`; each
 /// `updated_polygon` triggers one replan with the core's Replanner, from the last visited
 /// pose to the goal over the remaining area (`replanning_method`). Publishes the new

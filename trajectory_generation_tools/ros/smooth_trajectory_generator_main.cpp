@@ -1,4 +1,4 @@
-// The smooth_trajectory_generator node (INTERFACE section 4).
+// The smooth_trajectory_generator node (docs/REFERENCE.md, Nodes and topics).
 
 #include <ros/ros.h>
 

@@ -10,7 +10,7 @@
 
 namespace kinematic_coverage::nodes {
 
-/// The `smooth_trajectory_generator` node (INTERFACE section 4): smooths every
+/// The `smooth_trajectory_generator` node (docs/REFERENCE.md, Nodes and topics): smooths every
 /// `waypoint_list` it receives against the newest of `polygon` and `updated_polygon`
 /// (Algorithm 1 with the raw hull and holes), samples and times it with the core's
 /// TrajectoryGenerator, and publishes `trajectory`, `trajectory_path` (stamped with the

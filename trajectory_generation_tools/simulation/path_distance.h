@@ -8,8 +8,8 @@
 namespace kinematic_coverage::core {
 
 /// The distance from a point to a polyline, for the tracking error of a simulated robot:
-/// "the distance from the robot to the nearest point of the desired path" (INTERFACE
-/// section 7, `tracking_error_sum_m`). The polyline's segments are bucketed in a uniform
+/// the distance from the robot to the nearest point of the desired path (docs/REFERENCE.md,
+/// Metrics: `tracking_error_sum_m`). The polyline's segments are bucketed in a uniform
 /// grid, so that a query near the path looks at a few segments however long the path is.
 class PathDistance {
  public:

@@ -9,7 +9,7 @@
 
 namespace kinematic_coverage::core {
 
-/// One recorded instant of a simulation (a row of `actual.csv`, INTERFACE section 7).
+/// One recorded instant of a simulation (a row of `actual.csv`; docs/REFERENCE.md, File formats).
 struct SimulationStep {
   double t = 0.0;  ///< s from the start
   Pose2 pose;      ///< the robot's position and heading
@@ -24,7 +24,7 @@ struct SimulationResult {
   std::vector<SimulationStep> steps;
   /// s until the last pose was reached: `traversal_time_s` of `coverage_tool simulate`.
   double traversal_time_s = 0.0;
-  /// Over the simulation steps (the start left out), INTERFACE section 7.
+  /// Over the simulation steps (the start left out); docs/REFERENCE.md, Metrics.
   TrackingErrorStatistics tracking;
 };
 

@@ -6,7 +6,7 @@
 namespace kinematic_coverage::core {
 
 /// The percentiles of the tracking error that `coverage_tool simulate` reports, as in the
-/// thesis's Table 4.2 (INTERFACE section 7, `tracking_error_percentiles_m`).
+/// thesis's Table 4.2 (`tracking_error_percentiles_m`; docs/REFERENCE.md, Metrics).
 inline constexpr std::array<int, 9> kTrackingErrorPercentiles{1, 5, 10, 25, 50, 75, 90, 95, 99};
 
 /// Summary of a robot's tracking errors (one per simulation step, metres): the thesis's

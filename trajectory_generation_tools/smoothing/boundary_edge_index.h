@@ -14,8 +14,8 @@ namespace kinematic_coverage::core {
 /// coordinates up to 1e5 m and far below any physical clearance).
 constexpr double kContactTolerance = 1e-9;
 
-/// The edges of a free area (hull and holes, INTERFACE section 3: collisions are against
-/// the raw rings) in a uniform grid, for fast collision and containment queries of path
+/// The edges of a free area (hull and holes: collisions are checked against the
+/// raw rings) in a uniform grid, for fast collision and containment queries of path
 /// primitives: a query only tests the edges registered in the cells its bounding box meets.
 /// Distances are analytic in doubles; whether two segments cross uses CGAL's exact
 /// orientation predicate. Immutable after construction, so concurrent queries are safe.

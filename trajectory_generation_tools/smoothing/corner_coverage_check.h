@@ -9,7 +9,7 @@
 namespace kinematic_coverage::core {
 
 /// Whether a corner smoothing lets the sensor see what the sharp corner let it see: the
-/// test of coverage-preserving smoothing (issue 10; the thesis's Chapter 5 names the
+/// test of coverage-preserving smoothing (the thesis's Chapter 5 names the
 /// coverage that inner smoothing of acute corners loses as an open problem).
 ///
 /// Both versions of the corner are driven from a footprint's reach before the smoothing

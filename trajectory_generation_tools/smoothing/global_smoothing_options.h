@@ -7,14 +7,14 @@
 
 namespace kinematic_coverage::core {
 
-/// What the global smoothing strategy may choose from and what it minimises (issue 10).
+/// What the global smoothing strategy may choose from and what it minimises.
 struct GlobalSmoothingOptions {
   /// The robot's preferred turning radius r: the largest radius an arc uses (m, > 0).
   double turning_radius = 1.0;
   /// The smallest radius a corner may use instead (m, in (0, turning_radius]); a tighter
   /// arc is driven slower, at min(v_max, yaw_rate_max * radius).
   double min_turning_radius = 1.0;
-  /// The velocity model (INTERFACE section 5) that the traversal time is minimised under.
+  /// The velocity model of trajectory timing that the traversal time is minimised under.
   double v_max = 0.5;
   double a_max = 0.2;
   double yaw_rate_max = 0.5;

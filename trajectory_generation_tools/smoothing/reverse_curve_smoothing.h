@@ -10,7 +10,7 @@ namespace kinematic_coverage::core {
 /// Two consecutive corners that turn opposite ways, smoothed together by two tangent arcs
 /// of one radius (a reverse curve, or S-curve): the first tangent to the incoming leg and
 /// turning like the first corner, the second tangent to the outgoing leg and turning like
-/// the second. Beyond the thesis (issue 10): it takes the lane-change jogs whose middle
+/// the second. Beyond the thesis (the global strategy): it takes the lane-change jogs whose middle
 /// leg is too short for two inner smoothings, where Algorithm 1 falls back to a slow
 /// outer loop or a sharp turn.
 class ReverseCurveSmoothing {

@@ -7,7 +7,7 @@
 
 namespace kinematic_coverage::core {
 
-/// `trajectory_length_m` (INTERFACE section 7): the sum of the primitives' exact lengths
+/// `trajectory_length_m` (docs/REFERENCE.md, Metrics): the sum of the primitives' exact lengths
 /// (rotations add nothing).
 double primitivePathLength(const std::vector<PathPrimitive>& path);
 
@@ -17,7 +17,7 @@ double primitivePathMaxCurvature(const std::vector<PathPrimitive>& path);
 
 /// `min_obstacle_clearance_m`: the smallest distance from the path's points (segments and
 /// arcs exactly, rotations at their position) to the boundary of `free_area` (the raw
-/// hull and holes, INTERFACE section 3); 0 where the path touches or crosses it.
+/// hull and holes, docs/REFERENCE.md, Metrics); 0 where the path touches or crosses it.
 /// Infinity for an empty path or an area with no edges (the metric is then meaningless).
 double primitivePathClearance(const std::vector<PathPrimitive>& path,
                               const PolygonWithHoles& free_area);

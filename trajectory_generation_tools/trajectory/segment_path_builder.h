@@ -7,7 +7,7 @@
 
 namespace kinematic_coverage::core {
 
-/// Builds the path of `smoothing: false` (INTERFACE section 5) from a waypoint path:
+/// Builds the path of `smoothing: false` (docs/REFERENCE.md, Parameters) from a waypoint path:
 /// straight segments joined by in-place rotations wherever the heading changes, so a
 /// robot drives each leg and turns on the spot at the waypoint.
 class SegmentPathBuilder {

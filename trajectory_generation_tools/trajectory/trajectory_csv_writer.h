@@ -7,9 +7,9 @@
 
 namespace kinematic_coverage::core {
 
-/// Writes `trajectory.csv` (INTERFACE section 7): a header row `t,x,y,yaw,kind`, then one
-/// row per pose, yaw wrapped into (-pi, pi], kind `segment`, `arc` or `rotation`, numbers
-/// in shortest round-trip form.
+/// Writes `trajectory.csv` (docs/REFERENCE.md, File formats): a header row `t,x,y,yaw,kind`,
+/// then one row per pose, yaw wrapped into (-pi, pi], kind `segment`, `arc` or `rotation`,
+/// numbers in shortest round-trip form.
 class TrajectoryCsvWriter {
  public:
   /// The file's text. Throws std::domain_error for a non-finite value (a bug upstream).

@@ -10,7 +10,7 @@
 
 namespace kinematic_coverage::core {
 
-/// A drivable, timed trajectory and the figures reported about it (INTERFACE section 7).
+/// A drivable, timed trajectory and the figures reported about it (docs/REFERENCE.md, Metrics).
 struct GeneratedTrajectory {
   std::vector<PathPrimitive> path;    ///< segments, arcs and in-place rotations
   std::vector<TrajectoryPose> poses;  ///< sampled, with t from the velocity model

@@ -7,7 +7,7 @@
 
 namespace kinematic_coverage::core {
 
-/// One sampled pose of a trajectory (a row of `trajectory.csv`, INTERFACE section 7), with
+/// One sampled pose of a trajectory (a row of `trajectory.csv`), with
 /// where on the primitive path it lies so that timing can date it.
 struct TrajectoryPose {
   double t = 0.0;    ///< seconds from the start

@@ -10,7 +10,7 @@
 namespace kinematic_coverage::core {
 
 /// Samples a primitive path into trajectory poses (Thesis section 3.3: a pose at a fixed
-/// interval along the path, a finer one on arcs; INTERFACE section 7).
+/// interval along the path, a finer one on arcs; docs/REFERENCE.md, File formats).
 class TrajectorySampler {
  public:
   /// At most this many poses; a request for more is refused rather than exhausting memory.

@@ -19,7 +19,7 @@ struct PrimitiveTiming {
   double speed_limit = 0.0;  ///< v_max on a segment, min(v_max, yaw_rate_max * r) on an arc
 };
 
-/// Dates a primitive path with the velocity model of INTERFACE section 5 (v_max, a_max,
+/// Dates a primitive path with the velocity model (v_max, a_max,
 /// yaw_rate_max; Thesis section 3.3: "timestamps ... from the robot's velocity model").
 ///
 /// Model: the speed along the path is the fastest profile with |acceleration| <= a_max
