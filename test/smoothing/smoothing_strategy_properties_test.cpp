@@ -1,4 +1,4 @@
-// Issue 4's path properties for every smoothing strategy of issue 10: Algorithm 1
+// The smoothed path's properties for every smoothing strategy: Algorithm 1
 // (PathSmoother) and the global programme (GlobalPathSmoother) at one radius, with a
 // variable radius, and coverage-preserving. On seeded random paths among random holes:
 // continuity (positions and headings), statistics that match the primitives, arcs clear of
