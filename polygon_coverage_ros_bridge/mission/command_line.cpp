@@ -29,6 +29,8 @@ CommandArguments parseCommandArguments(const std::string& command,
       parsed.help = true;
     } else if (arg == "--set") {
       parsed.overrides.push_back(value());
+    } else if (arg == "--config") {
+      parsed.config_path = value();
     } else if (is_required(arg)) {
       parsed.values[arg] = value();
     } else if (arg.size() > 1 && arg[0] == '-') {
@@ -57,7 +59,11 @@ CommandArguments parseCommandArguments(const std::string& command,
 
 Mission loadMission(const CommandArguments& arguments, std::ostream& out) {
   const auto start = std::chrono::steady_clock::now();
-  Mission mission = MissionFileReader().read(arguments.mission_path, arguments.overrides);
+  const MissionFileReader reader;
+  const PlannerParameters base = arguments.config_path.empty()
+                                     ? PlannerParameters{}
+                                     : reader.readParameters(arguments.config_path);
+  Mission mission = reader.read(arguments.mission_path, arguments.overrides, base);
   out << "load: " << arguments.mission_path << ": hull of " << mission.polygon.hull.size()
       << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id
       << " (" << formatSeconds(secondsSince(start)) << ")" << std::endl;

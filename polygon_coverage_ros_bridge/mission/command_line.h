@@ -10,15 +10,18 @@
 
 namespace kinematic_coverage::core {
 
-/// The arguments of a coverage_tool command on a mission (INTERFACE section 7): one
-/// mission file, options that take a value (`--out DIR`, ...), `--set name=value`
-/// overrides in command-line order, and `--help`.
+/// The arguments of a coverage_tool command on a mission (docs/REFERENCE.md, coverage_tool): one
+/// mission file, options that take a value (`--out DIR`, ...), an optional parameter file
+/// (`--config FILE`), `--set name=value` overrides in command-line order, and `--help`.
 struct CommandArguments {
   std::string mission_path;
   /// Each option's value by the option's name, e.g. "--out" -> "DIR".
   std::map<std::string, std::string> values;
   /// "name=value" of every `--set`, in order.
   std::vector<std::string> overrides;
+  /// `--config FILE`: a parameter file (as config/default.yaml or config/thesis.yaml) read
+  /// over the built-in defaults and under the mission file; empty when not given.
+  std::string config_path;
   bool help = false;
 };
 
@@ -29,16 +32,16 @@ struct RequiredOption {
 };
 
 /// Parses the arguments after the command's name `command` ("plan", "evaluate"): the
-/// `required` options, `--set` and `--help` in any order around one mission file. Throws
-/// InvalidInputError naming the problem: an option without its value, an unknown option,
-/// no mission file or two, or, unless `--help` is given, a required option missing or
-/// empty.
+/// `required` options, `--config`, `--set` and `--help` in any order around one mission file.
+/// Throws InvalidInputError naming the problem: an option without its value, an unknown option, no
+/// mission file or two, or, unless `--help` is given, a required option missing or empty.
 CommandArguments parseCommandArguments(const std::string& command,
                                        const std::vector<std::string>& args,
                                        const std::vector<RequiredOption>& required);
 
-/// Reads the mission file of `arguments` with its overrides (MissionFileReader) and
-/// prints the "load: ..." progress line to `out`. Throws InvalidInputError as the reader.
+/// Reads the mission file of `arguments` over its parameter file, with its overrides
+/// (MissionFileReader), and prints the "load: ..." progress line to `out`. Throws
+/// InvalidInputError as the reader.
 Mission loadMission(const CommandArguments& arguments, std::ostream& out);
 
 /// Creates the output directory `dir` and its parents; InvalidInputError when it cannot.

@@ -18,12 +18,14 @@ namespace kinematic_coverage::core {
 
 std::string EvaluateCommand::usage() {
   return "usage: coverage_tool evaluate MISSION.yaml --trajectory FILE.csv --out DIR\n"
-         "                             [--set name=value ...]\n"
+         "                             [--config FILE] [--set name=value ...]\n"
          "  Measures the coverage of a trajectory (a CSV file with a header row; columns\n"
          "  x, y, yaw required, t and kind optional) over the mission's polygon, with the\n"
          "  mission's sensor, and writes DIR/metrics.json and DIR/plot.png. --set overrides a\n"
          "  parameter of config/default.yaml (the value is read as YAML), after the mission\n"
-         "  file.\n";
+         "  file.\n"
+         "  --config FILE reads the parameters of FILE (as config/default.yaml, e.g.\n"
+         "  config/thesis.yaml) over the built-in defaults, before the mission file.\n";
 }
 
 void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& out,
@@ -54,7 +56,7 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   out << "read: " << trajectory_path << ": " << poses.size() << " poses, " << trajectory_length_m
       << " m (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
-  // The free area and offset free area as `plan` makes them (INTERFACE section 3).
+  // The free area and offset free area as `plan` makes them.
   const auto evaluation_start = std::chrono::steady_clock::now();
   stage_start = evaluation_start;
   PolygonValidator().validate(mission.polygon);

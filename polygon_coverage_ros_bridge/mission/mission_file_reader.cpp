@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <type_traits>
 #include <variant>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -269,16 +270,18 @@ void applyOverride(PlannerParameters& parameters, const std::string& assignment)
 
 }  // namespace
 
-Mission MissionFileReader::read(const std::string& path,
-                                const std::vector<std::string>& overrides) const {
-  return parse(readFile(path), path, overrides);
+Mission MissionFileReader::read(const std::string& path, const std::vector<std::string>& overrides,
+                                const PlannerParameters& base) const {
+  return parse(readFile(path), path, overrides, base);
 }
 
 Mission MissionFileReader::parse(const std::string& yaml_text, const std::string& source_name,
-                                 const std::vector<std::string>& overrides) const {
+                                 const std::vector<std::string>& overrides,
+                                 const PlannerParameters& base) const {
   const YAML::Node root = rootMap(yaml_text, source_name);
   const NodeReader reader(source_name);
   Mission mission;
+  mission.parameters = base;
   bool has_polygon = false, has_start = false, has_goal = false;
   for (const auto& [key, value] : reader.entries(root, "")) {
     if (key == "frame_id") {
@@ -351,6 +354,25 @@ PlannerParameters MissionFileReader::withOverrides(
   for (const std::string& assignment : overrides) applyOverride(parameters, assignment);
   ParameterValidator().validate(parameters);
   return parameters;
+}
+
+std::string MissionFileReader::parameterText(const PlannerParameters& parameters,
+                                             const std::string& name) {
+  const ParameterField* field = findParameter(name);
+  if (field == nullptr) throw InvalidInputError("unknown parameter '" + name + "'");
+  return std::visit(
+      [&parameters](auto member) -> std::string {
+        const auto& value = parameters.*member;
+        using Value = std::decay_t<decltype(value)>;
+        if constexpr (std::is_same_v<Value, double>) {
+          return formatNumber(value);
+        } else if constexpr (std::is_same_v<Value, bool>) {
+          return value ? "true" : "false";
+        } else {
+          return value;
+        }
+      },
+      field->member);
 }
 
 std::vector<std::string> MissionFileReader::parameterNames() {

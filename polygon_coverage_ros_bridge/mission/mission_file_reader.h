@@ -8,7 +8,7 @@
 
 namespace kinematic_coverage::core {
 
-/// Reads mission files (INTERFACE section 7) with yaml-cpp:
+/// Reads mission files (docs/REFERENCE.md, File formats) with yaml-cpp:
 ///
 ///     frame_id: map
 ///     polygon:
@@ -16,10 +16,10 @@ namespace kinematic_coverage::core {
 ///       holes: [[[8, 8], [12, 8], [12, 12], [8, 12]]]
 ///     start: [1, 1]
 ///     goal: [29, 29]
-///     turning_radius: 1.0      # any parameter of INTERFACE section 5
+///     turning_radius: 1.0      # any parameter of docs/REFERENCE.md, Parameters
 ///
-/// Values: the built-in defaults (PlannerParameters), then the file's keys, then
-/// `--set name=value` overrides (the value read as a YAML scalar). Every problem is an
+/// Values: the built-in defaults (PlannerParameters) or a parameter file's, then the file's
+/// keys, then `--set name=value` overrides (the value read as a YAML scalar). Every problem is an
 /// InvalidInputError naming where it is, e.g. "lake.yaml:7: polygon.holes[1][3]: the x
 /// coordinate 'abc' is not a number": unknown keys (a typo must not be silently
 /// ignored), duplicate keys, wrong shapes, non-numeric or non-finite numbers, parameters
@@ -33,13 +33,16 @@ class MissionFileReader {
   /// Largest mission or polygon file read, bytes.
   static constexpr std::size_t kMaxMissionFileBytes = 64u << 20;
 
-  /// Reads the mission file at `path`, then applies `overrides` ("name=value" each).
-  /// `polygon`, `start` and `goal` are required; `frame_id` and parameters optional.
-  Mission read(const std::string& path, const std::vector<std::string>& overrides = {}) const;
+  /// Reads the mission file at `path` over the parameters `base`, then applies `overrides`
+  /// ("name=value" each). `polygon`, `start` and `goal` are required; `frame_id` and
+  /// parameters optional.
+  Mission read(const std::string& path, const std::vector<std::string>& overrides = {},
+               const PlannerParameters& base = PlannerParameters{}) const;
 
   /// As read(), from YAML text; `source_name` names it in messages.
   Mission parse(const std::string& yaml_text, const std::string& source_name,
-                const std::vector<std::string>& overrides = {}) const;
+                const std::vector<std::string>& overrides = {},
+                const PlannerParameters& base = PlannerParameters{}) const;
 
   /// Reads an UPDATED.yaml of replanning: a `polygon:` (and optionally `frame_id:`) only.
   PolygonWithHoles readUpdatedPolygon(const std::string& path) const;
@@ -58,6 +61,11 @@ class MissionFileReader {
 
   /// The names of every parameter a mission file or `--set` may give.
   static std::vector<std::string> parameterNames();
+
+  /// The value of the parameter `name` in `parameters` as a mission file writes it ("0.5",
+  /// "true", "boustrophedon"), e.g. to compare or print parameter sets. Throws
+  /// InvalidInputError for an unknown name.
+  static std::string parameterText(const PlannerParameters& parameters, const std::string& name);
 };
 
 }  // namespace kinematic_coverage::core

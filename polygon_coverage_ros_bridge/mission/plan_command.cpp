@@ -20,12 +20,14 @@
 namespace kinematic_coverage::core {
 
 std::string PlanCommand::usage() {
-  return "usage: coverage_tool plan MISSION.yaml --out DIR [--set name=value ...]\n"
+  return "usage: coverage_tool plan MISSION.yaml --out DIR [--config FILE]\n"
+         "                         [--set name=value ...]\n"
          "  Plans a coverage path over the mission's polygon and writes DIR/waypoints.csv\n"
          "  (x,y,yaw), DIR/trajectory.csv (t,x,y,yaw,kind), DIR/metrics.json (with the\n"
-         "  trajectory's coverage) and DIR/plot.png. --set overrides a parameter of "
-         "config/default.yaml (the\n"
-         "  value is read as YAML), after the mission file.\n";
+         "  trajectory's coverage) and DIR/plot.png. --set overrides a parameter of\n"
+         "  config/default.yaml (the value is read as YAML), after the mission file.\n"
+         "  --config FILE reads the parameters of FILE (as config/default.yaml, e.g.\n"
+         "  config/thesis.yaml) over the built-in defaults, before the mission file.\n";
 }
 
 void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,

@@ -41,11 +41,14 @@ std::string remainingYaml(const std::vector<PolygonWithHoles>& parts) {
 
 std::string ReplanCommand::usage() {
   return "usage: coverage_tool replan MISSION.yaml --updated UPDATED.yaml --visited FILE.csv\n"
-         "                           --out DIR [--set name=value ...]\n"
+         "                           --out DIR [--config FILE] [--set name=value ...]\n"
          "  Replans after obstacles moved: the area the visited poses (CSV with columns x, y,\n"
          "  yaw) have not seen, in the updated polygon (UPDATED.yaml holds a `polygon:`), by\n"
          "  replanning_method, planned from the last visited pose to the mission's goal.\n"
-         "  Writes the files of `plan` and DIR/remaining.yaml.\n";
+         "  Writes the files of `plan` and DIR/remaining.yaml. --set overrides a parameter\n"
+         "  of config/default.yaml (the value is read as YAML), after the mission file.\n"
+         "  --config FILE reads the parameters of FILE (as config/default.yaml, e.g.\n"
+         "  config/thesis.yaml) over the built-in defaults, before the mission file.\n";
 }
 
 void ReplanCommand::run(const std::vector<std::string>& args, std::ostream& out,

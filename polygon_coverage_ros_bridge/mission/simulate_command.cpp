@@ -20,7 +20,7 @@
 namespace kinematic_coverage::core {
 namespace {
 
-/// `actual.csv` (INTERFACE section 7): t,x,y,yaw of every recorded step.
+/// `actual.csv` (docs/REFERENCE.md, File formats): t,x,y,yaw of every recorded step.
 std::string actualCsv(const std::vector<SimulationStep>& steps) {
   std::string text = "t,x,y,yaw\n";
   for (const SimulationStep& step : steps) {
@@ -43,7 +43,7 @@ JsonObject percentileObject(const TrackingErrorStatistics& tracking) {
 
 std::string SimulateCommand::usage() {
   return "usage: coverage_tool simulate MISSION.yaml --trajectory FILE.csv --out DIR\n"
-         "                             [--set name=value ...]\n"
+         "                             [--config FILE] [--set name=value ...]\n"
          "  A robot model follows the trajectory's poses (a CSV file with a header row;\n"
          "  columns x, y, yaw required, t and kind optional) from rest at the first pose,\n"
          "  with the mission's robot parameters (v_max, a_max, yaw_rate_max, yaw_gain,\n"
@@ -51,7 +51,9 @@ std::string SimulateCommand::usage() {
          "  sim_time_limit), and writes DIR/actual.csv (t,x,y,yaw per step),\n"
          "  DIR/metrics.json (traversal time, tracking error, coverage of the actual poses)\n"
          "  and DIR/plot.png. --set overrides a parameter of config/default.yaml (the value\n"
-         "  is read as YAML), after the mission file.\n";
+         "  is read as YAML), after the mission file.\n"
+         "  --config FILE reads the parameters of FILE (as config/default.yaml, e.g.\n"
+         "  config/thesis.yaml) over the built-in defaults, before the mission file.\n";
 }
 
 void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& out,
@@ -74,7 +76,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   out << "read: " << trajectory_path << ": " << desired.size() << " poses ("
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
-  // The free area and offset free area as `plan` makes them (INTERFACE section 3), for the
+  // The free area and offset free area as `plan` makes them, for the
   // coverage of the actual poses.
   stage_start = std::chrono::steady_clock::now();
   PolygonValidator().validate(mission.polygon);

@@ -1,4 +1,4 @@
-// coverage_tool: the ROS-free command line of the package (INTERFACE section 7).
+// coverage_tool: the ROS-free command line of the package (docs/REFERENCE.md, coverage_tool).
 // Exit status: 0 success; 2 invalid input or an impossible request, with one line on
 // stderr naming it; 1 an internal error (a bug). Every exception is caught here.
 
@@ -24,7 +24,7 @@ constexpr int kExitInvalidInput = 2;
 const char* const kUsage =
     "usage: coverage_tool COMMAND [ARGS...]\n"
     "commands:\n"
-    "  plan MISSION.yaml --out DIR [--set name=value ...]\n"
+    "  plan MISSION.yaml --out DIR [--config FILE] [--set name=value ...]\n"
     "      plan a coverage path: DIR/waypoints.csv, trajectory.csv, metrics.json, plot.png\n"
     "  evaluate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value ...]\n"
     "      coverage of a trajectory (x,y,yaw[,t,kind] CSV): DIR/metrics.json, DIR/plot.png\n"
@@ -35,6 +35,8 @@ const char* const kUsage =
     "      a robot model follows a trajectory: DIR/actual.csv, metrics.json, plot.png\n"
     "  gtsp INSTANCE.gtsp [--seed N] [--time-limit S]\n"
     "      solve a GTSPLIB instance; prints one JSON line\n"
+    "--config FILE: parameters from FILE (e.g. config/thesis.yaml, the thesis's settings)\n"
+    "before the mission file's; --set: one parameter, after it.\n"
     "Run coverage_tool COMMAND --help for a command's options.\n"
     "Exit status: 0 success, 2 invalid input (one line on stderr), 1 internal error.\n";
 

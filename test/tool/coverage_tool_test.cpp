@@ -1,5 +1,5 @@
 // Runs the coverage_tool binary on mission files written to a temporary directory and
-// checks the contract of INTERFACE section 7: exit status, one stderr line for invalid
+// checks what docs/REFERENCE.md promises: exit status, one stderr line for invalid
 // input, the files written.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -209,12 +209,31 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
                                 "min_obstacle_clearance_m", "turns_total", "turns_smoothed"}) {
     EXPECT_GT(metric(json, key), 0.0) << key << " in " << json;
   }
-  // With 50 % overlap the lake's trajectory sees nearly all of it (issue 5).
+  // With 50 % overlap the lake's trajectory sees nearly all of it.
   EXPECT_GE(metric(json, "coverage_percent"), 99.9) << json;
   EXPECT_LE(metric(json, "coverage_percent"), 100.0) << json;
   EXPECT_DOUBLE_EQ(metric(json, "coverage_loss_percent"), 100.0 - metric(json, "coverage_percent"));
   EXPECT_GE(metric(json, "reachable_coverage_percent"), 99.9) << json;
   EXPECT_LE(metric(json, "reachable_coverage_percent"), 100.0) << json;
+}
+
+TEST(CoverageTool, TheThesisPresetIsOneSwitchAway) {
+  // --config config/thesis.yaml plans as the thesis did: Algorithm 1's smoothing, the
+  // same as --set smoothing_strategy=local, and unlike the default strategy.
+  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_7_5.yaml";
+  const auto traversal_time = [&](const std::string& name, const std::string& options) {
+    const std::string out_dir = scratchDir() + "/" + name;
+    std::filesystem::remove_all(out_dir);
+    const ToolRun run = runTool("plan '" + lake + "' --out '" + out_dir + "' " + options);
+    EXPECT_EQ(run.exit_status, 0) << name;
+    return metric(readText(out_dir + "/metrics.json"), "traversal_time_s");
+  };
+  const double thesis =
+      traversal_time("thesis", "--config '" + std::string(KC_SOURCE_DIR) + "/config/thesis.yaml'");
+  EXPECT_EQ(thesis, traversal_time("local", "--set smoothing_strategy=local"));
+  EXPECT_NE(thesis, traversal_time("default", ""));
+  expectInvalid("plan '" + lake + "' --out '" + scratchDir() + "/x' --config /nonexistent.yaml",
+                "/nonexistent.yaml");
 }
 
 TEST(CoverageTool, ReportsEachCleaningStepAsAWarning) {
@@ -245,7 +264,7 @@ TEST(CoverageTool, RejectsAnEmptyOffsetFreeArea) {
 }
 
 TEST(CoverageTool, RejectsAPlanOverThePlanningLimits) {
-  // Issue 11: a 2 km square under a 1 cm footprint needs 666 000 sweep lanes.
+  // The planner's size limits: a 2 km square under a 1 cm footprint needs 666 000 sweep lanes.
   expectInvalidMission(mission("  hull: [[0, 0], [2000, 0], [2000, 2000], [0, 2000]]\n",
                                "sensor_model: line\nlateral_footprint: 0.01\n"),
                        "the cells need at least 666000 sweep lanes, 646000 more than the limit "
@@ -386,8 +405,8 @@ std::vector<std::string> jsonKeys(const std::string& json) {
   return keys;
 }
 
-/// Issue 9: the robot model follows plan's trajectory; simulate writes actual.csv, the
-/// metrics.json keys of INTERFACE section 7 and plot.png.
+/// The robot model follows plan's trajectory; simulate writes actual.csv, the
+/// metrics.json keys of docs/REFERENCE.md, Metrics, and plot.png.
 TEST(CoverageTool, SimulatesPlansTrajectoryAndWritesItsFiles) {
   const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml";
   const std::string plan_dir = scratchDir() + "/simulate_plan_out";
@@ -491,7 +510,7 @@ TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {
   EXPECT_NE(help.out.find("--trajectory FILE.csv"), std::string::npos);
 }
 
-/// Issue 8 end to end: the lake mission followed for 40 % of its trajectory, then both
+/// Replanning end to end: the lake mission followed for 40 % of its trajectory, then both
 /// obstacles moved by 2 m; `replan` writes the files of plan and remaining.yaml, starts at
 /// the last visited pose and, with the visited poses, sees nearly all of the free area.
 TEST(CoverageTool, ReplansTheLakeDriftScenario) {
