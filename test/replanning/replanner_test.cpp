@@ -10,7 +10,7 @@
 namespace kinematic_coverage::core {
 namespace {
 
-/// Issue 8's drift scenario: the new trajectory starts at the last visited pose, avoids
+/// The drift scenario: the new trajectory starts at the last visited pose, avoids
 /// the moved obstacles, and the visited plus new footprints see at least 99 % of the
 /// updated reachable area.
 TEST(Replanner, LakeDriftScenarioCoversTheUpdatedReachableArea) {
@@ -110,6 +110,39 @@ TEST(Replanner, NothingLeftGoesToTheGoal) {
   ASSERT_GE(replanned.plan.waypoints.size(), 2u);
   EXPECT_LT((replanned.plan.waypoints.back().position() - Point2(20, 2)).norm(), 1e-9);
   EXPECT_TRUE(replanned.plan.cells.empty());
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core
+
+namespace kinematic_coverage::core {
+namespace {
+
+TEST(Replanner, RepeatedReplansOfOneScenarioAreIdentical) {
+  // The remaining area's simplification must not depend on where the heap puts CGAL's
+  // constraints: each method, replanned again and again in one process, gives one answer.
+  const testing::DriftScenario scenario = testing::lakeDriftScenario(0.4, {2.0, 1.0});
+  for (const char* method : {"footprint", "concave_hull"}) {
+    SCOPED_TRACE(method);
+    PlannerParameters parameters = scenario.mission.parameters;
+    parameters.replanning_method = method;
+    const ReplannedMission first =
+        Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
+    for (int run = 0; run < 8; ++run) {
+      const ReplannedMission again =
+          Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
+      ASSERT_EQ(again.remaining.parts.size(), first.remaining.parts.size()) << "run " << run;
+      for (std::size_t i = 0; i < first.remaining.parts.size(); ++i) {
+        ASSERT_EQ(again.remaining.parts[i].hull, first.remaining.parts[i].hull) << "run " << run;
+        ASSERT_EQ(again.remaining.parts[i].holes, first.remaining.parts[i].holes);
+      }
+      ASSERT_EQ(again.plan.waypoints.size(), first.plan.waypoints.size()) << "run " << run;
+      for (std::size_t i = 0; i < first.plan.waypoints.size(); ++i) {
+        ASSERT_EQ(again.plan.waypoints[i].x, first.plan.waypoints[i].x) << "run " << run;
+        ASSERT_EQ(again.plan.waypoints[i].y, first.plan.waypoints[i].y) << "run " << run;
+      }
+    }
+  }
 }
 
 }  // namespace
