@@ -1,262 +1,86 @@
 #!/usr/bin/env bash
 # Regenerates docs/EXPERIMENTS.md and docs/images/experiments_*.png: the thesis's two
 # experiments (Chapter 4, Tables 4.1 to 4.3) in simulation, plus a run in a current. Each
-# mission is planned smoothed and unsmoothed with `coverage_tool plan`, and the same robot
-# follows both trajectories with `coverage_tool simulate`.
+# mission is planned three times with `coverage_tool plan`: smoothed by the thesis's
+# Algorithm 1 (`smoothing_strategy: local`), smoothed with the default strategy, and
+# unsmoothed; the same robot follows every trajectory with `coverage_tool simulate`.
 #
-#   scripts/run_experiments.sh                      # builds coverage_tool into ./build
+#   scripts/run_experiments.sh            # builds coverage_tool into ./build, writes the doc
+#   scripts/run_experiments.sh --print    # the doc on standard output, nothing written
+#                                         # (coverage_tool must be built; no build step)
 #   BUILD_DIR=/path/to/build JOBS=1 scripts/run_experiments.sh
 #
 # Raw outputs (trajectories, actual paths, metrics) go to $OUT_DIR (default
-# $BUILD_DIR/experiments).
+# $BUILD_DIR/experiments, or a temporary folder with --print). The `doc_figures` test runs
+# `--print` and compares its tables with docs/EXPERIMENTS.md (scripts/doc_figures.py).
 set -euo pipefail
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$root/build}
-out=${OUT_DIR:-$build_dir/experiments}
 tool=$build_dir/devel/lib/kinematic_coverage/coverage_tool
 missions=$root/config/missions
 images=$root/docs/images
+print_only=false
+case "${1:-}" in
+  --print) print_only=true ;;
+  "") ;;
+  *) echo "usage: run_experiments.sh [--print]" >&2; exit 2 ;;
+esac
 
-echo "== build coverage_tool"
-BUILD_DIR=$build_dir "$root/scripts/build.sh" --target coverage_tool >/dev/null
+if $print_only; then
+  [ -x "$tool" ] || { echo "run_experiments.sh: no $tool: build it first" >&2; exit 2; }
+  out=${OUT_DIR:-$(mktemp -d)}
+  [ -n "${OUT_DIR:-}" ] || trap 'rm -rf "$out"' EXIT
+else
+  out=${OUT_DIR:-$build_dir/experiments}
+  echo "== build coverage_tool" >&2
+  BUILD_DIR=$build_dir "$root/scripts/build.sh" --target coverage_tool >/dev/null
+fi
 
-# The robots, as --set overrides of config/default.yaml (the same for smoothed and
-# unsmoothed). Experiment 1 is the default robot; experiment 2 lowers the yaw gain and
+# The robots, as --set overrides of config/default.yaml (the same for every trajectory of an
+# experiment). Experiment 1 is the default robot; experiment 2 lowers the yaw gain and
 # samples rotations more finely, as the thesis's second run did.
 robot_high_gain=()
 robot_low_gain=(--set yaw_gain=2 --set rotation_sampling_angle=0.1)
 current=(--set current_x=0.2 --set current_y=0.1)
+# The three trajectories of each run: Algorithm 1, the default strategy, unsmoothed.
+local_smoothing=(--set smoothing=true --set smoothing_strategy=local)
+default_smoothing=(--set smoothing=true)
+no_smoothing=(--set smoothing=false)
 
-# run NAME MISSION SMOOTHING [--set ...]: plans and simulates into $out/NAME.
+# run NAME MISSION [--set ...]: plans and simulates into $out/NAME.
 run() {
-  local name=$1 mission=$2 smoothing=$3
-  shift 3
-  echo "== $name"
+  local name=$1 mission=$2
+  shift 2
+  echo "== $name" >&2
   rm -rf "${out:?}/$name"
   mkdir -p "$out/$name"
-  "$tool" plan "$missions/$mission.yaml" --out "$out/$name/plan" --set smoothing="$smoothing" "$@" \
-    >"$out/$name/plan.log"
+  "$tool" plan "$missions/$mission.yaml" --out "$out/$name/plan" "$@" >"$out/$name/plan.log"
   "$tool" simulate "$missions/$mission.yaml" --trajectory "$out/$name/plan/trajectory.csv" \
-    --out "$out/$name/simulate" --set smoothing="$smoothing" "$@" >"$out/$name/simulate.log"
-  grep '^simulate: ' "$out/$name/simulate.log"
+    --out "$out/$name/simulate" "$@" >"$out/$name/simulate.log"
+  grep '^simulate: ' "$out/$name/simulate.log" >&2
 }
 
-run lake_30x30_smoothed lake_30x30 true "${robot_high_gain[@]}"
-run lake_30x30_unsmoothed lake_30x30 false "${robot_high_gain[@]}"
-run lake_7_5_smoothed lake_7_5 true "${robot_low_gain[@]}"
-run lake_7_5_unsmoothed lake_7_5 false "${robot_low_gain[@]}"
-run lake_7_5_high_gain_smoothed lake_7_5 true "${robot_high_gain[@]}"
-run lake_7_5_high_gain_unsmoothed lake_7_5 false "${robot_high_gain[@]}"
-run lake_30x30_current lake_30x30 true "${current[@]}"
+for strategy in local default unsmoothed; do
+  case $strategy in
+    local) smoothing=("${local_smoothing[@]}") ;;
+    default) smoothing=("${default_smoothing[@]}") ;;
+    unsmoothed) smoothing=("${no_smoothing[@]}") ;;
+  esac
+  run "lake_30x30_$strategy" lake_30x30 "${smoothing[@]}" "${robot_high_gain[@]}"
+  run "lake_7_5_$strategy" lake_7_5 "${smoothing[@]}" "${robot_low_gain[@]}"
+  run "lake_7_5_high_gain_$strategy" lake_7_5 "${smoothing[@]}" "${robot_high_gain[@]}"
+done
+run lake_30x30_current lake_30x30 "${default_smoothing[@]}" "${current[@]}"
 
+if $print_only; then
+  /usr/bin/python3 "$root/scripts/experiments_report.py" "$out"
+  exit 0
+fi
 mkdir -p "$images"
-for name in lake_30x30_smoothed lake_30x30_unsmoothed lake_7_5_smoothed lake_7_5_unsmoothed \
-  lake_30x30_current; do
+for name in lake_30x30_local lake_30x30_default lake_30x30_unsmoothed lake_7_5_local \
+  lake_7_5_default lake_7_5_unsmoothed lake_30x30_current; do
   cp "$out/$name/simulate/plot.png" "$images/experiments_$name.png"
 done
-
-echo "== write docs/EXPERIMENTS.md"
-/usr/bin/python3 - "$out" "$root/docs/EXPERIMENTS.md" <<'PYTHON'
-import json
-import sys
-
-out, target = sys.argv[1], sys.argv[2]
-
-
-def load(name, part):
-    with open(f'{out}/{name}/{part}/metrics.json') as stream:
-        return json.load(stream)
-
-
-sim = {name: load(name, 'simulate') for name in (
-    'lake_30x30_smoothed', 'lake_30x30_unsmoothed', 'lake_7_5_smoothed', 'lake_7_5_unsmoothed',
-    'lake_7_5_high_gain_smoothed', 'lake_7_5_high_gain_unsmoothed', 'lake_30x30_current')}
-plan = {name: load(name, 'plan') for name in sim}
-PERCENTILES = ['1', '5', '10', '25', '50', '75', '90', '95', '99']
-
-
-def seconds(value):
-    return f'{value:.1f} s'
-
-
-def metres(value, digits=2):
-    return f'{value:.{digits}f} m'
-
-
-def percent(value):
-    return f'{value:.2f} %'
-
-
-def ratio(a, b):
-    return f'{a / b:.2f}'
-
-
-s1, u1 = sim['lake_30x30_smoothed'], sim['lake_30x30_unsmoothed']
-s2, u2 = sim['lake_7_5_smoothed'], sim['lake_7_5_unsmoothed']
-s3, u3 = sim['lake_7_5_high_gain_smoothed'], sim['lake_7_5_high_gain_unsmoothed']
-calm, drift = s1, sim['lake_30x30_current']
-
-text = f'''# Experiments: smoothed against unsmoothed trajectories, in simulation
-
-Generated by `scripts/run_experiments.sh` (do not edit by hand; rerun it). The thesis
-compared smoothed and unsmoothed trajectories on the Proteus vehicle in Lake Zurich
-(Chapter 4, Tables 4.1 to 4.3). Here the vehicle is the robot model of
-`coverage_tool simulate` and of the `auv_simulator` node. Each mission is planned twice
-with `coverage_tool plan` (`smoothing: true` and `false`), and the same robot follows both
-trajectories with `coverage_tool simulate`. The metrics are those of INTERFACE section 7:
-the traversal time, the tracking error (the distance from the robot to the nearest point of
-the desired path, once per 0.1 s simulation step: its sum, mean and percentiles) and the
-coverage loss of the poses the robot actually drove.
-
-## The robot model
-
-`TrajectoryFollower` (trajectory_generation_tools/simulation/trajectory_follower.h)
-is a surge-and-yaw robot handed the trajectory's poses one after the other, not a
-timetable, so the traversal time comes out of its dynamics:
-
-- a pose at the same position as the pose before it (an in-place rotation) is a heading
-  target, reached within `yaw_tolerance`; any other pose is a position target, reached
-  within `position_tolerance` or once passed;
-- position controller: towards a position target it asks for a velocity over ground of
-  `position_gain` times the distance to the target (at most `v_max`), and steers the
-  velocity through the water that gives it in the current; towards a heading target it
-  turns in place;
-- yaw controller: yaw rate `yaw_gain` times the heading error, at most `yaw_rate_max`;
-- shared thrust: the speed command is at most `v_max * (1 - |yaw rate| / yaw_rate_max)`;
-- the speed changes by at most `a_max` per second; a constant current
-  (`current_x`, `current_y`) carries the robot.
-
-Two mechanisms produce the thesis's trends. The set-point controller slows towards every
-pose it is handed, so following densely sampled arcs (a pose every 0.1 m) costs time, while
-a turn in place with a high yaw gain runs at the saturated yaw rate; stopping for those
-turns overshoots the corners, because the robot brakes at no more than `a_max`. With a low
-yaw gain each rotation pose is approached exponentially, so finely sampled rotations are
-slow: the in-place turns lose their advantage.
-
-## Experiment 1: lake_30x30, high yaw gain (Tables 4.1 and 4.2)
-
-Mission `config/missions/lake_30x30.yaml` (the thesis's 30 m x 30 m map with two
-obstacles, boustrophedon, time cost, 1 m wall offset, 40 % overlap, frustum sensor 3 m
-above the bottom, 1 m turning radius, sampling 0.5 m on segments, 0.1 m on arcs). Robot,
-the same for both trajectories: `config/default.yaml`, i.e. `v_max` 0.5 m/s, `a_max`
-0.2 m/s^2, `yaw_rate_max` 0.5 rad/s, `yaw_gain` 5 1/s, `position_gain` 1.5 1/s,
-`position_tolerance` 0.05 m, `yaw_tolerance` 0.05 rad, `rotation_sampling_angle` 0.2 rad,
-no current, `sim_dt` 0.1 s.
-
-    coverage_tool plan config/missions/lake_30x30.yaml --out DIR --set smoothing=true|false
-    coverage_tool simulate config/missions/lake_30x30.yaml --trajectory DIR/trajectory.csv --out SIM
-
-| metric | smoothed | unsmoothed | thesis smoothed | thesis unsmoothed |
-|---|---|---|---|---|
-| traversing time | {seconds(s1['traversal_time_s'])} | {seconds(u1['traversal_time_s'])} | 1529 s | 1241 s |
-| coverage loss (actual poses) | {percent(s1['coverage_loss_percent'])} | {percent(u1['coverage_loss_percent'])} | 0 % | 0 % |
-| coverage loss (planned trajectory) | {percent(plan['lake_30x30_smoothed']['coverage_loss_percent'])} | {percent(plan['lake_30x30_unsmoothed']['coverage_loss_percent'])} | 0 % | 0 % |
-| trajectory error (sum) | {metres(s1['tracking_error_sum_m'])} | {metres(u1['tracking_error_sum_m'])} | 293.44 m | 452.20 m |
-| trajectory error (mean) | {metres(s1['tracking_error_mean_m'], 4)} | {metres(u1['tracking_error_mean_m'], 4)} | - | - |
-| planned traversal time | {seconds(plan['lake_30x30_smoothed']['traversal_time_s'])} | {seconds(plan['lake_30x30_unsmoothed']['traversal_time_s'])} | - | - |
-
-Percentiles of the tracking error, metres (Table 4.2):
-
-| | ''' + ' | '.join(f'{q}th' if q not in ('1',) else '1st' for q in PERCENTILES) + ''' |
-|---|''' + '---|' * len(PERCENTILES) + '\n'
-for label, metrics in (('unsmoothed', u1), ('smoothed', s1)):
-    text += f'| {label} | ' + ' | '.join(
-        f"{metrics['tracking_error_percentiles_m'][q]:.3f}" for q in PERCENTILES) + ' |\n'
-text += '''| thesis unsmoothed | 0.01 | 0.03 | 0.04 | 0.07 | 0.13 | 0.23 | 0.34 | 0.47 | 0.63 |
-| thesis smoothed | 0.01 | 0.02 | 0.03 | 0.05 | 0.08 | 0.13 | 0.21 | 0.28 | 0.54 |
-'''
-text += f'''
-Both of the thesis's findings come out: turning in place is faster (the unsmoothed run
-takes {ratio(u1['traversal_time_s'], s1['traversal_time_s'])} of the smoothed run's time; the thesis: 0.81), and the smoothed
-trajectory is tracked better: a lower error sum, mean and 90th to 99th percentiles. Below
-those, both robots are within millimetres of their path.
-
-Where the numbers differ from the thesis, and why:
-
-- Times are shorter than in the lake ({ratio(s1['traversal_time_s'], 1529)} and {ratio(u1['traversal_time_s'], 1241)} of the thesis's): the model
-  uses the planner's `v_max` and `a_max`; the thesis gives no speed or acceleration of
-  Proteus; its 1241 s for the about {plan['lake_30x30_unsmoothed']['trajectory_length_m']:.0f} m our planner lays on this map would mean
-  {plan['lake_30x30_unsmoothed']['trajectory_length_m'] / 1241:.2f} m/s on average.
-- The tracking errors are far smaller, and their ratio far larger. The model knows its
-  pose exactly and feels no waves, thruster lag or unmodelled current, so the smoothed
-  robot deviates only where its set-point controller cuts the arcs' chords (millimetres),
-  and the unsmoothed robot only where it overshoots a corner it has to stop at
-  (decimetres, the 90th to 99th percentiles). The lake's errors (median 0.08 to 0.13 m)
-  were mostly of the first kind, which the model leaves out. The sums also count samples:
-  the model adds one every 0.1 s, while the thesis's sums and percentiles imply about two
-  samples per second.
-- Coverage loss stays near 0 % for both, as in Table 4.1.
-
-Smoothed (left) and unsmoothed (right): the desired trajectory in black, the path the
-robot drove coloured by its tracking error, over the heatmap of what its sensor saw.
-
-<img src="images/experiments_lake_30x30_smoothed.png" width="49%"> <img src="images/experiments_lake_30x30_unsmoothed.png" width="49%">
-
-## Experiment 2: lake_7_5, low yaw gain, finer rotations (Table 4.3)
-
-Mission `config/missions/lake_7_5.yaml` (a 7.5 m x 7.5 m map with many turns and an
-obstacle beside the lanes, 0.3 m turning radius). Robot, the same for both trajectories:
-as in experiment 1 but `yaw_gain` 2 1/s (from 5) and `rotation_sampling_angle` 0.1 rad
-(from 0.2: twice as many poses on each in-place rotation), the thesis's two changes.
-
-    coverage_tool plan config/missions/lake_7_5.yaml --out DIR --set smoothing=true|false \\
-        --set yaw_gain=2 --set rotation_sampling_angle=0.1
-    coverage_tool simulate config/missions/lake_7_5.yaml --trajectory DIR/trajectory.csv --out SIM \\
-        --set yaw_gain=2 --set rotation_sampling_angle=0.1
-
-| metric | smoothed | unsmoothed | thesis smoothed | thesis unsmoothed |
-|---|---|---|---|---|
-| traversing time | {seconds(s2['traversal_time_s'])} | {seconds(u2['traversal_time_s'])} | 531 s | 703 s |
-| coverage loss (actual poses) | {percent(s2['coverage_loss_percent'])} | {percent(u2['coverage_loss_percent'])} | 0 % | 0 % |
-| coverage loss (planned trajectory) | {percent(plan['lake_7_5_smoothed']['coverage_loss_percent'])} | {percent(plan['lake_7_5_unsmoothed']['coverage_loss_percent'])} | 0 % | 0 % |
-| trajectory error (sum) | {metres(s2['tracking_error_sum_m'])} | {metres(u2['tracking_error_sum_m'])} | 283.98 m | 239.34 m |
-| trajectory error (mean) | {metres(s2['tracking_error_mean_m'], 4)} | {metres(u2['tracking_error_mean_m'], 4)} | - | - |
-| trajectory error (99th percentile) | {metres(s2['tracking_error_percentiles_m']['99'], 3)} | {metres(u2['tracking_error_percentiles_m']['99'], 3)} | - | - |
-
-The thesis's reversal comes out: the smoothed trajectory is now the faster one (it takes
-{ratio(s2['traversal_time_s'], u2['traversal_time_s'])} of the unsmoothed run's time; the thesis: 0.76). It comes from the robot, not from the
-map: on the same map with experiment 1's robot (`yaw_gain` 5, `rotation_sampling_angle`
-0.2) turning in place is still faster, {seconds(u3['traversal_time_s'])} unsmoothed against {seconds(s3['traversal_time_s'])} smoothed.
-
-Where the numbers differ from the thesis, and why:
-
-- The thesis's smoothed run tracked worse (283.98 m against 239.34 m); in the model the
-  unsmoothed run still tracks worse. Its error is the overshoot at the stops before each
-  in-place turn, which the yaw gain does not change; and the model's shared thrust slows
-  the robot on the tight 0.3 m arcs, so it stays on them even with the lower gain. The real
-  vehicle's heading dynamics (inertia, thruster lag), which make a low gain lag behind a
-  curving path, are not modelled.
-- The coverage loss is a few percent here even for the planned trajectories: with the
-  sensor 0.4 m above the bottom, the strips along the walls, the map's corners and a
-  strip beside the obstacle lie beyond the footprints (the red cells); the thesis reports
-  0 % for its 7.5 m map, whose sensor height and wall offset it does not state.
-
-<img src="images/experiments_lake_7_5_smoothed.png" width="49%"> <img src="images/experiments_lake_7_5_unsmoothed.png" width="49%">
-
-## A constant current
-
-The thesis's outlook asks for trials "in an underwater environment with stronger water
-currents". The smoothed lake_30x30 trajectory of experiment 1, followed by the same robot
-in a current of (0.2, 0.1) m/s (`--set current_x=0.2 --set current_y=0.1`):
-
-| metric | no current | current (0.2, 0.1) m/s |
-|---|---|---|
-| traversing time | {seconds(calm['traversal_time_s'])} | {seconds(drift['traversal_time_s'])} |
-| trajectory error (sum) | {metres(calm['tracking_error_sum_m'])} | {metres(drift['tracking_error_sum_m'])} |
-| trajectory error (mean) | {metres(calm['tracking_error_mean_m'], 4)} | {metres(drift['tracking_error_mean_m'], 4)} |
-| trajectory error (99th percentile) | {metres(calm['tracking_error_percentiles_m']['99'], 3)} | {metres(drift['tracking_error_percentiles_m']['99'], 3)} |
-| coverage (actual poses) | {percent(calm['coverage_percent'])} | {percent(drift['coverage_percent'])} |
-
-The robot crabs into the current to hold its line, which turns its sensor footprint, and
-drifts off its sweeps wherever it slows down (at every pose it is handed, and while it
-turns in place). The tracking error grows and coverage drops; the plot shows where: the
-red cells along the southern wall, which the first sweep, carried north, no longer
-reaches, and the lighter (seen once) stripes between the sweeps.
-
-<img src="images/experiments_lake_30x30_current.png" width="70%">
-'''
-with open(target, 'w') as stream:
-    stream.write(text)
-PYTHON
-echo "wrote $root/docs/EXPERIMENTS.md"
+echo "== write docs/EXPERIMENTS.md" >&2
+/usr/bin/python3 "$root/scripts/experiments_report.py" "$out" >"$root/docs/EXPERIMENTS.md"

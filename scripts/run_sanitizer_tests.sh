@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The unit-test suite under AddressSanitizer + UndefinedBehaviorSanitizer (issue 11):
+# The unit-test suite under AddressSanitizer + UndefinedBehaviorSanitizer:
 # installs clang, builds every gtest suite and coverage_tool with KC_SANITIZE=ON into
 # ./build-asan (or $BUILD_DIR) and runs them; any finding (memory error, leak, undefined
 # behaviour) fails the test that hit it. About 16 minutes on 2 cores: 10 to build, 5 to 7

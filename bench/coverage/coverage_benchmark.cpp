@@ -1,4 +1,4 @@
-// Issue 5's benchmark: evaluating the coverage of the lake_30x30 mission's trajectory
+// Coverage evaluation benchmark: evaluating the coverage of the lake_30x30 mission's trajectory
 // (smoothed and unsmoothed) as coverage_tool does (measureTrajectoryCoverage on the
 // reporting raster): rasterizing the free, offset free and reachable areas, seeing the
 // trajectory's poses, and the report. Prints the median of N runs of each stage and the
@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -92,10 +93,11 @@ int main(int argc, char** argv) {
     }
   }
   try {
-    std::printf("%s, %d runs each\n", mission_path.c_str(), runs);
+    std::printf("%s, %d runs each\n", std::filesystem::path(mission_path).filename().c_str(), runs);
     std::printf(
-        "| trajectory | poses | raster cells | coverage %% | raster ms | seen area ms | report "
-        "ms | total ms (median) | min ms | max ms |\n|---|---|---|---|---|---|---|---|---|---|\n");
+        "| trajectory | poses | raster cells | coverage %% | raster ms (timing) | seen area ms "
+        "(timing) | report ms (timing) | total ms, median (timing) | min ms (timing) | max ms "
+        "(timing) |\n|---|---|---|---|---|---|---|---|---|---|\n");
     for (const bool smoothing : {true, false}) {
       const Mission mission = MissionFileReader().read(
           mission_path, {smoothing ? "smoothing=true" : "smoothing=false"});

@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   const auto plan =
       kinematic_coverage::core::CoveragePlanner(kinematic_coverage::core::PlannerParameters{})
           .plan(map, Point2(0, 50), Point2(0, -50));
-  std::printf("| stage | seconds | result |\n|---|---|---|\n");
+  std::printf("| stage | seconds (timing) | result |\n|---|---|---|\n");
   for (const auto& stage : plan.stages) {
     std::printf("| %s | %.3f | %s |\n", stage.name.c_str(), stage.duration_s,
                 stage.summary.c_str());

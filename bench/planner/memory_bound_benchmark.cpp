@@ -1,4 +1,4 @@
-// Memory bound (issue 11): a lake of about 300 m across with a 2 000-vertex shoreline and
+// Memory bound: a lake of about 300 m across with a 2 000-vertex shoreline and
 // 50 islands, default parameters (config/default.yaml), planned as `coverage_tool plan`
 // does (validate, clean, plan) and then smoothed (TrajectoryGenerator). Prints one row
 // per stage with its time, result and the peak RSS so far (getrusage ru_maxrss), the
@@ -29,7 +29,7 @@
 namespace kinematic_coverage::core {
 namespace {
 
-/// Issue 11's bounds for this map.
+/// The bounds this map must plan within (docs/RELIABILITY.md, Memory bound).
 constexpr double kMaxPeakRssMiB = 1024.0;
 constexpr double kMaxPlanningSeconds = 30.0;
 /// Mean shoreline radius, metres, and the harmonics that shape bays and headlands: the
@@ -175,7 +175,7 @@ int run(const BenchmarkOptions& options) {
               options.seed, mission.polygon.hull.size(), mission.polygon.holes.size(), vertices,
               area(mission.polygon));
   std::printf("peak RSS before planning: %.1f MiB\n\n", peakRssMiB());
-  std::printf("| stage | seconds | peak RSS MiB | result |\n|---|---|---|---|\n");
+  std::printf("| stage | seconds (timing) | peak RSS MiB (timing) | result |\n|---|---|---|---|\n");
   const auto report = [](const PlanningStage& stage) {
     std::printf("| %s | %.3f | %.1f | %s |\n", stage.name.c_str(), stage.duration_s, peakRssMiB(),
                 stage.summary.c_str());

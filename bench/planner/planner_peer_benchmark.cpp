@@ -1,6 +1,6 @@
 // Side by side with the peer planner (ethz-asl/polygon_coverage_planning) on its example
-// polygons: plans each mission of shared/benchmarks/pcp_polygons with the same settings
-// and prints our figures next to the peer's reference figures from that folder's README.
+// polygons: plans each mission of bench/data/pcp_polygons with the same settings and
+// prints our figures next to the peer's published figures from that folder's README.
 //
 //   planner_peer_benchmark [POLYGONS_DIR] [--runs N]
 #include <algorithm>
@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
 
   std::printf(
       "| polygon | cells (peer) | waypoints (peer) | path length m (peer) | time cost s (peer) "
-      "| time cost ratio | planning time s (peer) | reachable area seen %% |\n"
+      "| time cost ratio | planning time s, median (timing) (peer) | reachable area seen %% |\n"
       "|---|---|---|---|---|---|---|---|\n");
   for (const std::string& path : missions) {
     const std::string name = std::filesystem::path(path).stem().string();

@@ -1,4 +1,4 @@
-// Issue 8's benchmark: replanning the lake drift scenario (the robot followed the first
+// Replanning benchmark: replanning the lake drift scenario (the robot followed the first
 // 40 % of the lake_30x30 trajectory, then both obstacles moved by (2, 1) m) with each
 // replanning method: validation, cleaning, the remaining area, planning its parts, and
 // smoothing the new trajectory. Prints the median, minimum and maximum of N runs; the bar
@@ -37,8 +37,8 @@ int main(int argc, char** argv) {
     std::printf("lake_30x30 drift: %zu visited poses, holes moved by (2, 1) m, %d runs each\n",
                 scenario.visited.size(), runs);
     std::printf(
-        "| method | remaining parts | remaining m^2 | waypoints | replan ms (median) | "
-        "smooth ms | total ms (median) | min ms | max ms "
+        "| method | remaining parts | remaining m^2 | waypoints | replan ms, median (timing) | "
+        "smooth ms (timing) | total ms, median (timing) | min ms (timing) | max ms (timing) "
         "|\n|---|---|---|---|---|---|---|---|---|\n");
     for (const char* method : {"footprint", "convex_hull", "concave_hull"}) {
       PlannerParameters parameters = scenario.mission.parameters;

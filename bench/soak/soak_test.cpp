@@ -1,13 +1,14 @@
-// Soak test (issue 11): plans and smooths seeded random maps with 0 to 15 holes, sized
-// as in issue 2 (hulls 50 to 200 m across, footprints 2 to 12.9 m wide), and checks on
-// every seed: no exception but a precise InvalidInputError for a start or goal the map
-// makes impossible, no collision of the smoothed trajectory, and at least 99 % coverage
-// of the reachable area. Prints a progress line every 100 seeds, each failure with its
-// seed, and the planning-time distribution. Exit status 1 when any seed failed.
+// Soak test: plans and smooths seeded random maps with 0 to 15 holes (hulls 50 to 200 m
+// across, footprints 2 to 12.9 m wide), and checks on every seed: no exception but a
+// precise InvalidInputError for a start or goal the map makes impossible, no collision of
+// the smoothed trajectory, and at least 99 % coverage of the reachable area by the waypoint
+// path. Prints a progress line every 100 seeds, each failure with its seed, and a table
+// with a row per seed range (and their total when there are several): the outcomes and the
+// planning-time distribution. Exit status 1 when any seed failed.
 // --trajectory-coverage also measures the smoothed trajectory's reachable coverage and
-// prints its distribution (smoothing cuts corners by design, so it is reported, not checked).
+// adds its distribution (smoothing cuts corners by design, so it is reported, not checked).
 //
-// Usage: soak_test --seeds FIRST:LAST [--holes-max 15] [--trajectory-coverage]
+// Usage: soak_test --seeds FIRST:LAST[,FIRST:LAST...] [--holes-max 15] [--trajectory-coverage]
 
 #include <algorithm>
 #include <chrono>
@@ -33,13 +34,12 @@
 namespace kinematic_coverage::core {
 namespace {
 
-/// Least share of the reachable area the waypoint path must cover (issue 2).
+/// Least share of the reachable area the waypoint path must cover.
 constexpr double kMinCoveragePercent = 99.0;
 
-/// The seed range and map shape asked for on the command line.
+/// The seed ranges and map shape asked for on the command line.
 struct SoakOptions {
-  std::uint64_t first_seed = 0;
-  std::uint64_t last_seed = 0;
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> seed_ranges;  ///< first, last
   int holes_max = 15;
   bool trajectory_coverage = false;
 };
@@ -53,15 +53,15 @@ struct TrajectoryCoverageSample {
 /// What became of one seed.
 enum class SoakOutcome { kPassed, kRejected, kFailed };
 
-/// Parses `--seeds FIRST:LAST [--holes-max N] [--trajectory-coverage]`; exits with a usage
-/// line when malformed.
+/// Parses `--seeds FIRST:LAST[,...] [--holes-max N] [--trajectory-coverage]`; exits with a
+/// usage line when malformed.
 SoakOptions parseOptions(int argc, char** argv) {
   const auto usage = [] {
-    std::cerr << "usage: soak_test --seeds FIRST:LAST [--holes-max 15] [--trajectory-coverage]\n";
+    std::cerr << "usage: soak_test --seeds FIRST:LAST[,FIRST:LAST...] [--holes-max 15] "
+                 "[--trajectory-coverage]\n";
     std::exit(2);
   };
   SoakOptions options;
-  bool have_seeds = false;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (flag == "--trajectory-coverage") {
@@ -71,11 +71,16 @@ SoakOptions parseOptions(int argc, char** argv) {
     if (i + 1 >= argc) usage();
     const std::string value = argv[++i];
     if (flag == "--seeds") {
-      const std::size_t colon = value.find(':');
-      if (colon == std::string::npos) usage();
-      options.first_seed = std::stoull(value.substr(0, colon));
-      options.last_seed = std::stoull(value.substr(colon + 1));
-      have_seeds = options.first_seed <= options.last_seed;
+      std::istringstream ranges(value);
+      std::string range;
+      while (std::getline(ranges, range, ',')) {
+        const std::size_t colon = range.find(':');
+        if (colon == std::string::npos) usage();
+        const std::uint64_t first = std::stoull(range.substr(0, colon));
+        const std::uint64_t last = std::stoull(range.substr(colon + 1));
+        if (first > last) usage();
+        options.seed_ranges.emplace_back(first, last);
+      }
     } else if (flag == "--holes-max") {
       options.holes_max = std::stoi(value);
       if (options.holes_max < 0) usage();
@@ -83,7 +88,7 @@ SoakOptions parseOptions(int argc, char** argv) {
       usage();
     }
   }
-  if (!have_seeds) usage();
+  if (options.seed_ranges.empty()) usage();
   return options;
 }
 
@@ -153,57 +158,93 @@ double quantile(const std::vector<double>& sorted, double q) {
   return sorted[std::min(sorted.size() - 1, rank == 0 ? 0 : rank - 1)];
 }
 
+/// The outcomes of a range of seeds.
+struct SoakTally {
+  int passed = 0;
+  int rejected = 0;
+  int failed = 0;
+  std::vector<double> planning_times_s;
+  std::vector<TrajectoryCoverageSample> trajectory_coverage;
+
+  void add(const SoakTally& other) {
+    passed += other.passed;
+    rejected += other.rejected;
+    failed += other.failed;
+    planning_times_s.insert(planning_times_s.end(), other.planning_times_s.begin(),
+                            other.planning_times_s.end());
+    trajectory_coverage.insert(trajectory_coverage.end(), other.trajectory_coverage.begin(),
+                               other.trajectory_coverage.end());
+  }
+};
+
+/// Runs seeds `first` to `last`, with a progress line every 100 seeds.
+SoakTally runRange(std::uint64_t first, std::uint64_t last, const SoakOptions& options) {
+  SoakTally tally;
+  std::uint64_t done = 0;
+  for (std::uint64_t seed = first;; ++seed) {
+    switch (runSeed(seed, options.holes_max, tally.planning_times_s,
+                    options.trajectory_coverage ? &tally.trajectory_coverage : nullptr)) {
+      case SoakOutcome::kPassed:
+        ++tally.passed;
+        break;
+      case SoakOutcome::kRejected:
+        ++tally.rejected;
+        break;
+      case SoakOutcome::kFailed:
+        ++tally.failed;
+        break;
+    }
+    if (++done % 100 == 0) {
+      std::cerr << "progress: " << done << " seeds (up to " << seed << "), passed " << tally.passed
+                << ", rejected " << tally.rejected << ", failed " << tally.failed << std::endl;
+    }
+    if (seed == last) break;
+  }
+  return tally;
+}
+
+/// One table row: outcomes, the smoothed trajectories' reachable coverage (least, with its
+/// seed, 1st percentile, median; "-" without --trajectory-coverage) and planning times.
+void printRow(const std::string& seeds, SoakTally tally) {
+  std::sort(tally.planning_times_s.begin(), tally.planning_times_s.end());
+  std::cout << std::fixed << "| " << seeds << " | " << tally.passed << " | " << tally.rejected
+            << " | " << tally.failed << " | ";
+  if (tally.trajectory_coverage.empty()) {
+    std::cout << "- | - | - | ";
+  } else {
+    std::sort(tally.trajectory_coverage.begin(), tally.trajectory_coverage.end(),
+              [](const auto& a, const auto& b) { return a.percent < b.percent; });
+    std::vector<double> percents;
+    for (const TrajectoryCoverageSample& sample : tally.trajectory_coverage) {
+      percents.push_back(sample.percent);
+    }
+    std::cout << std::setprecision(3) << percents.front() << " (seed "
+              << tally.trajectory_coverage.front().seed << ") | " << quantile(percents, 0.01)
+              << " | " << quantile(percents, 0.5) << " | ";
+  }
+  const std::vector<double>& times = tally.planning_times_s;
+  std::cout << std::setprecision(3) << quantile(times, 0.5) << " | " << quantile(times, 0.99)
+            << " | " << (times.empty() ? 0.0 : times.back()) << " |" << std::endl;
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core
 
 int main(int argc, char** argv) {
   using namespace kinematic_coverage::core;
   const SoakOptions options = parseOptions(argc, argv);
-  std::vector<double> planning_times_s;
-  std::vector<TrajectoryCoverageSample> trajectory_coverage;
-  int passed = 0;
-  int rejected = 0;
-  int failed = 0;
-  std::uint64_t done = 0;
-  for (std::uint64_t seed = options.first_seed; seed <= options.last_seed; ++seed) {
-    switch (runSeed(seed, options.holes_max, planning_times_s,
-                    options.trajectory_coverage ? &trajectory_coverage : nullptr)) {
-      case SoakOutcome::kPassed:
-        ++passed;
-        break;
-      case SoakOutcome::kRejected:
-        ++rejected;
-        break;
-      case SoakOutcome::kFailed:
-        ++failed;
-        break;
-    }
-    if (++done % 100 == 0) {
-      std::cout << "progress: " << done << " seeds (up to " << seed << "), passed " << passed
-                << ", rejected " << rejected << ", failed " << failed << std::endl;
-    }
-    if (seed == options.last_seed) break;
+  std::vector<std::pair<std::string, SoakTally>> rows;
+  SoakTally total;
+  for (const auto& [first, last] : options.seed_ranges) {
+    rows.emplace_back(std::to_string(first) + ":" + std::to_string(last),
+                      runRange(first, last, options));
+    total.add(rows.back().second);
   }
-  std::sort(planning_times_s.begin(), planning_times_s.end());
-  std::cout << std::fixed << std::setprecision(3) << "seeds " << options.first_seed << ":"
-            << options.last_seed << " holes-max " << options.holes_max << ": " << done
-            << " seeds, passed " << passed << ", rejected (precise InvalidInputError) " << rejected
-            << ", failed " << failed << "\n"
-            << "planning time over " << planning_times_s.size() << " plans: median "
-            << quantile(planning_times_s, 0.5) << " s, p99 " << quantile(planning_times_s, 0.99)
-            << " s, max " << (planning_times_s.empty() ? 0.0 : planning_times_s.back()) << " s"
-            << std::endl;
-  if (!trajectory_coverage.empty()) {
-    std::sort(trajectory_coverage.begin(), trajectory_coverage.end(),
-              [](const auto& a, const auto& b) { return a.percent < b.percent; });
-    std::vector<double> percents;
-    for (const TrajectoryCoverageSample& sample : trajectory_coverage) {
-      percents.push_back(sample.percent);
-    }
-    std::cout << "smoothed trajectory reachable coverage over " << percents.size() << " plans: min "
-              << percents.front() << " % (seed " << trajectory_coverage.front().seed
-              << "), 1st percentile " << quantile(percents, 0.01) << " %, median "
-              << quantile(percents, 0.5) << " %" << std::endl;
-  }
-  return failed == 0 ? 0 : 1;
+  std::cout << "holes-max " << options.holes_max << "\n"
+            << "| seeds | passed | rejected | failed | smoothed reachable coverage, least % | "
+               "1st percentile % | median % | median plan s (timing) | p99 plan s (timing) | "
+               "max plan s (timing) |\n|---|---:|---:|---:|---|---:|---:|---:|---:|---:|\n";
+  for (const auto& [seeds, tally] : rows) printRow(seeds, tally);
+  if (rows.size() > 1) printRow("total", total);
+  return total.failed == 0 ? 0 : 1;
 }

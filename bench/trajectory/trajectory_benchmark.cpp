@@ -1,14 +1,17 @@
-// Issue 4's benchmark: smoothing (Algorithm 1), sampling and timing a 10 000-waypoint
+// Trajectory benchmark: smoothing (Algorithm 1), sampling and timing a 10 000-waypoint
 // boustrophedon path (lanes 100 m long and 2 m apart, r = 1 m, 20 rectangular obstacles
-// beside the lanes). Prints the median, minimum and maximum of 21 runs of each stage; the
-// pose buffer is reused between runs, as the smooth_trajectory_generator node does. The
-// global strategy's smoothing (issue 10, GlobalPathSmoother with the default options) is
-// timed on the same path as a separate row, not part of the total.
+// beside the lanes). Prints the path's figures under both smoothing strategies, then the
+// median, minimum and maximum of N runs (default 21) of each stage; the pose buffer is
+// reused between runs, as the smooth_trajectory_generator node does. The global strategy's
+// smoothing (GlobalPathSmoother with the default options) is timed on the same path as a
+// separate row, not part of the total.
 //
-//   trajectory_benchmark
+//   trajectory_benchmark [--runs N]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "trajectory_generation_tools/smoothing/global_path_smoother.h"
@@ -35,10 +38,13 @@ Summary summarize(std::vector<double> times) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
   using kinematic_coverage::core::Point2;
   constexpr int kLanes = 5000;
-  constexpr int kRuns = 21;
+  int runs = 21;
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::string(argv[i]) == "--runs") runs = std::max(1, std::atoi(argv[i + 1]));
+  }
   std::vector<Point2> waypoints;
   for (int i = 0; i < kLanes; ++i) {
     const double x = 2.0 * i;
@@ -61,11 +67,11 @@ int main() {
   std::vector<double> smooth_ms, sample_ms, time_ms, total_ms, global_ms;
   const kinematic_coverage::core::GlobalSmoothingOptions global_options =
       kinematic_coverage::core::GlobalSmoothingOptions::fromParameters(parameters);
-  int global_smoothed = 0;
+  kinematic_coverage::core::SmoothedPath global_path;
   kinematic_coverage::core::SmoothedPath path;
   std::vector<kinematic_coverage::core::TrajectoryPose> poses;
   double traversal_time_s = 0.0;
-  for (int run = 0; run < kRuns; ++run) {
+  for (int run = 0; run < runs; ++run) {
     const Clock::time_point start = Clock::now();
     path =
         kinematic_coverage::core::PathSmoother(area, parameters.turning_radius).smooth(waypoints);
@@ -78,17 +84,24 @@ int main() {
     smooth_ms.push_back(std::chrono::duration<double, std::milli>(smoothed - start).count());
     total_ms.push_back(millisecondsSince(start));
     const Clock::time_point global_start = Clock::now();
-    global_smoothed = kinematic_coverage::core::GlobalPathSmoother(area, global_options)
-                          .smooth(waypoints)
-                          .statistics.turns_smoothed;
+    global_path =
+        kinematic_coverage::core::GlobalPathSmoother(area, global_options).smooth(waypoints);
     global_ms.push_back(millisecondsSince(global_start));
   }
-  std::printf("%zu waypoints, %zu primitives, %zu poses, %d of %d turns smoothed, %.1f s\n",
-              waypoints.size(), path.primitives.size(), poses.size(),
-              path.statistics.turns_smoothed, path.statistics.turns_total, traversal_time_s);
-  std::printf("global strategy: %d of %d turns smoothed\n", global_smoothed,
-              path.statistics.turns_total);
-  std::printf("| stage | median ms | min ms | max ms |\n|---|---|---|---|\n");
+  std::vector<kinematic_coverage::core::TrajectoryPose> global_poses;
+  sampler.sample(global_path.primitives, global_poses);
+  const double global_time_s = timing.assignTimes(global_path.primitives, global_poses);
+  std::printf(
+      "| strategy | waypoints | turns smoothed | primitives | poses | traversal time s |\n"
+      "|---|---|---|---|---|---|\n");
+  std::printf("| local | %zu | %d / %d | %zu | %zu | %.1f |\n", waypoints.size(),
+              path.statistics.turns_smoothed, path.statistics.turns_total, path.primitives.size(),
+              poses.size(), traversal_time_s);
+  std::printf("| global | %zu | %d / %d | %zu | %zu | %.1f |\n\n", waypoints.size(),
+              global_path.statistics.turns_smoothed, global_path.statistics.turns_total,
+              global_path.primitives.size(), global_poses.size(), global_time_s);
+  std::printf(
+      "| stage | median ms (timing) | min ms (timing) | max ms (timing) |\n|---|---|---|---|\n");
   const std::pair<const char*, std::vector<double>*> stages[] = {{"smoothing", &smooth_ms},
                                                                  {"sampling", &sample_ms},
                                                                  {"timing", &time_ms},

@@ -1,0 +1,10 @@
+# Repository-wide checks: nothing outside the repository is used, and the figures in
+# docs/ are what their commands print (scripts/doc_figures.py; CI reruns the ci= rows).
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+add_test(NAME self_contained COMMAND ${PROJECT_SOURCE_DIR}/test/repository/self_contained_test.sh
+  ${PROJECT_SOURCE_DIR})
+add_test(NAME doc_figures COMMAND ${Python3_EXECUTABLE}
+  ${PROJECT_SOURCE_DIR}/scripts/doc_figures.py check --ci --build-dir ${CMAKE_BINARY_DIR})
+set_tests_properties(doc_figures PROPERTIES TIMEOUT 1500)
+add_test(NAME doc_figures_checker COMMAND ${Python3_EXECUTABLE}
+  ${PROJECT_SOURCE_DIR}/test/repository/doc_figures_test.py)
