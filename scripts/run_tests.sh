@@ -15,7 +15,7 @@ echo "== build (every target: core, coverage_tool, nodes, rviz plugins, benchmar
 mkdir -p "$build_dir"
 build_log=$build_dir/build.log
 if ! BUILD_DIR=$build_dir "$root/scripts/build.sh" --target all tests >"$build_log" 2>&1; then
-  grep -E 'error|Error|undefined reference' "$build_log" | head -60
+  grep -E 'error:|Error [0-9]|undefined reference' "$build_log" | head -60
   echo "BUILD FAILED: a target does not compile or link (whole log: $build_log)"
   exit 1
 fi
