@@ -107,13 +107,15 @@ def find_markers(document, lines):
         if before < 0 or not (MARKER.match(lines[before]) or REFERENCE_TABLE.match(lines[before])):
             raise DocumentError(f'{document}:{start + 1}: a table names no command (precede it '
                                 'with a figures marker, or a reference-table marker)')
+    # The reader's text: the document without its markers, which name the commands too.
+    text = '\n'.join(line for line in lines if not MARKER.match(line))
     markers = []
     for index, line in enumerate(lines):
         match = MARKER.match(line)
         if match:
             marker = Marker(document, index, match.group(1))
             program = shlex.split(marker.command)[0]
-            if program not in '\n'.join(lines):
+            if program not in text:
                 raise DocumentError(f'{marker.where()}: the text does not name {program}')
             markers.append(marker)
     return markers

@@ -237,10 +237,11 @@ std::optional<double> GlobalSmoothingProgramme::legPiece(
                    smoother_.options_.v_max, smoother_.options_.a_max);
 }
 
-bool GlobalSmoothingProgramme::preservesCoverage(std::size_t i, std::size_t j) {
+bool GlobalSmoothingProgramme::preservesCoverage(
+    std::size_t i, std::size_t j, std::vector<std::vector<CoverageVerdict>>& verdicts) const {
   const GlobalSmoothingCandidate& candidate = candidates_[i][j];
   if (!coverage_ || !candidate.smoothing) return true;
-  CoverageVerdict& verdict = verdict_[i][j];
+  CoverageVerdict& verdict = verdicts[i][j];
   if (verdict == CoverageVerdict::kUnchecked) {
     verdict = coverage_->preserves(candidate.corner_path, *candidate.smoothing)
                   ? CoverageVerdict::kPreserves
@@ -277,7 +278,7 @@ GlobalSmoothingEvaluation GlobalSmoothingProgramme::evaluate(const GlobalSmoothi
     if (choice[i] == kNoCandidate) continue;
     const std::size_t j = static_cast<std::size_t>(choice[i]);
     const GlobalSmoothingCandidate& current = candidates_[i][j];
-    if (!preservesCoverage(i, j)) return infeasible;
+    if (!preservesCoverage(i, j, verdict_)) return infeasible;
     const std::optional<double> piece = legPiece(i + 1 - current.corners(), previous, &current);
     if (!piece) return infeasible;
     time += *piece;
@@ -381,10 +382,7 @@ GlobalSmoothingPlan GlobalSmoothingProgramme::plan() const {
       const std::size_t j = static_cast<std::size_t>(plan.choice[i]);
       const GlobalSmoothingCandidate& candidate = candidates_[i][j];
       if (!candidate.smoothing || verdict[i][j] != CoverageVerdict::kUnchecked) continue;
-      if (coverage_->preserves(candidate.corner_path, *candidate.smoothing)) {
-        verdict[i][j] = CoverageVerdict::kPreserves;
-      } else {
-        verdict[i][j] = CoverageVerdict::kRefused;
+      if (!preservesCoverage(i, j, verdict)) {
         coverage_refused[i] = true;
         if (candidate.corners() == 2) coverage_refused[i - 1] = true;
         refused = true;

@@ -127,8 +127,10 @@ class GlobalSmoothingProgramme {
   /// driven (the two overlap, or the piece is not clear).
   std::optional<double> legPiece(std::size_t leg, const GlobalSmoothingCandidate* previous,
                                  const GlobalSmoothingCandidate* next) const;
-  /// Whether candidate j of corner i preserves coverage (checked once, then remembered).
-  bool preservesCoverage(std::size_t i, std::size_t j);
+  /// Whether candidate j of corner i preserves coverage (checked once, then remembered in
+  /// `verdicts`).
+  bool preservesCoverage(std::size_t i, std::size_t j,
+                         std::vector<std::vector<CoverageVerdict>>& verdicts) const;
   /// The dynamic programme over the candidates not refused in `verdict`: the fastest
   /// feasible choice, and its time in `least`.
   GlobalSmoothingChoice solve(const std::vector<std::vector<CoverageVerdict>>& verdict,
