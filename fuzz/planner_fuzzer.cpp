@@ -5,7 +5,8 @@
 // parameters in range or, now and then, deliberately out of range. Properties of every
 // plan: waypoints are finite and distinct, each yaw is its leg's heading, the path starts
 // at the start and ends at the goal, every leg between first_inside and last_inside lies in
-// the offset free area (the planner test's tolerance), and the inside range and path
+// the route area (the offset free area's parts joined through their gaps; the planner
+// test's tolerance), and the inside range and path
 // length are consistent.
 
 #include <fuzzer/FuzzedDataProvider.h>
@@ -158,9 +159,8 @@ void checkPlan(const Mission& m, const PlannedMission& planned) {
     fuzzCheck(std::abs(std::remainder(waypoints[i].yaw - heading, 2.0 * M_PI)) <= kYawTolerance,
               "the yaw of waypoint " + std::to_string(i) + " is not its leg's heading");
     if (i >= plan.first_inside && i + 1 <= plan.last_inside) {
-      fuzzCheck(
-          kinematic_coverage::core::segmentInside(plan.offset_free_area, a, b, kInsideTolerance),
-          leg + " leaves the offset free area");
+      fuzzCheck(kinematic_coverage::core::segmentInside(plan.route_area, a, b, kInsideTolerance),
+                leg + " leaves the offset free area");
     }
   }
   fuzzCheck(std::isfinite(plan.path_length_m) &&

@@ -50,7 +50,7 @@ void benchmark(const char* name, const kinematic_coverage::core::Mission& missio
   std::size_t cells = 0;
   for (int run = 0; run < runs; ++run) {
     const Clock::time_point start = Clock::now();
-    const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_free_area, sensor,
+    const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts, sensor,
                                       reportingResolution());
     const Clock::time_point rasterized = Clock::now();
     const SeenArea seen = evaluator.seeTrajectory(poses);
@@ -66,7 +66,7 @@ void benchmark(const char* name, const kinematic_coverage::core::Mission& missio
   }
   // The tool's own call, once, to check that the stages above are what it measures.
   const TrajectoryCoverage tool = measureTrajectoryCoverage(
-      planned.free_area, planned.plan.offset_free_area, mission.parameters, poses);
+      planned.free_area, planned.plan.offset_parts, mission.parameters, poses);
   if (tool.report.coverage_percent != report.coverage_percent) {
     std::fprintf(stderr, "coverage_benchmark: the stages disagree with the tool\n");
     std::exit(1);

@@ -149,19 +149,20 @@ Mission lakeMission(const BenchmarkOptions& options) {
 }
 
 /// Lanes of the chosen decomposition, over every cell and every lane direction it keeps
-/// (each direction's lanes make four sweep patterns).
+/// (each direction's lanes make four sweep patterns), in every part of the offset free area.
 std::size_t laneCount(const PlannedMission& planned, const PlannerParameters& parameters) {
-  const PolygonWithHoles& area = planned.plan.offset_free_area;
-  const Decomposition decomposition = computeBestDecomposition(
-      area, parameters.decomposition_type == "trapezoidal" ? DecompositionType::kTrapezoidal
-                                                           : DecompositionType::kBoustrophedon);
-  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters);
-  const SweepPatternGenerator generator(
-      sensor, SweepPatternGenerator::laneEndInset(sensor, parameters.wall_distance), area);
   std::size_t lanes = 0;
-  for (const Cell& cell : decomposition.cells) {
-    for (double direction : cell.sweep_directions) {
-      lanes += generator.lanes(cell.polygon, direction).size();
+  for (const PolygonWithHoles& area : planned.plan.offset_parts) {
+    const Decomposition decomposition = computeBestDecomposition(
+        area, parameters.decomposition_type == "trapezoidal" ? DecompositionType::kTrapezoidal
+                                                             : DecompositionType::kBoustrophedon);
+    const FrustumSensor sensor = FrustumSensor::fromParameters(parameters);
+    const SweepPatternGenerator generator(
+        sensor, SweepPatternGenerator::laneEndInset(sensor, parameters.wall_distance), area);
+    for (const Cell& cell : decomposition.cells) {
+      for (double direction : cell.sweep_directions) {
+        lanes += generator.lanes(cell.polygon, direction).size();
+      }
     }
   }
   return lanes;

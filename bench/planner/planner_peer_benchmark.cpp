@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
       std::sort(times.begin(), times.end());
       const double median_time = times[times.size() / 2];
       const double seen = kinematic_coverage::core::waypointPathReachableCoveragePercent(
-          planned.free_area, plan.offset_free_area,
+          planned.free_area, plan.offset_parts,
           kinematic_coverage::core::FrustumSensor::fromParameters(mission.parameters),
           plan.waypoints);
       const auto it = peer.find(name);

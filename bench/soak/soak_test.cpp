@@ -127,7 +127,7 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
                   std::to_string(trajectory.min_obstacle_clearance_m));
     }
     const double covered = waypointPathReachableCoveragePercent(
-        mission.polygon, plan.offset_free_area, FrustumSensor::fromParameters(mission.parameters),
+        mission.polygon, plan.offset_parts, FrustumSensor::fromParameters(mission.parameters),
         plan.waypoints, RasterResolution{0.0, 1e-3, 1'000'000});
     if (!(covered >= kMinCoveragePercent)) {
       return fail("reachable coverage " + std::to_string(covered) + " %");
@@ -136,7 +136,7 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
       std::vector<Pose2> poses;
       poses.reserve(trajectory.poses.size());
       for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
-      const CoverageEvaluator evaluator(mission.polygon, plan.offset_free_area,
+      const CoverageEvaluator evaluator(mission.polygon, plan.offset_parts,
                                         FrustumSensor::fromParameters(mission.parameters),
                                         RasterResolution{0.0, 1e-3, 1'000'000});
       trajectory_coverage->push_back(

@@ -64,6 +64,12 @@ bool insideRing(const Point2& p, const Ring& ring) {
   return inside;
 }
 
+double area(const std::vector<PolygonWithHoles>& parts) {
+  double total = 0.0;
+  for (const PolygonWithHoles& part : parts) total += area(part);
+  return total;
+}
+
 bool contains(const PolygonWithHoles& polygon, const Point2& p, double tolerance) {
   if (tolerance > 0.0 && distanceToBoundary(p, polygon) <= tolerance) return true;
   if (!insideRing(p, polygon.hull)) return false;

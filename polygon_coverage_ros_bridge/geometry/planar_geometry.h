@@ -13,6 +13,9 @@ double signedArea(const Ring& ring);
 /// Area of the hull minus the areas of the holes.
 double area(const PolygonWithHoles& polygon);
 
+/// Sum of the areas of disjoint polygons (the parts of an offset free area), m^2.
+double area(const std::vector<PolygonWithHoles>& parts);
+
 /// The z component of (b - a) x (c - a): > 0 when a, b, c turn left.
 double cross(const Point2& a, const Point2& b, const Point2& c);
 

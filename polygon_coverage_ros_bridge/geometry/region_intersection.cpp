@@ -52,16 +52,10 @@ Ring fromCgal(const CgalPolygon& polygon) {
   return ring;
 }
 
-}  // namespace
-
-std::vector<PolygonWithHoles> intersectWithRegions(const PolygonWithHoles& area,
-                                                   const std::vector<PolygonWithHoles>& regions,
-                                                   double min_area) {
-  CgalPolygonSet covered;
-  for (const PolygonWithHoles& region : regions) covered.join(toSet(region));
-  covered.intersection(toSet(area));
+/// The bounded polygons of a set, rounded to doubles; parts below `min_area` left out.
+std::vector<PolygonWithHoles> toPolygons(const CgalPolygonSet& set, double min_area) {
   std::vector<CgalPolygonWithHoles> parts;
-  covered.polygons_with_holes(std::back_inserter(parts));
+  set.polygons_with_holes(std::back_inserter(parts));
   std::vector<PolygonWithHoles> result;
   for (const CgalPolygonWithHoles& part : parts) {
     if (part.is_unbounded()) continue;
@@ -73,6 +67,23 @@ std::vector<PolygonWithHoles> intersectWithRegions(const PolygonWithHoles& area,
     result.push_back(std::move(polygon));
   }
   return result;
+}
+
+}  // namespace
+
+std::vector<PolygonWithHoles> intersectWithRegions(const PolygonWithHoles& area,
+                                                   const std::vector<PolygonWithHoles>& regions,
+                                                   double min_area) {
+  CgalPolygonSet covered;
+  for (const PolygonWithHoles& region : regions) covered.join(toSet(region));
+  covered.intersection(toSet(area));
+  return toPolygons(covered, min_area);
+}
+
+std::vector<PolygonWithHoles> unionOfAreas(const std::vector<PolygonWithHoles>& areas) {
+  CgalPolygonSet united;
+  for (const PolygonWithHoles& area : areas) united.join(toSet(area));
+  return toPolygons(united, 0.0);
 }
 
 }  // namespace kinematic_coverage::core

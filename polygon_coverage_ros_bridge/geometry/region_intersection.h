@@ -15,4 +15,10 @@ std::vector<PolygonWithHoles> intersectWithRegions(const PolygonWithHoles& area,
                                                    const std::vector<PolygonWithHoles>& regions,
                                                    double min_area);
 
+/// The union of `areas` (exact Boolean operations, results rounded to doubles), as
+/// disjoint polygons with a counter-clockwise hull and clockwise holes: the offset free
+/// area's parts joined by their transit corridors. Throws InvalidInputError for
+/// non-finite coordinates.
+std::vector<PolygonWithHoles> unionOfAreas(const std::vector<PolygonWithHoles>& areas);
+
 }  // namespace kinematic_coverage::core

@@ -158,17 +158,7 @@ OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double w
               return exactArea(a) > exactArea(b);
             });
   OffsetFreeArea result;
-  result.area = toPolygonWithHoles(parts.front());
-  for (std::size_t i = 1; i < parts.size(); ++i) {
-    const auto& outer = parts[i].outer_boundary();
-    std::ostringstream warning;
-    warning << "the wall offset splits the free area: a part of " << exactArea(parts[i])
-            << " m^2 near (" << CGAL::to_double(outer.vertex(0).x()) << ", "
-            << CGAL::to_double(outer.vertex(0).y())
-            << ") is out of reach and dropped (kept the largest part, " << exactArea(parts[0])
-            << " m^2)";
-    result.warnings.push_back(warning.str());
-  }
+  for (const ExactPolygonWithHoles& part : parts) result.parts.push_back(toPolygonWithHoles(part));
   return result;
 }
 

@@ -14,20 +14,20 @@ namespace kinematic_coverage::core {
 /// with 1 966 take 396 MB), so the limit keeps one offset under about 400 MB.
 constexpr double kMaxSkeletonPairs = 8e6;
 
-/// The offset free area (docs/REFERENCE.md, Geometry and input rules) and what it dropped.
+/// The offset free area (docs/REFERENCE.md, Geometry and input rules): one part, or
+/// several where the offset splits the free area (a strait narrower than two wall
+/// distances).
 struct OffsetFreeArea {
-  PolygonWithHoles area;              ///< CCW hull, CW holes
-  std::vector<std::string> warnings;  ///< one line per dropped part
+  std::vector<PolygonWithHoles> parts;  ///< CCW hulls, CW holes; largest first
 };
 
 /// Computes the points of a cleaned free area at least `wall_distance` from the hull and
 /// from every hole, with mitred (straight-skeleton) offsets: the hull shrinks by its
 /// interior skeleton, each hole grows by its exterior skeleton, and the grown holes are
 /// subtracted from the shrunk hull with exact Boolean operations, so that holes growing
-/// into each other or into the hull merge. When the result falls apart, the largest part
-/// is kept and every other part is reported as dropped. Throws InvalidInputError when
-/// nothing is left, and, before any skeleton is built, when a ring has more than
-/// kMaxSkeletonPairs vertex pairs.
+/// into each other or into the hull merge. Every part of the result is returned, the
+/// largest first. Throws InvalidInputError when nothing is left, and, before any skeleton is built,
+/// when a ring has more than kMaxSkeletonPairs vertex pairs.
 OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance);
 
 }  // namespace kinematic_coverage::core

@@ -72,12 +72,12 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   stage_start = std::chrono::steady_clock::now();
   const OffsetFreeArea offset =
       computeOffsetFreeArea(cleaned.free_area, mission.parameters.wall_distance);
-  out << "offset: offset free area " << area(offset.area) << " m^2 with "
-      << offset.area.holes.size() << " holes (" << formatSeconds(secondsSince(stage_start)) << ")"
-      << std::endl;
+  out << "offset: offset free area " << area(offset.parts) << " m^2 in " << offset.parts.size()
+      << (offset.parts.size() == 1 ? " part (" : " parts (")
+      << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
   const TrajectoryCoverage coverage =
-      measureTrajectoryCoverage(cleaned.free_area, offset.area, mission.parameters, poses);
+      measureTrajectoryCoverage(cleaned.free_area, offset.parts, mission.parameters, poses);
   out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
       << ")" << std::endl;
   const double evaluation_time_s = secondsSince(evaluation_start);
@@ -93,7 +93,7 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const std::string plot_path = (std::filesystem::path(out_dir) / "plot.png").string();
   CoveragePlotData plot;
   plot.free_area = cleaned.free_area;
-  plot.offset_free_area = offset.area;
+  plot.offset_parts = offset.parts;
   plot.heatmap = coverage.heatmap;
   plot.trajectory = poses;
   std::ostringstream figures;
@@ -107,7 +107,6 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
 
   std::ostringstream notes;
   for (const std::string& warning : cleaned.warnings) notes << "warning: " << warning << "\n";
-  for (const std::string& warning : offset.warnings) notes << "warning: " << warning << "\n";
   err << notes.str();
   out << "wrote " << metrics_path << " " << plot_path << "\n";
 }

@@ -35,6 +35,7 @@ const std::vector<ParameterField>& parameterFields() {
       {"a_max", &P::a_max},
       {"yaw_rate_max", &P::yaw_rate_max},
       {"wall_distance", &P::wall_distance},
+      {"offset_parts", &P::offset_parts},
       {"sensor_model", &P::sensor_model},
       {"lateral_fov", &P::lateral_fov},
       {"onward_fov", &P::onward_fov},

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/command_line.h"
 #include "polygon_coverage_ros_bridge/mission/json_object.h"
@@ -24,8 +26,13 @@ std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
   const CoveragePlan& plan = *request.plan;
 
   const auto stage_start = std::chrono::steady_clock::now();
-  const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(parameters).generate(plan.waypoints, free_area);
+  // The plan and the parameters are valid here: a failure below is the package's.
+  GeneratedTrajectory trajectory;
+  try {
+    trajectory = TrajectoryGenerator(parameters).generate(plan.waypoints, free_area);
+  } catch (const InvalidInputError& error) {
+    throw InternalError(parameters.smoothing ? "smooth" : "trajectory", error.what());
+  }
   const SmoothingStatistics& turns = trajectory.statistics;
   out << (parameters.smoothing ? "smooth: " : "trajectory: ") << turns.turns_smoothed << " of "
       << turns.turns_total << " turns smoothed (inner " << turns.inner << ", outer bisector "
@@ -41,15 +48,19 @@ std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
   for (const TrajectoryPose& pose : trajectory.poses) {
     poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
   }
-  const TrajectoryCoverage coverage =
-      measureTrajectoryCoverage(free_area, plan.offset_free_area, parameters, poses);
+  TrajectoryCoverage coverage;
+  try {
+    coverage = measureTrajectoryCoverage(free_area, plan.offset_parts, parameters, poses);
+  } catch (const InvalidInputError& error) {
+    throw InternalError("coverage", error.what());
+  }
   out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
       << ")" << std::endl;
   std::optional<TrajectoryCoverage> combined;
   if (request.visited) {
     std::vector<Pose2> all = *request.visited;
     all.insert(all.end(), poses.begin(), poses.end());
-    combined = measureTrajectoryCoverage(free_area, plan.offset_free_area, parameters, all);
+    combined = measureTrajectoryCoverage(free_area, plan.offset_parts, parameters, all);
     out << "combined coverage: visited and new trajectory: " << coverageSummary(*combined) << " ("
         << formatSeconds(combined->duration_s) << ")" << std::endl;
   }
@@ -82,7 +93,7 @@ std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
 
   CoveragePlotData plot;
   plot.free_area = free_area;
-  plot.offset_free_area = plan.offset_free_area;
+  plot.offset_parts = plan.offset_parts;
   plot.heatmap = combined ? combined->heatmap : coverage.heatmap;
   plot.waypoints = plan.waypoints;
   plot.trajectory = poses;

@@ -84,7 +84,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const OffsetFreeArea offset =
       computeOffsetFreeArea(cleaned.free_area, mission.parameters.wall_distance);
   out << "area: free area " << area(cleaned.free_area) << " m^2, offset free area "
-      << area(offset.area) << " m^2 (" << formatSeconds(secondsSince(stage_start)) << ")"
+      << area(offset.parts) << " m^2 (" << formatSeconds(secondsSince(stage_start)) << ")"
       << std::endl;
 
   stage_start = std::chrono::steady_clock::now();
@@ -105,7 +105,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
     errors.push_back(step.tracking_error_m);
   }
   const TrajectoryCoverage coverage =
-      measureTrajectoryCoverage(cleaned.free_area, offset.area, mission.parameters, actual);
+      measureTrajectoryCoverage(cleaned.free_area, offset.parts, mission.parameters, actual);
   out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
       << ")" << std::endl;
 
@@ -119,14 +119,13 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   metrics.set("traversal_time_s", simulation.traversal_time_s)
       .set("tracking_error_sum_m", tracking.sum_m)
       .set("tracking_error_mean_m", tracking.mean_m)
-      .set("tracking_error_percentiles_m", percentileObject(tracking))
-      .set("coverage_percent", coverage.report.coverage_percent)
-      .set("coverage_loss_percent", coverage.report.coverage_loss_percent);
+      .set("tracking_error_percentiles_m", percentileObject(tracking));
+  setCoverageMetrics(coverage.report, metrics);
   metrics.write(metrics_path);
 
   CoveragePlotData plot;
   plot.free_area = cleaned.free_area;
-  plot.offset_free_area = offset.area;
+  plot.offset_parts = offset.parts;
   plot.heatmap = coverage.heatmap;
   plot.trajectory = desired;
   plot.actual_path = actual;
@@ -144,7 +143,6 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
 
   std::ostringstream notes;
   for (const std::string& warning : cleaned.warnings) notes << "warning: " << warning << "\n";
-  for (const std::string& warning : offset.warnings) notes << "warning: " << warning << "\n";
   err << notes.str();
   out << "wrote " << actual_path << " " << metrics_path << " " << plot_path << "\n";
 }

@@ -8,13 +8,12 @@
 namespace kinematic_coverage::core {
 
 TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
-                                             const PolygonWithHoles& offset_free_area,
+                                             const std::vector<PolygonWithHoles>& offset_parts,
                                              const PlannerParameters& parameters,
                                              const std::vector<Pose2>& poses) {
   const auto start = std::chrono::steady_clock::now();
-  const CoverageEvaluator evaluator(free_area, offset_free_area,
-                                    FrustumSensor::fromParameters(parameters),
-                                    reportingResolution());
+  const CoverageEvaluator evaluator(
+      free_area, offset_parts, FrustumSensor::fromParameters(parameters), reportingResolution());
   TrajectoryCoverage coverage;
   const SeenArea seen = evaluator.seeTrajectory(poses);
   coverage.report = evaluator.report(seen);
@@ -30,7 +29,8 @@ std::string coverageSummary(const TrajectoryCoverage& coverage) {
   out.precision(5);
   out << coverage.report.coverage_percent << " % of the free area seen (coverage loss "
       << coverage.report.coverage_loss_percent << " %), "
-      << coverage.report.reachable_coverage_percent << " % of the reachable area, "
+      << coverage.report.reachable_coverage_percent << " % of the reachable area ("
+      << coverage.report.unseen_reachable_area_m2 << " m^2 of it unseen), "
       << 100.0 * coverage.cell_size_m << " cm cells";
   return out.str();
 }
@@ -38,7 +38,9 @@ std::string coverageSummary(const TrajectoryCoverage& coverage) {
 void setCoverageMetrics(const CoverageReport& report, JsonObject& metrics) {
   metrics.set("coverage_percent", report.coverage_percent)
       .set("coverage_loss_percent", report.coverage_loss_percent)
-      .set("reachable_coverage_percent", report.reachable_coverage_percent);
+      .set("reachable_coverage_percent", report.reachable_coverage_percent)
+      .set("unseen_reachable_area_m2", report.unseen_reachable_area_m2)
+      .set("unreachable_area_m2", report.unreachable_area_m2);
 }
 
 }  // namespace kinematic_coverage::core

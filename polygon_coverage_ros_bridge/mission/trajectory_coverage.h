@@ -22,10 +22,11 @@ struct TrajectoryCoverage {
 /// mission's cleaned free area, with the sensor that `parameters` describe, on the raster
 /// of reportingResolution(): the one measurement behind `plan`'s figures for its own
 /// trajectory and `evaluate`'s for any trajectory file, so that both agree on the same
-/// poses. `offset_free_area` only shapes the reachable area. Throws InvalidInputError for
+/// poses. `offset_parts` (every part of the offset free area) only shape the reachable
+/// area. Throws InvalidInputError for
 /// a non-finite pose, an invalid sensor or an offset free area that covers no cell.
 TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
-                                             const PolygonWithHoles& offset_free_area,
+                                             const std::vector<PolygonWithHoles>& offset_parts,
                                              const PlannerParameters& parameters,
                                              const std::vector<Pose2>& poses);
 
@@ -33,8 +34,9 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
 /// (coverage loss 0.023 %), 100 % of the reachable area, 5 cm cells".
 std::string coverageSummary(const TrajectoryCoverage& coverage);
 
-/// Sets `coverage_percent`, `coverage_loss_percent` and `reachable_coverage_percent` of
-/// metrics.json (docs/REFERENCE.md, Metrics).
+/// Sets `coverage_percent`, `coverage_loss_percent`, `reachable_coverage_percent`,
+/// `unseen_reachable_area_m2` and `unreachable_area_m2` of metrics.json
+/// (docs/REFERENCE.md, Metrics).
 void setCoverageMetrics(const CoverageReport& report, JsonObject& metrics);
 
 }  // namespace kinematic_coverage::core

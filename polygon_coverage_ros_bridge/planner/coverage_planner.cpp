@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/region_intersection.h"
@@ -95,10 +96,12 @@ bool crossesHole(const std::vector<Ring>& holes, const Point2& a, const Point2& 
   return false;
 }
 
-/// Where a start or goal enters the offset free area: itself when inside, otherwise the
-/// nearest point of the area, joined by a straight leg that must not cross a hole.
-Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& offset_area,
-                  const Point2& p, const std::string& what, double tolerance) {
+/// Where a start or goal enters the planned area: itself when inside the route area,
+/// otherwise the nearest point of the planned parts, joined by a straight leg that must
+/// not cross a hole.
+Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& route_area,
+                  const std::vector<PolygonWithHoles>& parts, const Point2& p,
+                  const std::string& what, double tolerance) {
   if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
     throw InvalidInputError(what + " has a non-finite coordinate");
   }
@@ -108,8 +111,12 @@ Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& off
                               std::to_string(i));
     }
   }
-  if (contains(offset_area, p, tolerance)) return p;
-  const Point2 entry = nearestBoundaryPoint(offset_area, p);
+  if (contains(route_area, p, tolerance)) return p;
+  Point2 entry = nearestBoundaryPoint(parts.front(), p);
+  for (const PolygonWithHoles& part : parts) {
+    const Point2 candidate = nearestBoundaryPoint(part, p);
+    if ((candidate - p).norm() < (entry - p).norm()) entry = candidate;
+  }
   if (crossesHole(free_area.holes, p, entry, tolerance)) {
     throw InvalidInputError(what + " " + formatPoint(p) +
                             " is outside the offset free area and its straight leg to the "
@@ -117,6 +124,74 @@ Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& off
                             formatPoint(entry) + " crosses a hole");
   }
   return entry;
+}
+
+/// The part nearest to p (0 when p lies in it): the one a robot starting at p enters.
+std::size_t nearestPart(const std::vector<PolygonWithHoles>& parts, const Point2& p) {
+  std::size_t best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const double d = contains(parts[k], p) ? 0.0 : distanceToBoundary(p, parts[k]);
+    if (d < best_distance) {
+      best_distance = d;
+      best = k;
+    }
+  }
+  return best;
+}
+
+std::string partName(const PolygonWithHoles& part) {
+  std::ostringstream name;
+  name << "a part of " << kinematic_coverage::core::area(part) << " m^2 near "
+       << formatPoint(part.hull.front());
+  return name.str();
+}
+
+/// The parts to plan and the area their transitions run in, by `offset_parts`, with a
+/// warning per gap passed and per part left out.
+std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
+                                          const PlannerParameters& parameters, const Point2& start,
+                                          CoveragePlan* plan) {
+  const std::vector<PolygonWithHoles>& parts = plan->offset_parts;
+  if (parts.size() == 1) {
+    plan->route_area = parts.front();
+    return parts;
+  }
+  if (parameters.offset_parts == "largest") {
+    for (std::size_t k = 1; k < parts.size(); ++k) {
+      plan->warnings.push_back("the wall offset splits the free area: " + partName(parts[k]) +
+                               " is not planned (offset_parts: largest)");
+    }
+    plan->route_area = parts.front();
+    return {parts.front()};
+  }
+  JoinedOffsetArea joined;
+  try {
+    joined = OffsetPartJoiner(free_area, parameters.wall_distance)
+                 .join(parts, nearestPart(parts, start));
+  } catch (const InvalidInputError& error) {
+    throw InternalError("offset", std::string("joining the parts: ") + error.what());
+  }
+  if (joined.route_area.hull.empty()) {
+    throw InternalError("offset", "joining the parts of the offset free area gave no area");
+  }
+  for (const OffsetGap& gap : joined.gaps) {
+    std::ostringstream warning;
+    warning << "the wall offset splits the free area: transits to " << partName(parts[gap.to_part])
+            << " pass a gap at " << formatPoint(gap.narrowest_point) << " with " << gap.clearance_m
+            << " m clearance (wall_distance " << parameters.wall_distance << " m)";
+    plan->warnings.push_back(warning.str());
+  }
+  for (std::size_t k : joined.sealed_parts) {
+    plan->warnings.push_back("the wall offset splits the free area: " + partName(parts[k]) +
+                             " is not planned: no passage to it has a clearance the robot can "
+                             "keep");
+  }
+  plan->route_area = std::move(joined.route_area);
+  plan->gaps = std::move(joined.gaps);
+  std::vector<PolygonWithHoles> planned;
+  for (std::size_t k : joined.joined_parts) planned.push_back(parts[k]);
+  return planned;
 }
 
 /// Start and goal: the generalized TSP's nodes 0 and 1, before the sweep patterns.
@@ -216,29 +291,40 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
 
   // Wall offset (docs/REFERENCE.md, Geometry and input rules).
   Clock::time_point t = Clock::now();
-  OffsetFreeArea offset = computeOffsetFreeArea(free_area, parameters_.wall_distance);
-  plan.offset_free_area = std::move(offset.area);
-  plan.warnings = std::move(offset.warnings);
-  const PolygonWithHoles& area = plan.offset_free_area;
-  const Point2 start_inside = entryPoint(free_area, area, start, "start", tolerance);
-  const Point2 goal_inside = entryPoint(free_area, area, goal, "goal", tolerance);
+  plan.offset_parts = computeOffsetFreeArea(free_area, parameters_.wall_distance).parts;
+  const std::vector<PolygonWithHoles> planned_parts =
+      partsToPlan(free_area, parameters_, start, &plan);
+  const PolygonWithHoles& area = plan.route_area;
+  const Point2 start_inside = entryPoint(free_area, area, planned_parts, start, "start", tolerance);
+  const Point2 goal_inside = entryPoint(free_area, area, planned_parts, goal, "goal", tolerance);
   {
+    std::size_t holes = 0;
+    for (const PolygonWithHoles& part : plan.offset_parts) holes += part.holes.size();
     std::ostringstream summary;
-    summary << "offset free area " << kinematic_coverage::core::area(area) << " m^2 with "
-            << area.holes.size() << " holes";
+    summary << "offset free area " << kinematic_coverage::core::area(plan.offset_parts)
+            << " m^2 with " << holes << " holes";
+    if (plan.offset_parts.size() > 1) {
+      summary << " in " << plan.offset_parts.size() << " parts, " << planned_parts.size()
+              << " planned, joined through " << plan.gaps.size() << " gaps";
+    }
     stage("offset", t, summary.str());
   }
 
-  // The parts to cover: the whole offset free area, or its parts inside the region.
+  // The parts to cover: the planned parts of the offset free area, or their parts inside
+  // the region.
   std::vector<PolygonWithHoles> parts;
   if (coverage_region == nullptr) {
-    parts.push_back(area);
+    parts = planned_parts;
   } else {
     t = Clock::now();
     const FrustumSensor region_sensor = FrustumSensor::fromParameters(parameters_);
-    parts = intersectWithRegions(
-        area, *coverage_region,
-        kMinPartShare * region_sensor.sweepDistance() * region_sensor.sweepDistance());
+    for (const PolygonWithHoles& part : planned_parts) {
+      for (PolygonWithHoles& inside : intersectWithRegions(
+               part, *coverage_region,
+               kMinPartShare * region_sensor.sweepDistance() * region_sensor.sweepDistance())) {
+        parts.push_back(std::move(inside));
+      }
+    }
     double parts_area = 0.0;
     for (const PolygonWithHoles& part : parts) parts_area += kinematic_coverage::core::area(part);
     std::ostringstream summary;
@@ -246,168 +332,181 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     stage("region", t, summary.str());
   }
 
-  // Cell decomposition over candidate directions, per part.
-  t = Clock::now();
-  const DecompositionType type = parameters_.decomposition_type == "trapezoidal"
-                                     ? DecompositionType::kTrapezoidal
-                                     : DecompositionType::kBoustrophedon;
-  std::vector<Decomposition> decompositions;
-  std::size_t directions_tried = 0;
-  std::size_t cell_count = 0;
-  for (const PolygonWithHoles& part : parts) {
-    decompositions.push_back(computeBestDecomposition(part, type));
-    directions_tried = std::max(directions_tried, decompositions.back().directions_tried);
-    cell_count += decompositions.back().cells.size();
-    for (const Cell& cell : decompositions.back().cells) plan.cells.push_back(cell.polygon);
-  }
-  {
-    std::ostringstream summary;
-    summary << cell_count << " " << parameters_.decomposition_type << " cells, best of "
-            << directions_tried << " directions";
-    stage("decompose", t, summary.str());
-  }
+  // A stage that fails from here on failed on valid input (a bug), except the size
+  // limits: failing_stage is null while they are checked.
+  const char* failing_stage = "decompose";
+  try {
+    // Cell decomposition over candidate directions, per part.
+    t = Clock::now();
+    const DecompositionType type = parameters_.decomposition_type == "trapezoidal"
+                                       ? DecompositionType::kTrapezoidal
+                                       : DecompositionType::kBoustrophedon;
+    std::vector<Decomposition> decompositions;
+    std::size_t directions_tried = 0;
+    std::size_t cell_count = 0;
+    for (const PolygonWithHoles& part : parts) {
+      decompositions.push_back(computeBestDecomposition(part, type));
+      directions_tried = std::max(directions_tried, decompositions.back().directions_tried);
+      cell_count += decompositions.back().cells.size();
+      for (const Cell& cell : decompositions.back().cells) plan.cells.push_back(cell.polygon);
+    }
+    {
+      std::ostringstream summary;
+      summary << cell_count << " " << parameters_.decomposition_type << " cells, best of "
+              << directions_tried << " directions";
+      stage("decompose", t, summary.str());
+    }
 
-  // Size limits, before anything of their size is built.
-  checkCellLimit(decompositions, parameters_);
-  if (const std::size_t dropped = fitDirectionsToGtspLimit(decompositions); dropped > 0) {
-    plan.warnings.push_back(
-        "kept only the best lane directions of the cells: " + std::to_string(dropped) +
-        " of their other directions would have taken the generalized TSP over " +
-        std::to_string(kMaxGtspNodes) + " nodes");
-  }
-  checkLaneLimit(decompositions, parameters_);
+    // Size limits, before anything of their size is built: the user's to change.
+    failing_stage = nullptr;
+    checkCellLimit(decompositions, parameters_);
+    if (const std::size_t dropped = fitDirectionsToGtspLimit(decompositions); dropped > 0) {
+      plan.warnings.push_back(
+          "kept only the best lane directions of the cells: " + std::to_string(dropped) +
+          " of their other directions would have taken the generalized TSP over " +
+          std::to_string(kMaxGtspNodes) + " nodes");
+    }
+    checkLaneLimit(decompositions, parameters_);
 
-  // Sweep patterns per cell and direction.
-  t = Clock::now();
-  const SegmentCost segment_cost(parameters_);
-  const VisibilityGraph graph(area, segment_cost);
-  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
-  const TransitionPath transition = [&](const Point2& a, const Point2& b) {
-    return graph.shortestPath(a, b);
-  };
-  std::vector<SweepPattern> patterns;
-  std::vector<std::vector<int>> clusters = {{0}, {1}};  // start, goal
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    const SweepPatternGenerator generator(
-        sensor, SweepPatternGenerator::laneEndInset(sensor, parameters_.wall_distance), parts[k]);
-    for (const Cell& cell : decompositions[k].cells) {
-      std::vector<int> cluster;
-      for (double direction : cell.sweep_directions) {
-        for (SweepPattern& pattern : generator.patterns(cell.polygon, direction, transition)) {
-          cluster.push_back(static_cast<int>(patterns.size()) + 2);
-          patterns.push_back(std::move(pattern));
+    // Sweep patterns per cell and direction.
+    t = Clock::now();
+    failing_stage = "sweeps";
+    const SegmentCost segment_cost(parameters_);
+    const VisibilityGraph graph(area, segment_cost);
+    const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
+    const TransitionPath transition = [&](const Point2& a, const Point2& b) {
+      return graph.shortestPath(a, b);
+    };
+    std::vector<SweepPattern> patterns;
+    std::vector<std::vector<int>> clusters = {{0}, {1}};  // start, goal
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      const SweepPatternGenerator generator(
+          sensor, SweepPatternGenerator::laneEndInset(sensor, parameters_.wall_distance), parts[k]);
+      for (const Cell& cell : decompositions[k].cells) {
+        std::vector<int> cluster;
+        for (double direction : cell.sweep_directions) {
+          for (SweepPattern& pattern : generator.patterns(cell.polygon, direction, transition)) {
+            cluster.push_back(static_cast<int>(patterns.size()) + 2);
+            patterns.push_back(std::move(pattern));
+          }
         }
+        clusters.push_back(std::move(cluster));
       }
-      clusters.push_back(std::move(cluster));
     }
-  }
-  {
-    std::ostringstream summary;
-    summary << patterns.size() << " sweep patterns";
-    stage("sweeps", t, summary.str());
-  }
-
-  // Transition costs between every pattern end and every pattern start.
-  t = Clock::now();
-  std::vector<Point2> sources = {start_inside};
-  std::vector<Point2> targets = {goal_inside};
-  for (const SweepPattern& pattern : patterns) {
-    sources.push_back(pattern.end());
-    targets.push_back(pattern.start());
-  }
-  const std::vector<double> transition_costs = graph.costMatrix(sources, targets);
-  const std::size_t n = patterns.size() + 2;
-  GtspInstance instance;
-  instance.node_count = static_cast<int>(n);
-  instance.clusters = clusters;
-  instance.start_cluster = 0;
-  instance.goal_cluster = 1;
-  instance.reverse_nodes = reverseNodes(patterns, clusters);
-  instance.costs.assign(n * n, 0.0);
-  std::vector<double> pattern_costs;
-  for (const SweepPattern& pattern : patterns)
-    pattern_costs.push_back(segment_cost.pathCost(pattern.path));
-  // Node 0 (start) is source row 0; node 1 (goal) is target column 0; pattern k is
-  // node k + 2, source row k + 1 and target column k + 1.
-  auto sourceRow = [](std::size_t node) { return node == 0 ? 0 : node - 1; };
-  for (std::size_t from = 0; from < n; ++from) {
-    if (from == 1) continue;  // nothing leaves the goal
-    for (std::size_t to = 1; to < n; ++to) {
-      if (from == to) continue;
-      const std::size_t column = to == 1 ? 0 : to - 1;
-      const double entering = to == 1 ? 0.0 : pattern_costs[to - 2];
-      instance.costs[from * n + to] =
-          transition_costs[sourceRow(from) * targets.size() + column] + entering;
+    {
+      std::ostringstream summary;
+      summary << patterns.size() << " sweep patterns";
+      stage("sweeps", t, summary.str());
     }
-  }
-  {
-    std::ostringstream summary;
-    summary << sources.size() * targets.size() << " transition costs";
-    stage("transitions", t, summary.str());
-  }
 
-  // Generalized TSP over the patterns, from start to goal.
-  t = Clock::now();
-  GtspOptions options;
-  options.exact_cluster_limit = kExactClusterLimit;
-  options.max_population = kGtspMaxPopulation;
-  options.focused_search = true;
-  const GtspSolution solution = solveGtsp(instance, options);
-  {
-    std::ostringstream summary;
-    summary << "visiting order of " << clusters.size() - 2 << " cells, cost " << solution.cost;
-    stage("solve", t, summary.str());
-  }
-
-  // The waypoint path.
-  t = Clock::now();
-  std::vector<Point2> path = {start};
-  std::vector<bool> keep = {true};
-  auto append = [&](const std::vector<Point2>& points, bool keep_first) {
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      path.push_back(points[i]);
-      keep.push_back(i == 0 && keep_first);
+    // Transition costs between every pattern end and every pattern start.
+    t = Clock::now();
+    failing_stage = "transitions";
+    std::vector<Point2> sources = {start_inside};
+    std::vector<Point2> targets = {goal_inside};
+    for (const SweepPattern& pattern : patterns) {
+      sources.push_back(pattern.end());
+      targets.push_back(pattern.start());
     }
-  };
-  append({start_inside}, true);
-  Point2 position = start_inside;
-  for (int node : solution.nodes) {
-    if (node < 2) continue;
-    const SweepPattern& pattern = patterns[static_cast<std::size_t>(node - 2)];
-    append(graph.shortestPath(position, pattern.start()), false);
-    append(pattern.path, false);
-    position = pattern.end();
-  }
-  append(graph.shortestPath(position, goal_inside), false);
-  keep.back() = true;
-  append({goal}, true);
-  // Jogs shorter than a turning radius would stay sharp turns in smoothing; a shift within
-  // half the lateral overlap keeps what the neighbouring lanes rely on seen.
-  const JogRemoval jog_removal(graph, parameters_.turning_radius,
-                               0.5 * (sensor.width() - sensor.sweepDistance()));
-  std::vector<bool> kept;
-  const std::vector<Point2> without_jogs = jog_removal.apply(path, keep, &kept);
-  const std::vector<Point2> waypoints =
-      simplifiedPath(without_jogs, kept,
-                     std::max(kDuplicateWaypointTolerance, kRelativeDuplicateTolerance * scale));
-  plan.first_inside = (waypoints.size() > 1 && (start - start_inside).norm() > tolerance) ? 1 : 0;
-  plan.last_inside = waypoints.size() - 1;
-  if (waypoints.size() > 1 && (goal - goal_inside).norm() > tolerance) plan.last_inside -= 1;
-  for (std::size_t i = 0; i < waypoints.size(); ++i) {
-    const double yaw = i + 1 < waypoints.size() ? headingOf(waypoints[i], waypoints[i + 1])
-                       : i > 0                  ? headingOf(waypoints[i - 1], waypoints[i])
-                                                : 0.0;
-    plan.waypoints.push_back({waypoints[i].x(), waypoints[i].y(), yaw});
-  }
-  plan.path_length_m = pathLength(waypoints);
-  PlannerParameters time_parameters = parameters_;
-  time_parameters.cost_function = "time";
-  plan.time_cost_s = SegmentCost(time_parameters).pathCost(waypoints);
-  {
-    std::ostringstream summary;
-    summary << plan.waypoints.size() << " waypoints, " << plan.path_length_m << " m, time cost "
-            << plan.time_cost_s << " s";
-    stage("path", t, summary.str());
+    const std::vector<double> transition_costs = graph.costMatrix(sources, targets);
+    const std::size_t n = patterns.size() + 2;
+    GtspInstance instance;
+    instance.node_count = static_cast<int>(n);
+    instance.clusters = clusters;
+    instance.start_cluster = 0;
+    instance.goal_cluster = 1;
+    instance.reverse_nodes = reverseNodes(patterns, clusters);
+    instance.costs.assign(n * n, 0.0);
+    std::vector<double> pattern_costs;
+    for (const SweepPattern& pattern : patterns)
+      pattern_costs.push_back(segment_cost.pathCost(pattern.path));
+    // Node 0 (start) is source row 0; node 1 (goal) is target column 0; pattern k is
+    // node k + 2, source row k + 1 and target column k + 1.
+    auto sourceRow = [](std::size_t node) { return node == 0 ? 0 : node - 1; };
+    for (std::size_t from = 0; from < n; ++from) {
+      if (from == 1) continue;  // nothing leaves the goal
+      for (std::size_t to = 1; to < n; ++to) {
+        if (from == to) continue;
+        const std::size_t column = to == 1 ? 0 : to - 1;
+        const double entering = to == 1 ? 0.0 : pattern_costs[to - 2];
+        instance.costs[from * n + to] =
+            transition_costs[sourceRow(from) * targets.size() + column] + entering;
+      }
+    }
+    {
+      std::ostringstream summary;
+      summary << sources.size() * targets.size() << " transition costs";
+      stage("transitions", t, summary.str());
+    }
+
+    // Generalized TSP over the patterns, from start to goal.
+    t = Clock::now();
+    failing_stage = "solve";
+    GtspOptions options;
+    options.exact_cluster_limit = kExactClusterLimit;
+    options.max_population = kGtspMaxPopulation;
+    options.focused_search = true;
+    const GtspSolution solution = solveGtsp(instance, options);
+    {
+      std::ostringstream summary;
+      summary << "visiting order of " << clusters.size() - 2 << " cells, cost " << solution.cost;
+      stage("solve", t, summary.str());
+    }
+
+    // The waypoint path.
+    t = Clock::now();
+    failing_stage = "path";
+    std::vector<Point2> path = {start};
+    std::vector<bool> keep = {true};
+    auto append = [&](const std::vector<Point2>& points, bool keep_first) {
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        path.push_back(points[i]);
+        keep.push_back(i == 0 && keep_first);
+      }
+    };
+    append({start_inside}, true);
+    Point2 position = start_inside;
+    for (int node : solution.nodes) {
+      if (node < 2) continue;
+      const SweepPattern& pattern = patterns[static_cast<std::size_t>(node - 2)];
+      append(graph.shortestPath(position, pattern.start()), false);
+      append(pattern.path, false);
+      position = pattern.end();
+    }
+    append(graph.shortestPath(position, goal_inside), false);
+    keep.back() = true;
+    append({goal}, true);
+    // Jogs shorter than a turning radius would stay sharp turns in smoothing; a shift within
+    // half the lateral overlap keeps what the neighbouring lanes rely on seen.
+    const JogRemoval jog_removal(graph, parameters_.turning_radius,
+                                 0.5 * (sensor.width() - sensor.sweepDistance()));
+    std::vector<bool> kept;
+    const std::vector<Point2> without_jogs = jog_removal.apply(path, keep, &kept);
+    const std::vector<Point2> waypoints =
+        simplifiedPath(without_jogs, kept,
+                       std::max(kDuplicateWaypointTolerance, kRelativeDuplicateTolerance * scale));
+    plan.first_inside = (waypoints.size() > 1 && (start - start_inside).norm() > tolerance) ? 1 : 0;
+    plan.last_inside = waypoints.size() - 1;
+    if (waypoints.size() > 1 && (goal - goal_inside).norm() > tolerance) plan.last_inside -= 1;
+    for (std::size_t i = 0; i < waypoints.size(); ++i) {
+      const double yaw = i + 1 < waypoints.size() ? headingOf(waypoints[i], waypoints[i + 1])
+                         : i > 0                  ? headingOf(waypoints[i - 1], waypoints[i])
+                                                  : 0.0;
+      plan.waypoints.push_back({waypoints[i].x(), waypoints[i].y(), yaw});
+    }
+    plan.path_length_m = pathLength(waypoints);
+    PlannerParameters time_parameters = parameters_;
+    time_parameters.cost_function = "time";
+    plan.time_cost_s = SegmentCost(time_parameters).pathCost(waypoints);
+    {
+      std::ostringstream summary;
+      summary << plan.waypoints.size() << " waypoints, " << plan.path_length_m << " m, time cost "
+              << plan.time_cost_s << " s";
+      stage("path", t, summary.str());
+    }
+  } catch (const InvalidInputError& error) {
+    if (failing_stage == nullptr) throw;
+    throw InternalError(failing_stage, error.what());
   }
   plan.planning_time_s = secondsSince(planning_start);
   return plan;

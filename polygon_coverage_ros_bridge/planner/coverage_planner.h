@@ -8,6 +8,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "polygon_coverage_ros_bridge/planner/planning_limits.h"
+#include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 
 namespace kinematic_coverage::core {
 
@@ -30,15 +31,21 @@ struct CoveragePlan {
   /// area; legs before and after it join a start or goal outside that area.
   std::size_t first_inside = 0;
   std::size_t last_inside = 0;
-  /// The offset free area that was planned (docs/REFERENCE.md, Geometry and input rules).
-  PolygonWithHoles offset_free_area;
+  /// The offset free area (docs/REFERENCE.md, Geometry and input rules), every part of
+  /// it, the largest first: the reachable area is grown from all of them, planned or not.
+  std::vector<PolygonWithHoles> offset_parts;
+  /// Where transitions run: the planned parts joined by corridors through the gaps between
+  /// them. Every leg from first_inside to last_inside lies in it.
+  PolygonWithHoles route_area;
+  /// The gaps (narrower than two wall distances) that transits pass between parts.
+  std::vector<OffsetGap> gaps;
   /// The cells of the chosen decomposition, counter-clockwise.
   std::vector<Ring> cells;
   double path_length_m = 0.0;
   /// Time cost of the waypoint path: rest-to-rest trapezoidal profile per segment.
   double time_cost_s = 0.0;
   double planning_time_s = 0.0;
-  /// One line per warning (dropped parts of the offset area, ...).
+  /// One line per warning (gaps between parts of the offset area, dropped parts, ...).
   std::vector<std::string> warnings;
   /// The stages in order, with their durations.
   std::vector<PlanningStage> stages;

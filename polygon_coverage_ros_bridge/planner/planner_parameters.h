@@ -14,14 +14,17 @@ struct PlannerParameters {
   double a_max = 0.2;                                ///< m/s^2
   double yaw_rate_max = 0.5;                         ///< rad/s
   double wall_distance = 1.0;                        ///< m kept from hull and holes
-  std::string sensor_model = "frustum";              ///< or "line"
-  double lateral_fov = 2.27;                         ///< rad
-  double onward_fov = 0.52;                          ///< rad
-  double lateral_footprint = 2.0;                    ///< m, line sensor only
-  double sensor_distance = 3.0;                      ///< m between sensor and bottom
-  double lateral_overlap = 0.4;                      ///< fraction in [0, 1)
-  bool smoothing = true;                             ///< false: segments and rotations
-  double turning_radius = 1.0;                       ///< m
+  /// Where the wall offset splits the free area: "all" parts planned and joined through
+  /// their gaps, or only the "largest".
+  std::string offset_parts = "all";
+  std::string sensor_model = "frustum";  ///< or "line"
+  double lateral_fov = 2.27;             ///< rad
+  double onward_fov = 0.52;              ///< rad
+  double lateral_footprint = 2.0;        ///< m, line sensor only
+  double sensor_distance = 3.0;          ///< m between sensor and bottom
+  double lateral_overlap = 0.4;          ///< fraction in [0, 1)
+  bool smoothing = true;                 ///< false: segments and rotations
+  double turning_radius = 1.0;           ///< m
   /// "global": every corner's smoothing chosen jointly, minimising traversal time;
   /// "local": the thesis's Algorithm 1, corner by corner.
   std::string smoothing_strategy = "global";

@@ -65,11 +65,20 @@ visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_a
     markers.markers.push_back(ringMarker(hole, "polygon", id++, header, 0.4f, 0.4f, 0.4f, 0.1));
   }
   id = 0;
-  markers.markers.push_back(ringMarker(plan.offset_free_area.hull, "offset_free_area", id++, header,
-                                       0.6f, 0.6f, 0.6f, 0.04));
-  for (const core::Ring& hole : plan.offset_free_area.holes) {
+  for (const core::PolygonWithHoles& part : plan.offset_parts) {
     markers.markers.push_back(
-        ringMarker(hole, "offset_free_area", id++, header, 0.6f, 0.6f, 0.6f, 0.04));
+        ringMarker(part.hull, "offset_free_area", id++, header, 0.6f, 0.6f, 0.6f, 0.04));
+    for (const core::Ring& hole : part.holes) {
+      markers.markers.push_back(
+          ringMarker(hole, "offset_free_area", id++, header, 0.6f, 0.6f, 0.6f, 0.04));
+    }
+  }
+  id = 0;
+  for (const core::OffsetGap& gap : plan.gaps) {
+    visualization_msgs::Marker line = baseMarker(
+        "gaps", id++, visualization_msgs::Marker::LINE_STRIP, header, 1.0f, 0.2f, 0.6f, 0.1);
+    for (const core::Point2& p : gap.path) line.points.push_back(point(p));
+    markers.markers.push_back(line);
   }
   id = 0;
   for (const core::Ring& cell : plan.cells) {

@@ -4,4 +4,5 @@ kc_add_stage_library(kc_route
     polygon_coverage_ros_bridge/route/boundary_grid.cpp
     polygon_coverage_ros_bridge/route/visibility_graph.cpp
     polygon_coverage_ros_bridge/route/jog_removal.cpp
+    polygon_coverage_ros_bridge/route/offset_part_joiner.cpp
   DEPENDS kc_geometry)

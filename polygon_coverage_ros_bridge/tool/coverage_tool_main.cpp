@@ -1,12 +1,14 @@
 // coverage_tool: the ROS-free command line of the package (docs/REFERENCE.md, coverage_tool).
 // Exit status: 0 success; 2 invalid input or an impossible request, with one line on
-// stderr naming it; 1 an internal error (a bug). Every exception is caught here.
+// stderr naming it; 1 an internal error (a bug on valid input), with one line naming the
+// stage. Every exception is caught here.
 
 #include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_command.h"
 #include "polygon_coverage_ros_bridge/mission/evaluate_command.h"
@@ -88,6 +90,12 @@ int main(int argc, char** argv) {
   } catch (const InvalidInputError& error) {
     std::cerr << "error: " << oneLine(error.what()) << std::endl;
     return kExitInvalidInput;
+  } catch (const InternalError& error) {
+    std::cerr << "internal error: " << oneLine(error.what())
+              << " (a bug of the package, not of the input: please report it with the mission "
+                 "file)"
+              << std::endl;
+    return kExitInternalError;
   } catch (const std::exception& error) {
     std::cerr << "internal error: " << oneLine(error.what()) << std::endl;
     return kExitInternalError;

@@ -45,7 +45,7 @@ TEST(CoverageEvaluator, LawnmowerWithOverlapCoversTheReachableArea) {
   const PolygonWithHoles free_area{rectangle(0, 0, 30, 30), {}};
   const PolygonWithHoles offset_area{rectangle(1, 1, 29, 29), {}};
   const FrustumSensor sensor(4.0, 1.6, 0.4);
-  const CoverageEvaluator evaluator(free_area, offset_area, sensor);
+  const CoverageEvaluator evaluator(free_area, {offset_area}, sensor);
   const std::vector<Pose2> waypoints = lawnmower(1, 29, 1, 29, sensor.sweepDistance());
   const SeenArea seen = evaluator.seeWaypointPath(waypoints);
   const CoverageReport report = evaluator.report(seen);
@@ -59,8 +59,9 @@ TEST(CoverageEvaluator, LawnmowerWithOverlapCoversTheReachableArea) {
   EXPECT_LT(report.coverage_percent, 100.0);
   EXPECT_GT(report.coverage_percent, 98.5);
   EXPECT_DOUBLE_EQ(report.coverage_loss_percent, 100.0 - report.coverage_percent);
-  EXPECT_DOUBLE_EQ(waypointPathReachableCoveragePercent(free_area, offset_area, sensor, waypoints),
-                   report.reachable_coverage_percent);
+  EXPECT_DOUBLE_EQ(
+      waypointPathReachableCoveragePercent(free_area, {offset_area}, sensor, waypoints),
+      report.reachable_coverage_percent);
 }
 
 TEST(CoverageEvaluator, LineSensorLawnmowerCoversTheOffsetArea) {
@@ -68,11 +69,11 @@ TEST(CoverageEvaluator, LineSensorLawnmowerCoversTheOffsetArea) {
   const PolygonWithHoles offset_area{rectangle(1, 1, 29, 29), {}};
   const FrustumSensor sensor(4.0, 0.0, 0.0);
   const double coverage = waypointPathReachableCoveragePercent(
-      free_area, offset_area, sensor, lawnmower(1, 29, 1, 29, sensor.sweepDistance()));
+      free_area, {offset_area}, sensor, lawnmower(1, 29, 1, 29, sensor.sweepDistance()));
   EXPECT_GE(coverage, 99.9);
   // Lanes twice as far apart leave every other strip unseen.
   const double sparse = waypointPathReachableCoveragePercent(
-      free_area, offset_area, sensor, lawnmower(1, 29, 1, 29, 2.0 * sensor.sweepDistance()));
+      free_area, {offset_area}, sensor, lawnmower(1, 29, 1, 29, 2.0 * sensor.sweepDistance()));
   EXPECT_LT(sparse, 80.0);
 }
 
@@ -80,7 +81,7 @@ TEST(CoverageEvaluator, SquareWithHoleCountsOnlyTheFreeArea) {
   PolygonWithHoles free_area{rectangle(0, 0, 20, 20), {rectangle(8, 8, 12, 12, true)}};
   PolygonWithHoles offset_area{rectangle(1, 1, 19, 19), {rectangle(7, 7, 13, 13, true)}};
   const FrustumSensor sensor(2.0, 1.0, 0.0);
-  const CoverageEvaluator evaluator(free_area, offset_area, sensor);
+  const CoverageEvaluator evaluator(free_area, {offset_area}, sensor);
   EXPECT_NEAR(evaluator.raster().area(evaluator.freeArea()), 384.0, 0.384);
   // Sweeping just the hole's square sees nothing of the free area but its rim.
   const CoverageReport hole_only =
@@ -96,7 +97,7 @@ TEST(CoverageEvaluator, DuplicateWaypointsAndZeroLengthLegsChangeNothing) {
   const PolygonWithHoles free_area{rectangle(0, 0, 30, 30), {}};
   const PolygonWithHoles offset_area{rectangle(1, 1, 29, 29), {}};
   const FrustumSensor sensor(4.0, 1.6, 0.4);
-  const CoverageEvaluator evaluator(free_area, offset_area, sensor);
+  const CoverageEvaluator evaluator(free_area, {offset_area}, sensor);
   const std::vector<Pose2> clean = lawnmower(1, 29, 1, 29, sensor.sweepDistance());
   std::vector<Pose2> repeated;
   for (const Pose2& waypoint : clean) {
@@ -136,16 +137,16 @@ TEST(CoverageEvaluator, RejectsInvalidInput) {
   const PolygonWithHoles free_area{rectangle(0, 0, 30, 30), {}};
   const PolygonWithHoles offset_area{rectangle(1, 1, 29, 29), {}};
   const FrustumSensor sensor(4.0, 1.6, 0.4);
-  EXPECT_THROW(CoverageEvaluator(free_area, offset_area, FrustumSensor(0.0, 1.0, 0.0)),
+  EXPECT_THROW(CoverageEvaluator(free_area, {offset_area}, FrustumSensor(0.0, 1.0, 0.0)),
                InvalidInputError);
-  EXPECT_THROW(CoverageEvaluator(free_area, offset_area, FrustumSensor(1.0, -1.0, 0.0)),
+  EXPECT_THROW(CoverageEvaluator(free_area, {offset_area}, FrustumSensor(1.0, -1.0, 0.0)),
                InvalidInputError);
-  EXPECT_THROW(CoverageEvaluator(free_area, {rectangle(5, 5, 5.001, 5.001), {}}, sensor),
+  EXPECT_THROW(CoverageEvaluator(free_area, {{rectangle(5, 5, 5.001, 5.001), {}}}, sensor),
                InvalidInputError);
-  EXPECT_THROW(CoverageEvaluator({rectangle(0, 0, 0, 30), {}}, offset_area, sensor),
+  EXPECT_THROW(CoverageEvaluator({rectangle(0, 0, 0, 30), {}}, {offset_area}, sensor),
                InvalidInputError);
-  const CoverageEvaluator evaluator(free_area, offset_area, sensor);
-  const CoverageEvaluator other(free_area, offset_area, sensor, {0.5, 1e-3, 4'000'000});
+  const CoverageEvaluator evaluator(free_area, {offset_area}, sensor);
+  const CoverageEvaluator other(free_area, {offset_area}, sensor, {0.5, 1e-3, 4'000'000});
   EXPECT_THROW(evaluator.report(other.seeTrajectory({{5, 5, 0}})), InvalidInputError);
 }
 
@@ -180,7 +181,7 @@ TEST(CoverageEvaluator, RandomMapsSweptOverTheirBoxAreFullyCovered) {
     waypoints.push_back(waypoints.back());
     const auto start = std::chrono::steady_clock::now();
     const double coverage =
-        waypointPathReachableCoveragePercent(map, offset.area, sensor, waypoints);
+        waypointPathReachableCoveragePercent(map, offset.parts, sensor, waypoints);
     const double elapsed_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     slowest_s = std::max(slowest_s, elapsed_s);
@@ -210,7 +211,7 @@ TEST(CoverageEvaluator, LargeMapIsCovered) {
   const std::vector<Pose2> waypoints = lawnmower(1, 199, 1, 199, sensor.sweepDistance());
   for (const std::size_t max_cells : {std::size_t{4'000'000}, std::size_t{1'000'000}}) {
     const auto start = std::chrono::steady_clock::now();
-    const CoverageEvaluator evaluator(free_area, offset_area, sensor, {0.0, 1e-3, max_cells});
+    const CoverageEvaluator evaluator(free_area, {offset_area}, sensor, {0.0, 1e-3, max_cells});
     const auto prepared = std::chrono::steady_clock::now();
     const CoverageReport report = evaluator.report(evaluator.seeWaypointPath(waypoints));
     const auto end = std::chrono::steady_clock::now();

@@ -282,11 +282,12 @@ ExactCoverageOracle::ExactCoverageOracle(const PolygonWithHoles& free_area, doub
 }
 
 ExactCoverageOracle::ExactCoverageOracle(const PolygonWithHoles& free_area,
-                                         const PolygonWithHoles& offset_free_area,
+                                         const std::vector<PolygonWithHoles>& offset_parts,
                                          const OracleFootprint& footprint, int disk_sides)
     : impl_(std::make_unique<Impl>(free_area, footprint, disk_sides)) {
   std::vector<ExactPolygon> rings;
-  ExactPolygonSet offset = exactSet(offset_free_area, rings);
+  ExactPolygonSet offset;
+  for (const PolygonWithHoles& part : offset_parts) offset.join(exactSet(part, rings));
   offset.intersection(impl_->free_area);
   impl_->setOffsetFreeArea(std::move(offset));
   impl_->grow();
@@ -303,9 +304,10 @@ const ReachableAreaErrorBound& ExactCoverageOracle::reachableErrorBound() const 
 }
 
 OffsetFreeAreaDifference ExactCoverageOracle::compareOffsetFreeArea(
-    const PolygonWithHoles& other) const {
+    const std::vector<PolygonWithHoles>& other) const {
   std::vector<ExactPolygon> rings;
-  const ExactPolygonSet given = exactSet(other, rings);
+  ExactPolygonSet given;
+  for (const PolygonWithHoles& part : other) given.join(exactSet(part, rings));
   ExactPolygonSet missing = impl_->offset_free_area;
   missing.difference(given);
   ExactPolygonSet extra = given;

@@ -65,7 +65,8 @@ class ExactCoverageOracle {
   /// As above with the offset free area E given (the planner's, say; clipped to F) rather
   /// than eroded from F: R is then E grown by the oracle's own dilation, for checking how a
   /// reachable area defined by that polygon is measured. The erosion bound is then 0.
-  ExactCoverageOracle(const PolygonWithHoles& free_area, const PolygonWithHoles& offset_free_area,
+  ExactCoverageOracle(const PolygonWithHoles& free_area,
+                      const std::vector<PolygonWithHoles>& offset_parts,
                       const OracleFootprint& footprint, int disk_sides = 256);
   ~ExactCoverageOracle();
   ExactCoverageOracle(const ExactCoverageOracle&) = delete;
@@ -78,8 +79,9 @@ class ExactCoverageOracle {
   /// splits it).
   int offsetFreeAreaParts() const;
   const ReachableAreaErrorBound& reachableErrorBound() const;
-  /// The exact areas by which `other` (hull minus holes) and the oracle's E differ.
-  OffsetFreeAreaDifference compareOffsetFreeArea(const PolygonWithHoles& other) const;
+  /// The exact areas by which `other` (disjoint parts, each hull minus holes) and the
+  /// oracle's E differ.
+  OffsetFreeAreaDifference compareOffsetFreeArea(const std::vector<PolygonWithHoles>& other) const;
 
   /// The seen area of `poses` (the union of their footprints and of the convex hulls of
   /// consecutive footprints at different positions), intersected exactly with F and R.

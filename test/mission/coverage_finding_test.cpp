@@ -38,13 +38,13 @@ MissionTrajectory planTrajectory(const std::string& mission_name, bool smoothing
 }
 
 TrajectoryCoverage coverageOf(const MissionTrajectory& run) {
-  return measureTrajectoryCoverage(run.planned.free_area, run.planned.plan.offset_free_area,
+  return measureTrajectoryCoverage(run.planned.free_area, run.planned.plan.offset_parts,
                                    run.mission.parameters, run.poses);
 }
 
 /// Coverage of the same poses on a 1 cm raster, for the accuracy of the reporting one.
 double fineCoveragePercent(const MissionTrajectory& run) {
-  const CoverageEvaluator evaluator(run.planned.free_area, run.planned.plan.offset_free_area,
+  const CoverageEvaluator evaluator(run.planned.free_area, run.planned.plan.offset_parts,
                                     FrustumSensor::fromParameters(run.mission.parameters),
                                     {0.01, 1e-3, 20'000'000});
   return evaluator.report(evaluator.seeTrajectory(run.poses)).coverage_percent;

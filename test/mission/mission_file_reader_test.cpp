@@ -72,6 +72,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"a_max", "0.7"},
       {"yaw_rate_max", "0.9"},
       {"wall_distance", "0"},
+      {"offset_parts", "largest"},
       {"sensor_model", "line"},
       {"lateral_fov", "1.1"},
       {"onward_fov", "0.3"},
@@ -109,6 +110,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.a_max, 0.7);
   EXPECT_EQ(p.yaw_rate_max, 0.9);
   EXPECT_EQ(p.wall_distance, 0.0);
+  EXPECT_EQ(p.offset_parts, "largest");
   EXPECT_EQ(p.sensor_model, "line");
   EXPECT_EQ(p.lateral_fov, 1.1);
   EXPECT_EQ(p.onward_fov, 0.3);

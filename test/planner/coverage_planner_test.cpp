@@ -7,9 +7,11 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "test/planner/plan_properties.h"
 #include "test/support/random_polygons.h"
+#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -27,6 +29,62 @@ TEST(CoveragePlanner, LakeMissionPlanIsValid) {
   EXPECT_EQ(plan.first_inside, 1u);                        // (0.5, 5) is in the 1 m wall band
   EXPECT_EQ(plan.last_inside, plan.waypoints.size() - 1);  // (29, 29): the offset corner
   ASSERT_FALSE(plan.stages.empty());
+}
+
+/// Three rooms in a row, 20, 14 and 10 m, joined by straits 1.5 m and 1.2 m wide: with a
+/// 1 m wall distance the offset free area falls into three parts.
+const PolygonWithHoles kThreeRooms = {
+    {{0, 0},    {20, 0},  {20, 9.25},  {22, 9.25},  {22, 3},  {36, 3},    {36, 9.4},
+     {38, 9.4}, {38, 5},  {48, 5},     {48, 15},    {38, 15}, {38, 10.6}, {36, 10.6},
+     {36, 17},  {22, 17}, {22, 10.75}, {20, 10.75}, {20, 20}, {0, 20}},
+    {}};
+
+TEST(CoveragePlanner, EveryPartOfASplitOffsetAreaIsPlannedAndSeen) {
+  PlannerParameters parameters;
+  parameters.sensor_distance = 1.0;  // W = 4.27 m, L = 0.53 m
+  // Start in the smallest room, goal in the largest: the robot passes both straits.
+  const Point2 start(40, 6);
+  const Point2 goal(18, 18);
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(kThreeRooms, start, goal);
+  expectValidPlan(kThreeRooms, plan, parameters, start, goal);
+  ASSERT_EQ(plan.offset_parts.size(), 3u);
+  EXPECT_EQ(plan.gaps.size(), 2u);
+  EXPECT_EQ(plan.warnings.size(), 2u);  // one per gap, with its place and clearance
+  for (const std::string& warning : plan.warnings) {
+    EXPECT_NE(warning.find("m clearance (wall_distance 1 m)"), std::string::npos) << warning;
+  }
+  for (const PolygonWithHoles& part : plan.offset_parts) {
+    std::size_t inside = 0;
+    for (const Pose2& waypoint : plan.waypoints)
+      inside += contains(part, waypoint.position(), 1e-6);
+    EXPECT_GE(inside, 4u) << "part near " << part.hull.front().transpose();
+  }
+  for (const bool smoothing : {false, true}) {
+    parameters.smoothing = smoothing;
+    const GeneratedTrajectory trajectory =
+        TrajectoryGenerator(parameters).generate(plan.waypoints, kThreeRooms);
+    std::vector<Pose2> poses;
+    for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
+    const TrajectoryCoverage coverage =
+        measureTrajectoryCoverage(kThreeRooms, plan.offset_parts, parameters, poses);
+    EXPECT_GE(coverage.report.reachable_coverage_percent, 99.0) << "smoothing " << smoothing;
+    EXPECT_GT(trajectory.min_obstacle_clearance_m, 0.5) << "smoothing " << smoothing;
+  }
+}
+
+TEST(CoveragePlanner, OffsetPartsLargestPlansOnlyTheLargestPartAndNamesTheOthers) {
+  PlannerParameters parameters;
+  parameters.sensor_distance = 1.0;
+  parameters.offset_parts = "largest";
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(kThreeRooms, {2, 2}, {18, 18});
+  ASSERT_EQ(plan.offset_parts.size(), 3u);
+  EXPECT_TRUE(plan.gaps.empty());
+  EXPECT_NEAR(area(plan.route_area), area(plan.offset_parts.front()), 1e-9);
+  ASSERT_EQ(plan.warnings.size(), 2u);
+  for (const std::string& warning : plan.warnings) {
+    EXPECT_NE(warning.find("is not planned (offset_parts: largest)"), std::string::npos) << warning;
+  }
+  for (const Pose2& waypoint : plan.waypoints) EXPECT_LE(waypoint.x, 20.0);
 }
 
 TEST(CoveragePlanner, StartOutsideTheHullIsJoinedByAStraightLeg) {

@@ -20,10 +20,11 @@ std::size_t laneCount(const Mission& mission, const PlannedMission& planned) {
   const SweepPatternGenerator generator(
       sensor, SweepPatternGenerator::laneEndInset(sensor, parameters.wall_distance));
   std::size_t lanes = 0;
-  for (const Cell& cell :
-       computeBestDecomposition(planned.plan.offset_free_area, DecompositionType::kBoustrophedon)
-           .cells) {
-    lanes += generator.lanes(cell.polygon, cell.sweep_directions.front()).size();
+  for (const PolygonWithHoles& part : planned.plan.offset_parts) {
+    for (const Cell& cell :
+         computeBestDecomposition(part, DecompositionType::kBoustrophedon).cells) {
+      lanes += generator.lanes(cell.polygon, cell.sweep_directions.front()).size();
+    }
   }
   return lanes;
 }

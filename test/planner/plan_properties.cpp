@@ -25,15 +25,15 @@ void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan
         std::remainder(waypoints[i].yaw - std::atan2(b.y() - a.y(), b.x() - a.x()), 2 * M_PI), 0.0,
         1e-9);
     if (i >= plan.first_inside && i + 1 <= plan.last_inside) {
-      EXPECT_TRUE(segmentInside(plan.offset_free_area, a, b, kLegTolerance))
+      EXPECT_TRUE(segmentInside(plan.route_area, a, b, kLegTolerance))
           << "leg " << i << " from " << a.transpose() << " to " << b.transpose()
-          << " leaves the offset free area";
+          << " leaves the route area (the offset free area's parts and their gaps)";
     }
   }
   EXPECT_NEAR(plan.path_length_m, length, 1e-6 * std::max(1.0, length));
   EXPECT_GE(plan.time_cost_s, plan.path_length_m / parameters.v_max - 1e-9);
   const double covered = waypointPathReachableCoveragePercent(
-      free_area, plan.offset_free_area, FrustumSensor::fromParameters(parameters), waypoints,
+      free_area, plan.offset_parts, FrustumSensor::fromParameters(parameters), waypoints,
       RasterResolution{0.0, 1e-3, 1'000'000});
   EXPECT_GE(covered, 99.0);
 }

@@ -11,7 +11,8 @@ namespace kinematic_coverage::core {
 constexpr double kLegTolerance = 1e-6;
 
 /// The properties every plan must have: it starts at the start and ends at the goal,
-/// every leg between first_inside and last_inside lies in the offset free area, yaws are
+/// every leg between first_inside and last_inside lies in the route area (the offset free
+/// area's planned parts joined through their gaps), yaws are
 /// the headings of the legs, the metrics add up, and the legs' swept footprints cover at
 /// least 99 % of the reachable area.
 void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan,

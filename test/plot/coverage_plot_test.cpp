@@ -29,8 +29,8 @@ CoveragePlotData scene() {
   CoveragePlotData data;
   data.free_area.hull = {{0, 0}, {30, 0}, {30, 12}, {22, 20}, {0, 20}};
   data.free_area.holes = {{{8, 6}, {8, 12}, {14, 12}, {14, 6}}};
-  data.offset_free_area = PolygonWithHoles{{{1, 1}, {29, 1}, {29, 11.6}, {21.6, 19}, {1, 19}},
-                                           {{{7, 5}, {7, 13}, {15, 13}, {15, 5}}}};
+  data.offset_parts = {PolygonWithHoles{{{1, 1}, {29, 1}, {29, 11.6}, {21.6, 19}, {1, 19}},
+                                        {{{7, 5}, {7, 13}, {15, 13}, {15, 5}}}}};
   Heatmap heatmap;
   heatmap.origin = Point2(-1.0, -1.0);
   heatmap.cell_size = 1.0;

@@ -48,7 +48,7 @@ inline double combinedReachableCoverage(const PolygonWithHoles& free_area,
   const OffsetFreeArea offset = computeOffsetFreeArea(free_area, parameters.wall_distance);
   RasterResolution resolution;
   resolution.cell_size = 0.05;
-  const CoverageEvaluator evaluator(free_area, offset.area,
+  const CoverageEvaluator evaluator(free_area, offset.parts,
                                     FrustumSensor::fromParameters(parameters), resolution);
   SeenArea seen = evaluator.seeTrajectory(visited);
   std::vector<Pose2> poses;

@@ -187,7 +187,7 @@ TEST(VisibilityGraph, BoundaryPointsOfJaggedPolygonsAreReachable) {
     PolygonWithHoles area = testing::jaggedStarMap(rng, vertices, map_index % 2 == 0 ? 20.0 : 70.0);
     if (map_index % 3 == 2) {
       const double wall_distance = std::uniform_real_distribution<double>(0.3, 2.0)(rng);
-      area = computeOffsetFreeArea(area, wall_distance).area;
+      area = computeOffsetFreeArea(area, wall_distance).parts.front();
     }
     const double scale = map_index % 4 == 3 ? 0.01 : 1.0;
     for (Point2& p : area.hull) p *= scale;

@@ -31,13 +31,17 @@ RasterResolution reportingResolution() {
 }
 
 CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
-                                     const PolygonWithHoles& offset_free_area,
+                                     const std::vector<PolygonWithHoles>& offset_parts,
                                      const FrustumSensor& sensor,
                                      const RasterResolution& resolution)
     : sensor_(requireValid(sensor)),
       raster_(CoverageRaster::covering(free_area, resolution)),
       free_area_(raster_.rasterize(free_area)),
-      offset_free_area_(raster_.rasterize(offset_free_area)) {
+      offset_free_area_(free_area_.size(), 0) {
+  for (const PolygonWithHoles& part : offset_parts) {
+    const CellMask mask = raster_.rasterize(part);
+    for (std::size_t i = 0; i < mask.size(); ++i) offset_free_area_[i] |= mask[i];
+  }
   if (CoverageRaster::countCells(offset_free_area_) == 0) {
     std::ostringstream message;
     message << "coverage: the offset free area covers no cell of the " << raster_.cellSize()
@@ -71,16 +75,24 @@ CoverageReport CoverageEvaluator::report(const SeenArea& seen) const {
   result.coverage_percent = seen.coveragePercent(free_area_);
   result.coverage_loss_percent = 100.0 - result.coverage_percent;
   result.reachable_coverage_percent = seen.coveragePercent(reachable_area_);
+  std::size_t unseen_reachable = 0;
+  std::size_t unreachable = 0;
+  for (std::size_t i = 0; i < free_area_.size(); ++i) {
+    if (reachable_area_[i] != 0 && !seen.seen(i)) ++unseen_reachable;
+    if (free_area_[i] != 0 && reachable_area_[i] == 0) ++unreachable;
+  }
+  result.unseen_reachable_area_m2 = static_cast<double>(unseen_reachable) * raster_.cellArea();
+  result.unreachable_area_m2 = static_cast<double>(unreachable) * raster_.cellArea();
   return result;
 }
 
 double waypointPathReachableCoveragePercent(const PolygonWithHoles& free_area,
-                                            const PolygonWithHoles& offset_free_area,
+                                            const std::vector<PolygonWithHoles>& offset_parts,
                                             const FrustumSensor& sensor,
                                             const std::vector<Pose2>& waypoints,
                                             const RasterResolution& resolution,
                                             double rotation_step) {
-  const CoverageEvaluator evaluator(free_area, offset_free_area, sensor, resolution);
+  const CoverageEvaluator evaluator(free_area, offset_parts, sensor, resolution);
   return evaluator.seeWaypointPath(waypoints, rotation_step)
       .coveragePercent(evaluator.reachableArea());
 }

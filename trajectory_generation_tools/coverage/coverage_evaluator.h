@@ -18,6 +18,11 @@ struct CoverageReport {
   double coverage_loss_percent = 0.0;
   /// Seen share of the reachable area, percent ("covers X %" in requirements).
   double reachable_coverage_percent = 0.0;
+  /// The reachable area never seen, square metres.
+  double unseen_reachable_area_m2 = 0.0;
+  /// The free area out of every footprint's reach (farther than half a footprint length
+  /// from the offset free area), square metres.
+  double unreachable_area_m2 = 0.0;
 };
 
 /// Cell edge (metres) of the rasters on which coverage_tool measures coverage: cells of
@@ -37,11 +42,14 @@ RasterResolution reportingResolution();
 /// and the reachable area once, then measures trajectories or waypoint paths on them.
 class CoverageEvaluator {
  public:
-  /// Prepares the masks on a raster chosen for the free area at `resolution`.
+  /// Prepares the masks on a raster chosen for the free area at `resolution`;
+  /// `offset_parts` are the parts of the offset free area (one, or several where the
+  /// wall offset splits the free area), every one of them grown into the reachable area.
   /// Throws InvalidInputError for degenerate or non-finite areas, a sensor whose width is
   /// not > 0 or whose length is not >= 0, or an offset free area that covers no cell.
-  CoverageEvaluator(const PolygonWithHoles& free_area, const PolygonWithHoles& offset_free_area,
-                    const FrustumSensor& sensor, const RasterResolution& resolution = {});
+  CoverageEvaluator(const PolygonWithHoles& free_area,
+                    const std::vector<PolygonWithHoles>& offset_parts, const FrustumSensor& sensor,
+                    const RasterResolution& resolution = {});
 
   const CoverageRaster& raster() const { return raster_; }
   const CellMask& freeArea() const { return free_area_; }
@@ -72,7 +80,7 @@ class CoverageEvaluator {
 /// the planner's tests that a plan "covers X %". Robust to duplicate waypoints and
 /// zero-length legs. Throws InvalidInputError as CoverageEvaluator and waypointPathPoses do.
 double waypointPathReachableCoveragePercent(const PolygonWithHoles& free_area,
-                                            const PolygonWithHoles& offset_free_area,
+                                            const std::vector<PolygonWithHoles>& offset_parts,
                                             const FrustumSensor& sensor,
                                             const std::vector<Pose2>& waypoints,
                                             const RasterResolution& resolution = {},

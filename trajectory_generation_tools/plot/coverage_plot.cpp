@@ -120,7 +120,7 @@ void checkData(const CoveragePlotData& data) {
   if (!(max_x->x() > min_x->x()) || !(max_y->y() > min_y->y())) {
     throw InvalidInputError("coverage plot: free area hull has no extent in x or y");
   }
-  if (data.offset_free_area) checkArea(*data.offset_free_area, "offset free area");
+  for (const PolygonWithHoles& part : data.offset_parts) checkArea(part, "offset free area");
   if (data.heatmap) checkHeatmap(*data.heatmap);
   checkPoses(data.waypoints, "waypoint path");
   checkPoses(data.trajectory, "trajectory");
@@ -160,8 +160,8 @@ struct Bounds {
 Bounds drawnBounds(const CoveragePlotData& data) {
   Bounds bounds;
   for (const Point2& p : data.free_area.hull) bounds.add(p);
-  if (data.offset_free_area) {
-    for (const Point2& p : data.offset_free_area->hull) bounds.add(p);
+  for (const PolygonWithHoles& part : data.offset_parts) {
+    for (const Point2& p : part.hull) bounds.add(p);
   }
   for (const Pose2& pose : data.waypoints) bounds.add(pose.position());
   for (const Pose2& pose : data.trajectory) bounds.add(pose.position());
@@ -350,8 +350,8 @@ void drawAreas(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlot
   cairo_set_line_width(cr, 1.7 * scale.factor);
   cairo_stroke(cr);
 
-  if (data.offset_free_area) {
-    areaPath(cr, layout, *data.offset_free_area);
+  if (!data.offset_parts.empty()) {
+    for (const PolygonWithHoles& part : data.offset_parts) areaPath(cr, layout, part);
     setColour(cr, kOffsetAreaColour);
     cairo_set_line_width(cr, 1.1 * scale.factor);
     setDash(cr, 7.0 * scale.factor, 4.0 * scale.factor);
@@ -706,7 +706,7 @@ void drawLegend(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlo
     cairo_fill(cr);
     label("waypoint path");
   }
-  if (data.offset_free_area) {
+  if (!data.offset_parts.empty()) {
     setColour(cr, kOffsetAreaColour);
     cairo_move_to(cr, x, y);
     cairo_line_to(cr, x + sample_width, y);

@@ -16,8 +16,9 @@ struct CoveragePlotData {
   /// The raw free area: the hull outlined, the holes filled as obstacles. The hull needs
   /// at least 3 vertices and a non-zero extent in x and y.
   PolygonWithHoles free_area;
-  /// The offset free area (free area shrunk by wall_distance), outlined dashed.
-  std::optional<PolygonWithHoles> offset_free_area;
+  /// The parts of the offset free area (free area shrunk by wall_distance), outlined
+  /// dashed; none drawn when empty.
+  std::vector<PolygonWithHoles> offset_parts;
   /// Visit counts (the heatmap), drawn over the free area only.
   std::optional<Heatmap> heatmap;
   /// The planner's waypoint path, a thin dashed polyline with a dot at each waypoint.

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+
+namespace kinematic_coverage::core {
+
+/// A transit between two parts of the offset free area through a gap narrower than two
+/// wall distances: the robot may pass, with less clearance than the wall distance.
+struct OffsetGap {
+  std::size_t from_part = 0;  ///< index into the parts: the side joined earlier
+  std::size_t to_part = 0;    ///< the side this gap joins to it
+  std::vector<Point2> path;   ///< from a boundary point of one part to one of the other
+  Point2 narrowest_point = Point2::Zero();  ///< where the path's clearance is least
+  double clearance_m = 0.0;                 ///< least distance from the path to the hull and holes
+};
+
+/// The offset free area's parts joined into one area in which transits are routed.
+struct JoinedOffsetArea {
+  /// The parts that the transits reach, joined by thin corridors along the gaps' paths
+  /// (one polygon with holes); transitions between sweeps are routed in it.
+  PolygonWithHoles route_area;
+  /// Indices of the parts inside route_area (all of them unless a gap is sealed).
+  std::vector<std::size_t> joined_parts;
+  /// One per joined gap.
+  std::vector<OffsetGap> gaps;
+  /// Parts that no passage of at least min clearance reaches from the joined ones.
+  std::vector<std::size_t> sealed_parts;
+};
+
+/// Joins the parts of a split offset free area (docs/REFERENCE.md, Geometry and input
+/// rules, Parts) by transits that keep the largest clearance each gap allows.
+///
+/// The free area is offset at decreasing distances below the wall distance; where two
+/// groups of parts first fall into one offset component, the gap between them has about
+/// that clearance (a maximin path: its narrowest point is as wide as the gap allows).
+/// The transit is the shortest path between the groups inside that component, and a
+/// corridor a small share of the clearance wide along it joins the parts into one area.
+class OffsetPartJoiner {
+ public:
+  /// `free_area` cleaned, `wall_distance` > 0 the distance that split it.
+  OffsetPartJoiner(const PolygonWithHoles& free_area, double wall_distance);
+
+  /// Joins `parts` (computeOffsetFreeArea's parts of the same free area and distance,
+  /// largest first). The joined group is the one holding part `anchor` (the part the
+  /// robot enters first).
+  JoinedOffsetArea join(const std::vector<PolygonWithHoles>& parts, std::size_t anchor) const;
+
+ private:
+  const PolygonWithHoles& free_area_;
+  double wall_distance_;
+};
+
+}  // namespace kinematic_coverage::core

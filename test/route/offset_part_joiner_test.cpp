@@ -1,0 +1,139 @@
+#include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+constexpr double kWallDistance = 1.0;
+/// The joiner finds a gap's clearance to about 3 % of the wall distance, from below.
+constexpr double kClearanceResolution = 0.04;
+
+/// Three rooms in a row, 20, 14 and 10 m, joined by straits 1.5 m and 1.2 m wide: with a
+/// 1 m wall distance the offset free area falls into three parts.
+PolygonWithHoles threeRooms() {
+  return {{{0, 0},    {20, 0},  {20, 9.25},  {22, 9.25},  {22, 3},  {36, 3},    {36, 9.4},
+           {38, 9.4}, {38, 5},  {48, 5},     {48, 15},    {38, 15}, {38, 10.6}, {36, 10.6},
+           {36, 17},  {22, 17}, {22, 10.75}, {20, 10.75}, {20, 20}, {0, 20}},
+          {}};
+}
+
+/// Every point of the path at least `clearance` from the free area's boundary, every leg
+/// inside it.
+void expectPathInside(const PolygonWithHoles& free_area, const std::vector<Point2>& path,
+                      double clearance) {
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    EXPECT_TRUE(segmentInside(free_area, path[i], path[i + 1]));
+    for (int k = 0; k <= 20; ++k) {
+      const Point2 p = path[i] + (path[i + 1] - path[i]) * (k / 20.0);
+      EXPECT_GE(distanceToBoundary(p, free_area), clearance - 1e-9);
+    }
+  }
+}
+
+TEST(OffsetPartJoiner, JoinsThreeRoomsThroughTheirStraitsWithTheMostClearance) {
+  const PolygonWithHoles free_area = threeRooms();
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
+  ASSERT_EQ(parts.size(), 3u);
+  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 0);
+  EXPECT_EQ(joined.joined_parts.size(), 3u);
+  EXPECT_TRUE(joined.sealed_parts.empty());
+  ASSERT_EQ(joined.gaps.size(), 2u);
+  // The straits allow 0.75 m and 0.6 m (half their widths); the transits keep that.
+  std::vector<double> clearances;
+  for (const OffsetGap& gap : joined.gaps) {
+    clearances.push_back(gap.clearance_m);
+    expectPathInside(free_area, gap.path, gap.clearance_m);
+    EXPECT_NEAR(distanceToBoundary(gap.narrowest_point, free_area), gap.clearance_m, 1e-9);
+  }
+  std::sort(clearances.begin(), clearances.end());
+  EXPECT_LE(clearances[0], 0.6 + 1e-9);
+  EXPECT_GE(clearances[0], 0.6 - kClearanceResolution);
+  EXPECT_LE(clearances[1], 0.75 + 1e-9);
+  EXPECT_GE(clearances[1], 0.75 - kClearanceResolution);
+  // One area holds every part and the corridors (each at most its path's length plus a
+  // half-width at both ends, times its width), inside the free area.
+  double corridors = 0.0;
+  for (const OffsetGap& gap : joined.gaps) {
+    const double half_width = 0.1 * gap.clearance_m;
+    for (std::size_t i = 0; i + 1 < gap.path.size(); ++i) {
+      corridors += ((gap.path[i + 1] - gap.path[i]).norm() + 2.0 * half_width) * 2.0 * half_width;
+    }
+  }
+  const double united = area(joined.route_area);
+  EXPECT_GT(united, area(parts));
+  EXPECT_LE(united, area(parts) + corridors);
+  for (const PolygonWithHoles& part : parts) {
+    for (const Point2& p : part.hull) EXPECT_TRUE(contains(joined.route_area, p, 1e-7));
+  }
+  for (const Point2& p : joined.route_area.hull) EXPECT_TRUE(contains(free_area, p));
+}
+
+TEST(OffsetPartJoiner, AnchorChoosesTheGroupButEveryReachablePartIsJoined) {
+  const PolygonWithHoles free_area = threeRooms();
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
+  ASSERT_EQ(parts.size(), 3u);
+  for (std::size_t anchor = 0; anchor < parts.size(); ++anchor) {
+    const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, anchor);
+    EXPECT_EQ(joined.joined_parts.size(), 3u) << "anchor " << anchor;
+    EXPECT_EQ(joined.gaps.size(), 2u) << "anchor " << anchor;
+  }
+}
+
+TEST(OffsetPartJoiner, AStraitNoRobotPassesSealsThePartBeyondIt) {
+  // Two squares joined by a strait 2 cm wide: 1 cm clearance, below the 2 cm (2 % of the
+  // wall distance) that a transit keeps at least.
+  const PolygonWithHoles free_area = {{{0, 0},
+                                       {10, 0},
+                                       {10, 4.99},
+                                       {12, 4.99},
+                                       {12, 0},
+                                       {22, 0},
+                                       {22, 10},
+                                       {12, 10},
+                                       {12, 5.01},
+                                       {10, 5.01},
+                                       {10, 10},
+                                       {0, 10}},
+                                      {}};
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
+  ASSERT_EQ(parts.size(), 2u);
+  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 1);
+  EXPECT_EQ(joined.joined_parts, std::vector<std::size_t>{1});
+  EXPECT_EQ(joined.sealed_parts, std::vector<std::size_t>{0});
+  EXPECT_TRUE(joined.gaps.empty());
+  EXPECT_NEAR(area(joined.route_area), area(parts[1]), 1e-9);
+}
+
+TEST(OffsetPartJoiner, OnePartIsItsOwnRouteArea) {
+  const PolygonWithHoles free_area = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}};
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
+  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 0);
+  EXPECT_EQ(joined.joined_parts, std::vector<std::size_t>{0});
+  EXPECT_TRUE(joined.gaps.empty());
+  EXPECT_NEAR(area(joined.route_area), 64.0, 1e-9);
+}
+
+TEST(OffsetPartJoiner, AnIslandCloseToTheShoreCutsOffAPocket) {
+  // A square lake with a U-shaped island near the right shore: the strip between the
+  // island's arms and the shore is 1.6 m wide, so its pocket is a part of its own.
+  const PolygonWithHoles free_area = {
+      {{0, 0}, {30, 0}, {30, 30}, {0, 30}},
+      {{{20, 8}, {20, 22}, {28.4, 22}, {28.4, 20}, {22, 20}, {22, 10}, {28.4, 10}, {28.4, 8}}}};
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
+  ASSERT_EQ(parts.size(), 2u);
+  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 0);
+  EXPECT_EQ(joined.joined_parts.size(), 2u);
+  ASSERT_EQ(joined.gaps.size(), 1u);
+  EXPECT_LE(joined.gaps.front().clearance_m, 0.8 + 1e-9);
+  EXPECT_GE(joined.gaps.front().clearance_m, 0.8 - kClearanceResolution);
+  expectPathInside(free_area, joined.gaps.front().path, joined.gaps.front().clearance_m);
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core
