@@ -292,10 +292,17 @@ bool BoundaryGrid::directionFree(int cluster, const Point2& direction,
   return free;
 }
 
-bool BoundaryGrid::endAllows(const Contact& contact, const Point2& end, const Point2& far_end,
-                             double angle_tolerance) const {
+bool BoundaryGrid::endAllows(const Contact& contact, const Point2& far_end) const {
   if (contact.cluster >= 0) {
-    return directionFree(contact.cluster, far_end - end, angle_tolerance);
+    // The end lies up to the tolerance from the vertex, on either side of its edges (a lane
+    // end just beyond a convex corner): the segment stays within the tolerance of the one
+    // from the vertex itself, so the vertex's rays judge that one's direction, with the
+    // angle it may deviate over its own length. A far end as close to the vertex leaves the
+    // whole segment within the tolerance of it.
+    const Point2 from_vertex = far_end - clusters_[contact.cluster].position;
+    const double length = from_vertex.norm();
+    if (length <= tolerance_) return true;
+    return directionFree(contact.cluster, from_vertex, angleWithin(tolerance_, length));
   }
   for (int e : contact.edges) {
     const Point2 along = edge_end_[e] - edge_start_[e];
@@ -324,12 +331,7 @@ bool BoundaryGrid::segmentInside(const Point2& a, const Contact& a_contact, cons
   const double length_sq = d.squaredNorm();
   const double length = std::sqrt(length_sq);
   if (!(length > tolerance_)) return length <= tolerance_;
-  // The segment may deviate from an edge's ray by the tolerance over its length.
-  const double angle_tolerance = angleWithin(tolerance_, length);
-  if (!endAllows(a_contact, a, b, angle_tolerance) ||
-      !endAllows(b_contact, b, a, angle_tolerance)) {
-    return false;
-  }
+  if (!endAllows(a_contact, b) || !endAllows(b_contact, a)) return false;
   const double side_tolerance = tolerance_ * length;  // cross products scale with |d|
   return visitEdgesAlong(a, b, [&](int e) {
     const Point2& s = edge_start_[e];

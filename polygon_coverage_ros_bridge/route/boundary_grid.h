@@ -76,10 +76,10 @@ class BoundaryGrid {
   /// The vertex cluster where edges e and f meet with wall in the narrow angle between
   /// them, or -1.
   int wallCornerBetween(int e, int f) const;
-  /// True when the segment from `end` (touching `contact`) to `far_end` starts into the
-  /// free side there.
-  bool endAllows(const Contact& contact, const Point2& end, const Point2& far_end,
-                 double angle_tolerance) const;
+  /// True when the segment from an end touching `contact` to `far_end` starts into the
+  /// free side there (at a vertex contact: the segment from the vertex itself, which may
+  /// deviate from a ray by the tolerance over its length).
+  bool endAllows(const Contact& contact, const Point2& far_end) const;
   int column(double x) const;
   int row(double y) const;
   template <typename Visit>

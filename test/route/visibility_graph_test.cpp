@@ -393,5 +393,31 @@ TEST(VisibilityGraph, TimingOfALargeHull) {
   EXPECT_GT(graph.nodeCount(), 100u);
 }
 
+// HardMapGenerator star seed 315 (a hexagon, wall distance 1.98 m, trapezoidal cells): the
+// offset free area is convex, so the graph has no nodes, and a corner lane's two ends lie
+// up to 5.3e-8 m from the corner (within the 1e-7 m tolerance), one of them just beyond
+// it. The ends' vertex judged the directions from the ends rather than from itself, so
+// the lane between them and the leg from it along the edge to the next corner counted
+// as leaving the area: no route, an infinite transition cost, and the planner rejected
+// the mission as invalid input.
+TEST(VisibilityGraph, EndsWithinTheToleranceOfAConvexCornerSeeEachOtherAndAlongItsEdges) {
+  const PolygonWithHoles area = {{{-41.633258015170924, 40.448798505538107},
+                                  {-45.848528789922568, -35.994888224374279},
+                                  {-3.084838743997544, -52.645236683285759},
+                                  {37.643276043991634, -37.736867673044834},
+                                  {46.469845138768456, 13.37838337821314},
+                                  {-16.308661860459683, 47.668309262539175}},
+                                 {}};
+  const VisibilityGraph graph(area, costOf("distance"));
+  ASSERT_EQ(graph.nodeCount(), 0u);
+  const Point2 beyond_corner(-3.0848387692335386, -52.645236729488197);
+  const Point2 inside_corner(-3.0848387248965228, -52.645236634227921);
+  const Point2 next_corner(-45.848528786872791, -35.994888169066769);
+  EXPECT_TRUE(std::isfinite(graph.cost(beyond_corner, inside_corner)));
+  EXPECT_TRUE(std::isfinite(graph.cost(inside_corner, beyond_corner)));
+  EXPECT_NEAR(graph.cost(beyond_corner, next_corner), (next_corner - beyond_corner).norm(), 1e-9);
+  EXPECT_NEAR(graph.cost(next_corner, beyond_corner), (next_corner - beyond_corner).norm(), 1e-9);
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core

@@ -1,0 +1,173 @@
+#include "test/support/hard_map_generator.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+#include "test/support/hard_map_yaml.h"
+#include "test/support/random_polygons.h"
+
+namespace kinematic_coverage::core::testing {
+namespace {
+
+constexpr int kSeeds = 50;
+
+std::size_t vertexCount(const PolygonWithHoles& polygon) {
+  std::size_t count = polygon.hull.size();
+  for (const Ring& hole : polygon.holes) count += hole.size();
+  return count;
+}
+
+bool samePolygon(const PolygonWithHoles& a, const PolygonWithHoles& b) {
+  return a.hull == b.hull && a.holes == b.holes;
+}
+
+class HardMapGeneratorTest : public ::testing::TestWithParam<MapFamily> {};
+
+// Every map: a valid polygon (holes apart from each other and the hull, except in
+// touching_holes, whose holes the cleaner merges or cuts without throwing), at most 600
+// vertices, start and goal outside every hole, parameters in range and in the promised
+// ranges, the same map for the same seed, and a mission file that reads back to it.
+TEST_P(HardMapGeneratorTest, MapsAreValidDeterministicAndInRange) {
+  const MapFamily family = GetParam();
+  const HardMapGenerator generator(family);
+  int cleaned_with_warnings = 0;
+  for (int seed = 0; seed < kSeeds; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const HardMap map = generator.generate(seed);
+    const Mission& m = map.mission;
+    EXPECT_EQ(map.family, family);
+    EXPECT_NO_THROW(PolygonValidator().validate(m.polygon));
+    EXPECT_LE(vertexCount(m.polygon), HardMapGenerator::kMaxVertices);
+    EXPECT_GT(signedArea(m.polygon.hull), 0.0);
+    CleanedPolygon cleaned;
+    ASSERT_NO_THROW(cleaned = PolygonCleaner().clean(m.polygon));
+    if (family == MapFamily::kTouchingHoles) {
+      EXPECT_FALSE(m.polygon.holes.empty());
+      cleaned_with_warnings += cleaned.warnings.empty() ? 0 : 1;
+    } else {
+      EXPECT_TRUE(cleaned.warnings.empty()) << cleaned.warnings.front();
+      for (std::size_t i = 0; i < m.polygon.holes.size(); ++i) {
+        const Ring& hole = m.polygon.holes[i];
+        EXPECT_LT(signedArea(hole), 0.0);
+        EXPECT_GT(ringDistance(hole, m.polygon.hull), 0.0);
+        EXPECT_TRUE(insideRing(hole.front(), m.polygon.hull));
+        for (std::size_t j = 0; j < i; ++j) {
+          EXPECT_GT(ringDistance(hole, m.polygon.holes[j]), 0.0);
+        }
+      }
+    }
+    EXPECT_NO_THROW(PolygonValidator().validateEndpoint("start", m.start, m.polygon));
+    EXPECT_NO_THROW(PolygonValidator().validateEndpoint("goal", m.goal, m.polygon));
+
+    const PlannerParameters& p = m.parameters;
+    EXPECT_NO_THROW(ParameterValidator().validate(p));
+    const FrustumSensor sensor = FrustumSensor::fromParameters(p);
+    EXPECT_NEAR(sensor.width(), map.footprint_width_m, 1e-9);
+    EXPECT_NEAR(sensor.length(), map.footprint_length_m, 1e-9);
+    EXPECT_GE(sensor.width(), 1.0 - 1e-9);
+    EXPECT_LE(sensor.width(), 13.0 + 1e-9);
+    EXPECT_GE(sensor.length(), 1.0 - 1e-9);
+    EXPECT_LE(sensor.length(), sensor.width() + 1e-9);
+    EXPECT_GE(p.turning_radius, 0.3);
+    EXPECT_LE(p.turning_radius, 2.0);
+    EXPECT_GE(p.wall_distance, 0.3);
+    EXPECT_LE(p.wall_distance, 2.0);
+
+    const HardMap again = generator.generate(seed);
+    EXPECT_TRUE(samePolygon(again.mission.polygon, m.polygon));
+    EXPECT_EQ(again.mission.start, m.start);
+    EXPECT_EQ(again.mission.goal, m.goal);
+    EXPECT_EQ(again.mission.parameters.sensor_distance, p.sensor_distance);
+    EXPECT_EQ(again.mission.parameters.turning_radius, p.turning_radius);
+
+    const Mission read = MissionFileReader().parse(hardMapYaml(map), "map.yaml");
+    EXPECT_TRUE(samePolygon(read.polygon, m.polygon));
+    EXPECT_EQ(read.start, m.start);
+    EXPECT_EQ(read.goal, m.goal);
+    for (const std::string& name : MissionFileReader::parameterNames()) {
+      EXPECT_EQ(MissionFileReader::parameterText(read.parameters, name),
+                MissionFileReader::parameterText(p, name))
+          << name;
+    }
+  }
+  if (family == MapFamily::kTouchingHoles) EXPECT_GE(cleaned_with_warnings, kSeeds / 2);
+}
+
+TEST_P(HardMapGeneratorTest, FuzzSizedMapsKeepPlannerFuzzerCaps) {
+  if (GetParam() == MapFamily::kStar) GTEST_SKIP() << "the star family has no fuzz size";
+  const HardMapGenerator generator(GetParam(), MapSize::kFuzz);
+  for (int seed = 0; seed < kSeeds; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const HardMap map = generator.generate(seed);
+    EXPECT_NO_THROW(PolygonValidator().validate(map.mission.polygon));
+    EXPECT_NO_THROW(PolygonCleaner().clean(map.mission.polygon));
+    EXPECT_LE(map.mission.polygon.hull.size(), 12u);
+    EXPECT_LE(map.mission.polygon.holes.size(), 2u);
+    for (const Ring& hole : map.mission.polygon.holes) EXPECT_LE(hole.size(), 6u);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, HardMapGeneratorTest,
+                         ::testing::ValuesIn(HardMapGenerator::families()),
+                         [](const auto& info) { return HardMapGenerator::name(info.param); });
+
+TEST(HardMapGenerator, CombTeethStraddleTwoWallDistances) {
+  for (int seed = 0; seed < kSeeds; ++seed) {
+    const HardMap map = HardMapGenerator(MapFamily::kComb).generate(seed);
+    const double two_w = 2.0 * map.mission.parameters.wall_distance;
+    const auto& widths = map.passage_widths_m;
+    ASSERT_GE(widths.size(), 3u);
+    EXPECT_LT(*std::min_element(widths.begin(), widths.end()), two_w) << "seed " << seed;
+    EXPECT_GT(*std::max_element(widths.begin(), widths.end()), two_w) << "seed " << seed;
+  }
+}
+
+TEST(HardMapGenerator, RoomsCorridorsStraddleTwoWallDistances) {
+  int narrower = 0;
+  int wider = 0;
+  for (int seed = 0; seed < kSeeds; ++seed) {
+    const HardMap map = HardMapGenerator(MapFamily::kRooms).generate(seed);
+    const double two_w = 2.0 * map.mission.parameters.wall_distance;
+    ASSERT_EQ(map.passage_widths_m.size(), 1u);
+    const double corridor = map.passage_widths_m.front();
+    EXPECT_GE(corridor, 0.8 * two_w);
+    EXPECT_LE(corridor, 1.25 * two_w);
+    (corridor < two_w ? narrower : wider) += 1;
+  }
+  EXPECT_GE(narrower, kSeeds / 5);
+  EXPECT_GE(wider, kSeeds / 5);
+}
+
+TEST(HardMapGenerator, ShorelinesAreLongWithCloseIslands) {
+  for (int seed = 0; seed < kSeeds; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const HardMap map = HardMapGenerator(MapFamily::kShoreline).generate(seed);
+    const std::size_t vertices = vertexCount(map.mission.polygon);
+    EXPECT_GE(vertices, 150u);
+    EXPECT_LE(vertices, 600u);
+    const auto& gaps = map.island_gaps_m;
+    ASSERT_FALSE(gaps.empty());
+    ASSERT_EQ(gaps.size(), map.mission.polygon.holes.size());
+    EXPECT_GT(*std::min_element(gaps.begin(), gaps.end()), 0.0);
+    EXPECT_LT(*std::min_element(gaps.begin(), gaps.end()),
+              2.0 * map.mission.parameters.wall_distance);
+  }
+}
+
+TEST(HardMapGenerator, FamiliesHaveNames) {
+  for (MapFamily family : HardMapGenerator::families()) {
+    EXPECT_EQ(HardMapGenerator::fromName(HardMapGenerator::name(family)), family);
+  }
+  EXPECT_FALSE(HardMapGenerator::fromName("lake"));
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core::testing
