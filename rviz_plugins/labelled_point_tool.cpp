@@ -5,6 +5,8 @@
 #include <OgreSceneNode.h>
 #include <OgreVector3.h>
 #include <geometry_msgs/PointStamped.h>
+#include <ros/console.h>
+#include <ros/names.h>
 #include <rviz/display_context.h>
 #include <rviz/geometry.h>
 #include <rviz/ogre_helpers/movable_text.h>
@@ -23,7 +25,7 @@ constexpr float kTextHeightM = 0.9f;
 
 LabelledPointTool::LabelledPointTool(const std::string& label, const std::string& default_topic,
                                      char shortcut_key, const Ogre::ColourValue& colour)
-    : label_(label), colour_(colour) {
+    : label_(label), default_topic_(default_topic), colour_(colour) {
   shortcut_key_ = shortcut_key;
   topic_property_ = new rviz::StringProperty(
       "Topic", QString::fromStdString(default_topic),
@@ -86,7 +88,28 @@ int LabelledPointTool::processMouseEvent(rviz::ViewportMouseEvent& event) {
 }
 
 void LabelledPointTool::updateTopic() {
-  publisher_ = node_.advertise<geometry_msgs::PointStamped>(topic_property_->getStdString(), 1);
+  const std::string topic = topic_property_->getStdString();
+  std::string problem;
+  if (topic.empty()) {
+    problem = "the name is empty";
+  } else if (ros::names::validate(topic, problem)) {
+    try {
+      publisher_ = node_.advertise<geometry_msgs::PointStamped>(topic, 1);
+      return;
+    } catch (const ros::Exception& error) {
+      problem = error.what();
+    }
+  }
+  // An invalid name keeps the topic published so far (the default one at start-up).
+  if (!publisher_) publisher_ = node_.advertise<geometry_msgs::PointStamped>(default_topic_, 1);
+  const QString message =
+      QString(
+          "Topic \"%1\" is not a valid topic name (%2); the %3 is still "
+          "published on %4.")
+          .arg(QString::fromStdString(topic), QString::fromStdString(problem),
+               QString::fromStdString(label_), QString::fromStdString(publisher_.getTopic()));
+  ROS_ERROR("%s tool: %s", label_.c_str(), message.toStdString().c_str());
+  setStatus(message);
 }
 
 void LabelledPointTool::setPoint(const Ogre::Vector3& point) {

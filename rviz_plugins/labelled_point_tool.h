@@ -46,7 +46,9 @@ class LabelledPointTool : public rviz::Tool {
   int processMouseEvent(rviz::ViewportMouseEvent& event) override;
 
  private Q_SLOTS:
-  /// Advertises on the topic the Topic property names.
+  /// Advertises on the topic the Topic property names. An invalid name (ros::names::validate,
+  /// e.g. "bad topic!" or "1abc") keeps the topic advertised so far and says so in the
+  /// status bar and with ROS_ERROR.
   void updateTopic();
 
  private:
@@ -54,6 +56,7 @@ class LabelledPointTool : public rviz::Tool {
   void setPoint(const Ogre::Vector3& point);
 
   std::string label_;
+  std::string default_topic_;
   Ogre::ColourValue colour_;
   rviz::StringProperty* topic_property_;
   ros::NodeHandle node_;

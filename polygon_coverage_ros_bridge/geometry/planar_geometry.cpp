@@ -130,6 +130,25 @@ double headingOf(const Point2& a, const Point2& b) {
   return wrapAngle(std::atan2(b.y() - a.y(), b.x() - a.x()));
 }
 
+Ring convexHull(std::vector<Point2> points) {
+  std::sort(points.begin(), points.end(), [](const Point2& a, const Point2& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  if (points.size() < 3) return Ring(points.begin(), points.end());
+  Ring hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
 double wrapAngle(double angle) {
   if (!std::isfinite(angle)) return angle;
   double wrapped = std::remainder(angle, 2.0 * M_PI);

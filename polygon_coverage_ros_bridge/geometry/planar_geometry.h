@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
 namespace kinematic_coverage::core {
@@ -42,6 +44,10 @@ bool contains(const PolygonWithHoles& polygon, const Point2& p, double tolerance
 /// allowed within `tolerance`): no proper crossing of any edge and its midpoints inside.
 bool segmentInside(const PolygonWithHoles& polygon, const Point2& a, const Point2& b,
                    double tolerance = 1e-9);
+
+/// Convex hull of points (Andrew's monotone chain), counter-clockwise, without collinear
+/// vertices; the points themselves when fewer than 3.
+Ring convexHull(std::vector<Point2> points);
 
 /// Heading of the vector from a to b, in (-pi, pi].
 double headingOf(const Point2& a, const Point2& b);

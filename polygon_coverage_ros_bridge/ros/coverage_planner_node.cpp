@@ -49,8 +49,7 @@ CoveragePlannerNode::CoveragePlannerNode(const ros::NodeHandle& node,
   goal_subscriber_ = node_.subscribe("goal", 1, &CoveragePlannerNode::onGoal, this);
   activate_subscriber_ = node_.subscribe("activate", 1, &CoveragePlannerNode::onActivate, this);
   plan_service_ = private_node_.advertiseService("plan", &CoveragePlannerNode::onPlanService, this);
-  ROS_INFO("coverage_planner: waiting for polygon, start and goal (plan_on_receive: %s)",
-           private_node_.param("plan_on_receive", false) ? "true" : "false");
+  ROS_INFO("coverage_planner: waiting for polygon, start and goal");
 }
 
 void CoveragePlannerNode::onPolygon(
@@ -86,24 +85,30 @@ bool CoveragePlannerNode::onPlanService(std_srvs::Trigger::Request&,
 }
 
 void CoveragePlannerNode::planIfReceiving() {
-  if (!private_node_.param("plan_on_receive", false)) return;
-  if (!polygon_ || !start_ || !goal_) return;
+  bool plan_on_receive = false;
+  try {
+    plan_on_receive = readFlagParameter(private_node_, "plan_on_receive", false);
+  } catch (const core::InvalidInputError& error) {
+    ROS_ERROR("coverage_planner: validate: %s", error.what());
+    publishStatus("validate", false, error.what(), 0.0);
+    return;
+  }
+  if (!plan_on_receive || !polygon_ || !start_ || !goal_) return;
   std::string message;
   plan(message);
 }
 
 geometry_msgs::PointStamped CoveragePlannerNode::inPolygonFrame(
     const geometry_msgs::PointStamped& point, const std::string& what) const {
-  const std::string& frame = polygon_->header.frame_id;
-  if (point.header.frame_id.empty() || frame.empty() || point.header.frame_id == frame) {
-    return point;
-  }
+  const std::string frame = frameOf(polygon_->header);
+  if (frameOf(point.header) == frame) return point;
   try {
     geometry_msgs::PointStamped latest = point;
+    latest.header.frame_id = frameOf(point.header);
     latest.header.stamp = ros::Time(0);  // the newest transform: start and goal are places
     return tf_buffer_.transform(latest, frame, kTransformTimeout);
   } catch (const tf2::TransformException& error) {
-    throw core::InvalidInputError(what + " is in frame '" + point.header.frame_id +
+    throw core::InvalidInputError(what + " is in frame '" + frameOf(point.header) +
                                   "' and no transform to the polygon's frame '" + frame +
                                   "' is available: " + error.what());
   }
@@ -124,7 +129,7 @@ bool CoveragePlannerNode::plan(std::string& message) {
       throw core::InvalidInputError("cannot plan yet: no " + missing + " received");
     }
     core::Mission mission;
-    mission.frame_id = polygon_->header.frame_id.empty() ? "map" : polygon_->header.frame_id;
+    mission.frame_id = frameOf(polygon_->header);
     mission.polygon = fromMessage(polygon_->polygon);
     mission.start = fromMessage(inPolygonFrame(*start_, "start").point);
     mission.goal = fromMessage(inPolygonFrame(*goal_, "goal").point);

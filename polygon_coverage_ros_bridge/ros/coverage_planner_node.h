@@ -35,14 +35,15 @@ class CoveragePlannerNode {
   void onActivate(const std_msgs::Empty::ConstPtr& message);
   bool onPlanService(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
 
-  /// Plans when `plan_on_receive` is set and every input is known.
+  /// Plans when `plan_on_receive` is set and every input is known; a `plan_on_receive` that
+  /// is not true or false is a failed request.
   void planIfReceiving();
 
   /// Plans with the newest inputs and publishes; returns whether it succeeded, and the
   /// error or a one-line summary in `message`.
   bool plan(std::string& message);
 
-  /// The point in the polygon's frame (tf2 when the frames differ). Throws
+  /// The point in the polygon's frame (tf2 when the frames differ; an empty frame is `map`). Throws
   /// core::InvalidInputError when no transform is available.
   geometry_msgs::PointStamped inPolygonFrame(const geometry_msgs::PointStamped& point,
                                              const std::string& what) const;

@@ -5,6 +5,9 @@
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
 #include <cmath>
+#include <sstream>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
 namespace kinematic_coverage::nodes {
 namespace {
@@ -36,6 +39,9 @@ geometry_msgs::Pose poseMessage(double x, double y, double yaw) {
   pose.orientation = tf2::toMsg(quaternion);
   return pose;
 }
+
+/// Largest deviation of a quaternion's squared norm from 1 (rviz's own tolerance).
+constexpr double kUnitQuaternionTolerance = 0.01;
 
 /// Poses with x, y and yaw members as a PoseArray.
 template <typename Pose>
@@ -72,15 +78,6 @@ core::Point2 fromMessage(const geometry_msgs::Point& point) { return {point.x, p
 geometry_msgs::PoseArray toPoseArray(const std::vector<core::Pose2>& poses,
                                      const std_msgs::Header& header) {
   return poseArray(poses, header);
-}
-
-std::vector<core::Pose2> fromPoseArray(const geometry_msgs::PoseArray& message) {
-  std::vector<core::Pose2> poses;
-  poses.reserve(message.poses.size());
-  for (const geometry_msgs::Pose& pose : message.poses) {
-    poses.push_back({pose.position.x, pose.position.y, yawOf(pose.orientation)});
-  }
-  return poses;
 }
 
 geometry_msgs::PoseArray toPoseArray(const std::vector<core::TrajectoryPose>& poses,
@@ -126,6 +123,38 @@ double yawOf(const geometry_msgs::Quaternion& orientation) {
   double yaw = 0.0;
   tf2::Matrix3x3(quaternion).getRPY(roll, pitch, yaw);
   return yaw;
+}
+
+std::string frameOf(const std_msgs::Header& header) {
+  return header.frame_id.empty() ? "map" : header.frame_id;
+}
+
+core::Pose2 checkedPose(const geometry_msgs::Pose& pose, const std::string& what) {
+  if (!std::isfinite(pose.position.x) || !std::isfinite(pose.position.y)) {
+    std::ostringstream message;
+    message << what << " has a non-finite position (" << pose.position.x << ", " << pose.position.y
+            << ")";
+    throw core::InvalidInputError(message.str());
+  }
+  const geometry_msgs::Quaternion& q = pose.orientation;
+  const double norm2 = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
+  if (!std::isfinite(norm2) || std::abs(norm2 - 1.0) > kUnitQuaternionTolerance) {
+    std::ostringstream message;
+    message << what << " has an orientation that is not a unit quaternion (x " << q.x << ", y "
+            << q.y << ", z " << q.z << ", w " << q.w << ")";
+    throw core::InvalidInputError(message.str());
+  }
+  return {pose.position.x, pose.position.y, yawOf(q)};
+}
+
+std::vector<core::Pose2> checkedPoses(const geometry_msgs::PoseArray& message,
+                                      const std::string& what) {
+  std::vector<core::Pose2> poses;
+  poses.reserve(message.poses.size());
+  for (std::size_t i = 0; i < message.poses.size(); ++i) {
+    poses.push_back(checkedPose(message.poses[i], what + " " + std::to_string(i)));
+  }
+  return poses;
 }
 
 }  // namespace kinematic_coverage::nodes

@@ -5,6 +5,7 @@
 #include <nav_msgs/Path.h>
 #include <std_msgs/Header.h>
 
+#include <string>
 #include <vector>
 
 #include "kinematic_coverage/PlanStatus.h"
@@ -30,9 +31,6 @@ core::Point2 fromMessage(const geometry_msgs::Point& point);
 geometry_msgs::PoseArray toPoseArray(const std::vector<core::Pose2>& poses,
                                      const std_msgs::Header& header);
 
-/// The x, y and yaw of each pose of a PoseArray.
-std::vector<core::Pose2> fromPoseArray(const geometry_msgs::PoseArray& message);
-
 /// Trajectory poses as a PoseArray (headings as yaw quaternions).
 geometry_msgs::PoseArray toPoseArray(const std::vector<core::TrajectoryPose>& poses,
                                      const std_msgs::Header& header);
@@ -49,5 +47,17 @@ nav_msgs::Path toPath(const std::vector<core::TrajectoryPose>& poses,
 
 /// The yaw of a quaternion message (0 for a zero quaternion).
 double yawOf(const geometry_msgs::Quaternion& orientation);
+
+/// The frame a header names: `map` when it is empty (docs/REFERENCE.md, Messages).
+std::string frameOf(const std_msgs::Header& header);
+
+/// The x, y and yaw of a pose message. Throws core::InvalidInputError, naming the pose as
+/// `what`, for a non-finite x or y, or an orientation that is not a unit quaternion
+/// (non-finite, or a squared norm off 1 by more than 0.01, rviz's tolerance).
+core::Pose2 checkedPose(const geometry_msgs::Pose& pose, const std::string& what);
+
+/// checkedPose of every pose of a PoseArray, each named `what` and its index.
+std::vector<core::Pose2> checkedPoses(const geometry_msgs::PoseArray& message,
+                                      const std::string& what);
 
 }  // namespace kinematic_coverage::nodes

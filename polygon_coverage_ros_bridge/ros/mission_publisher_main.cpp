@@ -11,6 +11,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
+#include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
 
 namespace {
 
@@ -30,12 +31,13 @@ int main(int argc, char** argv) {
   ros::NodeHandle node;
   ros::NodeHandle private_node("~");
   std::string path;
-  if (!private_node.getParam("mission", path) || path.empty()) {
-    ROS_ERROR("mission_publisher: the parameter ~mission (a mission file) is not set");
-    return 2;
-  }
   kinematic_coverage::core::Mission mission;
   try {
+    path = kinematic_coverage::nodes::readStringParameter(private_node, "mission", "");
+    if (path.empty()) {
+      ROS_ERROR("mission_publisher: the parameter ~mission (a mission file) is not set");
+      return 2;
+    }
     mission = kinematic_coverage::core::MissionFileReader().read(path);
   } catch (const kinematic_coverage::core::InvalidInputError& error) {
     ROS_ERROR("mission_publisher: %s", error.what());

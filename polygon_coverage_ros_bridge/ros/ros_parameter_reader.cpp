@@ -30,7 +30,57 @@ std::string asYamlScalar(const std::string& name, XmlRpc::XmlRpcValue& value) {
   }
 }
 
+/// The type of a parameter server value, as a user would name it.
+std::string typeName(XmlRpc::XmlRpcValue& value) {
+  switch (value.getType()) {
+    case XmlRpc::XmlRpcValue::TypeBoolean:
+      return "a boolean (" + std::string(static_cast<bool>(value) ? "true" : "false") + ")";
+    case XmlRpc::XmlRpcValue::TypeInt:
+      return "an integer (" + std::to_string(static_cast<int>(value)) + ")";
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      return "a double (" + core::formatRoundTrip(static_cast<double>(value)) + ")";
+    case XmlRpc::XmlRpcValue::TypeString:
+      return "a string ('" + static_cast<std::string>(value) + "')";
+    case XmlRpc::XmlRpcValue::TypeArray:
+      return "a list";
+    case XmlRpc::XmlRpcValue::TypeStruct:
+      return "a dictionary";
+    default:
+      return "a value of another type";
+  }
+}
+
+[[noreturn]] void wrongType(const ros::NodeHandle& node, const std::string& name,
+                            const std::string& expected, XmlRpc::XmlRpcValue& value) {
+  throw core::InvalidInputError("parameter " + node.resolveName(name) + " must be " + expected +
+                                ", not " + typeName(value));
+}
+
 }  // namespace
+
+double readNumberParameter(const ros::NodeHandle& node, const std::string& name,
+                           double default_value) {
+  XmlRpc::XmlRpcValue value;
+  if (!node.getParam(name, value)) return default_value;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(value);
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(value);
+  wrongType(node, name, "a number (double)", value);
+}
+
+bool readFlagParameter(const ros::NodeHandle& node, const std::string& name, bool default_value) {
+  XmlRpc::XmlRpcValue value;
+  if (!node.getParam(name, value)) return default_value;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeBoolean) return static_cast<bool>(value);
+  wrongType(node, name, "true or false (bool)", value);
+}
+
+std::string readStringParameter(const ros::NodeHandle& node, const std::string& name,
+                                const std::string& default_value) {
+  XmlRpc::XmlRpcValue value;
+  if (!node.getParam(name, value)) return default_value;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeString) return static_cast<std::string>(value);
+  wrongType(node, name, "a string", value);
+}
 
 core::PlannerParameters readPlannerParameters(const ros::NodeHandle& private_node) {
   std::vector<std::string> overrides;

@@ -2,6 +2,8 @@
 
 #include <ros/node_handle.h>
 
+#include <string>
+
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 
 namespace kinematic_coverage::nodes {
@@ -11,5 +13,18 @@ namespace kinematic_coverage::nodes {
 /// set, read and validated exactly as a mission file's keys. Throws
 /// core::InvalidInputError naming the parameter for a wrong type or a value out of range.
 core::PlannerParameters readPlannerParameters(const ros::NodeHandle& private_node);
+
+/// A node-only number parameter (docs/REFERENCE.md, Parameters): `default_value` when it is
+/// not set, else its value, which must be an integer or a double. Throws
+/// core::InvalidInputError naming the parameter, the expected type and the type given.
+double readNumberParameter(const ros::NodeHandle& node, const std::string& name,
+                           double default_value);
+
+/// A node-only true/false parameter, as readNumberParameter.
+bool readFlagParameter(const ros::NodeHandle& node, const std::string& name, bool default_value);
+
+/// A node-only string parameter, as readNumberParameter.
+std::string readStringParameter(const ros::NodeHandle& node, const std::string& name,
+                                const std::string& default_value);
 
 }  // namespace kinematic_coverage::nodes

@@ -12,9 +12,7 @@ import sys
 import threading
 import time
 import unittest
-import xmlrpc.client
 
-import rosgraph
 import rospy
 import rostest
 from geometry_msgs.msg import Point32, PointStamped, PoseArray, Polygon
@@ -22,7 +20,7 @@ from kinematic_coverage.msg import PlanStatus, PolygonWithHolesStamped
 from std_srvs.srv import Trigger
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
-from ros_test_support import Collector, inside_ring  # noqa: E402
+from ros_test_support import Collector, inside_ring, node_pid, rss_bytes  # noqa: E402
 
 RATE_HZ = 100
 BURST_S = 10
@@ -83,28 +81,6 @@ def point_message(x, y):
     return message
 
 
-def node_pid(name):
-    """The process id of a running node, from its XML-RPC API (as `rosnode info` finds it)."""
-    master = rosgraph.Master('/planner_load_test')
-    uri = master.lookupNode(name)
-    code, _, pid = xmlrpc.client.ServerProxy(uri).getPid('/planner_load_test')
-    if code != 1:
-        raise RuntimeError('getPid failed for %s' % name)
-    return pid
-
-
-def rss_bytes(pid):
-    """Resident set size of a process (VmRSS in /proc/<pid>/status); None once it is gone."""
-    try:
-        with open('/proc/%d/status' % pid) as status:
-            for line in status:
-                if line.startswith('VmRSS:'):
-                    return int(line.split()[1]) * 1024
-    except FileNotFoundError:
-        pass
-    return None
-
-
 def polygon_answered(waypoints):
     """The polygon whose hull holds every waypoint but the start and the goal (joined from
     outside), or None."""
@@ -134,7 +110,7 @@ class PlannerLoadTest(unittest.TestCase):
         cls.plan_service = rospy.ServiceProxy('coverage_planner/plan', Trigger)
         while cls.polygon.get_num_connections() == 0 and not rospy.is_shutdown():
             time.sleep(0.05)
-        cls.pid = node_pid('/coverage_planner')
+        cls.pid = node_pid('/coverage_planner', '/planner_load_test')
 
     def test_burst_of_polygons(self):
         self.start.publish(point_message(*START))

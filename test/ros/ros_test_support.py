@@ -2,9 +2,12 @@
 
 import math
 import time
+import xmlrpc.client
 
+import rosgraph
 import rospy
 import yaml
+from rosgraph_msgs.msg import Log
 
 
 def load_mission(path):
@@ -71,3 +74,80 @@ class Collector:
 def yaw_of(orientation):
     return math.atan2(2.0 * (orientation.w * orientation.z + orientation.x * orientation.y),
                       1.0 - 2.0 * (orientation.y * orientation.y + orientation.z * orientation.z))
+
+
+def wait_until(condition, timeout):
+    """Polls `condition` until it holds or `timeout` seconds passed; returns its last value."""
+    deadline = time.time() + timeout
+    while not condition() and time.time() < deadline and not rospy.is_shutdown():
+        time.sleep(0.05)
+    return condition()
+
+
+def node_pid(name, caller):
+    """The process id of a running node, from its XML-RPC API (as `rosnode info` finds it)."""
+    master = rosgraph.Master(caller)
+    uri = master.lookupNode(name)
+    code, _, pid = xmlrpc.client.ServerProxy(uri).getPid(caller)
+    if code != 1:
+        raise RuntimeError('getPid failed for %s' % name)
+    return pid
+
+
+def rss_bytes(pid):
+    """Resident set size of a process (VmRSS in /proc/<pid>/status); None once it is gone."""
+    try:
+        with open('/proc/%d/status' % pid) as status:
+            for line in status:
+                if line.startswith('VmRSS:'):
+                    return int(line.split()[1]) * 1024
+    except FileNotFoundError:
+        pass
+    return None
+
+
+class RejectionChecks:
+    """Mixin for a unittest.TestCase with a `log` Collector of /rosout: a bad message to a node
+    gives exactly one ROS_ERROR from it, exactly one failed ~status and nothing on its
+    outputs; a good one after it is handled (docs/REFERENCE.md, Nodes and topics)."""
+
+    TIMEOUT_S = 30.0
+    # A second error, status or output would have arrived by then.
+    QUIET_S = 1.0
+
+    def node_errors(self, node):
+        return sum(1 for entry in self.log.messages
+                   if entry.level == Log.ERROR and entry.name == node)
+
+    def assert_rejected(self, node, status, outputs, send, expected=()):
+        """Calls `send`; asserts one ROS_ERROR of `node`, one failed message on the `status`
+        Collector naming every string of `expected`, and no new message on the `outputs`
+        Collectors. Returns the status message."""
+        statuses = len(status.messages)
+        errors = self.node_errors(node)
+        published = [len(output.messages) for output in outputs]
+        send()
+        self.assertTrue(status.wait_for(statuses + 1, self.TIMEOUT_S), 'no status from %s' % node)
+        # The node's ROS_ERROR reaches /rosout a moment after its status.
+        wait_until(lambda: self.node_errors(node) > errors, 10.0)
+        time.sleep(self.QUIET_S)
+        message = status.messages[statuses]
+        self.assertFalse(message.success, message.message)
+        for text in expected:
+            self.assertIn(text, message.message)
+        self.assertEqual(len(status.messages), statuses + 1, 'one status expected')
+        self.assertEqual(self.node_errors(node) - errors, 1, 'one ROS_ERROR expected')
+        self.assertEqual([len(output.messages) for output in outputs], published,
+                         'nothing may be published for a bad message')
+        return message
+
+    def assert_handled(self, status, output, send):
+        """Calls `send`; asserts a successful status and one new message on `output`, and
+        returns that message."""
+        statuses = len(status.messages)
+        published = len(output.messages)
+        send()
+        self.assertTrue(status.wait_for(statuses + 1, self.TIMEOUT_S), 'no status')
+        self.assertTrue(status.messages[-1].success, status.messages[-1].message)
+        self.assertTrue(output.wait_for(published + 1, self.TIMEOUT_S), 'no output')
+        return output.messages[-1]

@@ -6,8 +6,10 @@ activate). The test publishes the lake's polygon, starts rviz with config/rviz/p
 shortcut and clicks, picks Goal and clicks, picks Start again and clicks elsewhere, then
 presses the Activate button (Alt+A). coverage_planner's waypoint_list must start at the
 second start click and end at the goal click, within one pixel in metres. rviz's output
-must hold no pluginlib error. A screenshot and rviz's log are kept in `~artifact_dir`.
-Without a DISPLAY the test skips."""
+must hold no pluginlib error. rviz loads a copy of the config whose Set Start and Set Goal
+tools name invalid topics ("bad topic!", "1abc"): the tools must refuse them, say so, and
+keep publishing on their default topics, where the clicks above arrive. A screenshot and
+rviz's log are kept in `~artifact_dir`. Without a DISPLAY the test skips."""
 
 import os
 import re
@@ -41,6 +43,9 @@ PLAN_TIMEOUT_S = 30.0
 STABLE_POLLS = 4
 POLL_INTERVAL_S = 0.5
 PLUGIN_ERRORS = ('PluginlibFactory', 'Failed to load library', 'could not be loaded')
+# Topic names the config copy gives the tools: not valid ROS names (ros::names::validate).
+INVALID_TOPICS = {'kinematic_coverage/SetStart': ('bad topic!', '/start'),
+                  'kinematic_coverage/SetGoal': ('1abc', '/goal')}
 GUI_PROGRAMS = ('xdotool', 'xwininfo', 'import')
 XML_OUTPUT_FLAG = '--gtest_output=xml:'
 XWININFO_LINE = re.compile(
@@ -129,9 +134,16 @@ class RvizToolTest(unittest.TestCase):
         cls.rviz_log = os.path.join(cls.artifact_dir, 'rviz_tool_rviz.log')
         config_path = rospy.get_param('~rviz_config')
         with open(config_path) as stream:
-            view = yaml.safe_load(stream)['Visualization Manager']['Views']['Current']
+            config = yaml.safe_load(stream)
+        view = config['Visualization Manager']['Views']['Current']
         if view['Class'] != 'rviz/TopDownOrtho' or float(view['Angle']) != 0.0:
             raise RuntimeError('%s: the test needs a TopDownOrtho view with Angle 0' % config_path)
+        for tool in config['Visualization Manager']['Tools']:
+            if tool['Class'] in INVALID_TOPICS:
+                tool['Topic'] = INVALID_TOPICS[tool['Class']][0]
+        config_path = os.path.join(cls.artifact_dir, 'rviz_tool_invalid_topics.rviz')
+        with open(config_path, 'w') as stream:
+            yaml.safe_dump(config, stream, sort_keys=False)
 
         cls.waypoints = Collector('waypoint_list', PoseArray)
         cls.status = Collector('coverage_planner/status', PlanStatus)
@@ -274,6 +286,19 @@ class RvizToolTest(unittest.TestCase):
         self.assertAlmostEqual(poses[-1].position.y, goal.y, places=6)
         # The first start was replaced, not kept: the clicks are far apart.
         self.assertGreater(abs(first_start.x - second_start.x), 10.0)
+
+    def test_invalid_topic_names_are_refused_and_the_default_topics_kept(self):
+        self.assertIsNone(self.rviz.poll(), 'rviz exited; see %s' % self.rviz_log)
+        with open(self.rviz_log) as stream:
+            log = stream.read()
+        for name, kept in INVALID_TOPICS.values():
+            self.assertIn('Topic "%s" is not a valid topic name' % name, log)
+            refusals = [line for line in log.splitlines() if '"%s"' % name in line]
+            self.assertEqual(len(refusals), 1, refusals)
+            self.assertIn('still published on %s.' % kept, refusals[0])
+        # The clicks of the other test arrive on these topics; the tools advertise them.
+        self.assertGreater(self.start.subscriber.get_num_connections(), 0)
+        self.assertGreater(self.goal.subscriber.get_num_connections(), 0)
 
     def test_plugins_load_without_pluginlib_errors(self):
         with open(self.rviz_log) as stream:

@@ -7,6 +7,11 @@ if(catkin_FOUND)
   add_rostest(test/ros/planner_load.test DEPENDENCIES ${KC_NODE_TARGETS})
   add_rostest(test/ros/replanning.test DEPENDENCIES ${KC_NODE_TARGETS})
   add_rostest(test/ros/auv_simulator.test DEPENDENCIES ${KC_NODE_TARGETS})
+  # Bad messages and wrongly typed parameters: one ROS_ERROR, a failed status, no output.
+  add_rostest(test/ros/bad_messages.test DEPENDENCIES ${KC_NODE_TARGETS})
+  add_rostest(test/ros/node_parameters.test DEPENDENCIES ${KC_NODE_TARGETS})
+  # The replanner's resident memory over 100 000 visited poses.
+  add_rostest(test/ros/replanner_memory.test DEPENDENCIES ${KC_NODE_TARGETS})
   # GUI test of the rviz tools: needs a DISPLAY (xvfb-run), skips without one.
   add_rostest(test/ros/rviz_tool.test
     DEPENDENCIES ${KC_NODE_TARGETS} kinematic_coverage_rviz_plugins)

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -45,6 +46,32 @@ TEST(TrajectoryGenerator, RejectsAMinTurningRadiusAboveTheTurningRadius) {
   parameters.min_turning_radius = 2.0 * parameters.turning_radius;
   const std::vector<Pose2> waypoints{{0, 0, 0}, {10, 0, 0}, {10, 10, 0}};
   EXPECT_THROW(TrajectoryGenerator(parameters).generate(waypoints, {}), InvalidInputError);
+}
+
+/// One waypoint (or several at one place) is a robot that stays: one pose, with the first
+/// waypoint's heading, under every strategy; no waypoint is invalid.
+TEST(TrajectoryGenerator, OneWaypointGivesOnePoseAndNoneIsInvalid) {
+  const PolygonWithHoles area{{{-5, -5}, {5, -5}, {5, 5}, {-5, 5}}, {}};
+  for (const char* strategy : {"global", "local", "none"}) {
+    SCOPED_TRACE(strategy);
+    PlannerParameters parameters;
+    parameters.smoothing = std::string(strategy) != "none";
+    if (parameters.smoothing) parameters.smoothing_strategy = strategy;
+    for (const std::vector<Pose2>& waypoints :
+         {std::vector<Pose2>{{1, 2, 0.5}}, std::vector<Pose2>{{1, 2, 0.5}, {1, 2, -1.0}}}) {
+      const GeneratedTrajectory trajectory =
+          TrajectoryGenerator(parameters).generate(waypoints, area);
+      ASSERT_EQ(trajectory.poses.size(), 1u);
+      EXPECT_EQ(trajectory.poses[0].x, 1.0);
+      EXPECT_EQ(trajectory.poses[0].y, 2.0);
+      EXPECT_NEAR(trajectory.poses[0].yaw, 0.5, 1e-12);
+      EXPECT_EQ(trajectory.poses[0].t, 0.0);
+      EXPECT_EQ(trajectory.traversal_time_s, 0.0);
+    }
+    EXPECT_THROW(TrajectoryGenerator(parameters).generate({}, area), InvalidInputError);
+    EXPECT_THROW(TrajectoryGenerator(parameters).generate({{std::nan(""), 0, 0}}, area),
+                 InvalidInputError);
+  }
 }
 
 TEST(TrajectoryGenerator, GlobalIsNeverSlowerThanLocalOnRandomLawnmowers) {

@@ -13,6 +13,7 @@
 #include "trajectory_generation_tools/replanning/alpha_shape_triangles.h"
 #include "trajectory_generation_tools/replanning/raster_contours.h"
 #include "trajectory_generation_tools/replanning/region_simplification.h"
+#include "trajectory_generation_tools/replanning/visited_history.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -22,26 +23,6 @@ namespace {
 constexpr double kCellsPerSweepSpacing = 64.0;
 /// Largest raster; coarser cells beyond it.
 constexpr double kMaxRasterCells = 4e6;
-
-/// Convex hull of points (Andrew's monotone chain), counter-clockwise.
-Ring convexHull(std::vector<Point2> points) {
-  std::sort(points.begin(), points.end(), [](const Point2& a, const Point2& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  if (points.size() < 3) return Ring(points.begin(), points.end());
-  Ring hull(2 * points.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
 
 /// The complement of a mask.
 CellMask inverted(const CellMask& mask) {
@@ -64,6 +45,19 @@ RemainingArea RemainingAreaCalculator::compute(const PolygonWithHoles& free_area
       throw InvalidInputError("a visited pose has a non-finite coordinate");
     }
   }
+  const CoverageRaster raster = rasterCovering(free_area);
+  return fromSeen(raster, free_area,
+                  seenMask(raster, visited, FrustumSensor::fromParameters(parameters_), nullptr));
+}
+
+RemainingArea RemainingAreaCalculator::compute(const PolygonWithHoles& free_area,
+                                               const VisitedHistory& visited) const {
+  const CoverageRaster raster = rasterCovering(free_area);
+  return fromSeen(raster, free_area,
+                  seenMask(raster, visited.recent(), visited.sensor(), &visited));
+}
+
+CoverageRaster RemainingAreaCalculator::rasterCovering(const PolygonWithHoles& free_area) const {
   const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
   double min_x = free_area.hull.front().x(), max_x = min_x;
   double min_y = free_area.hull.front().y(), max_y = min_y;
@@ -78,40 +72,56 @@ RemainingArea RemainingAreaCalculator::compute(const PolygonWithHoles& free_area
       std::max(sensor.sweepDistance() / kCellsPerSweepSpacing,
                std::sqrt((max_x - min_x + 1.0) * (max_y - min_y + 1.0) / kMaxRasterCells));
   resolution.max_cells = static_cast<std::size_t>(2 * kMaxRasterCells);
-  const CoverageRaster raster = CoverageRaster::covering(free_area, resolution);
+  return CoverageRaster::covering(free_area, resolution);
+}
 
+CellMask RemainingAreaCalculator::seenMask(const CoverageRaster& raster,
+                                           const std::vector<Pose2>& recent,
+                                           const FrustumSensor& sensor,
+                                           const VisitedHistory* folded) const {
+  CellMask seen(raster.cellCount(), 0);
+  const std::string& method = parameters_.replanning_method;
+  if (method == "footprint") {
+    if (!recent.empty()) {
+      SeenArea area(raster);
+      area.addTrajectory(recent, sensor);
+      seen = area.seenMask();
+    }
+    if (folded != nullptr) folded->markFoldedSeen(raster, seen);
+    return seen;
+  }
+  std::vector<Point2> corners;
+  if (folded != nullptr) {
+    const std::vector<Point2>& kept =
+        method == "convex_hull" ? folded->foldedHull() : folded->foldedCorners();
+    corners.assign(kept.begin(), kept.end());
+  }
+  for (const Pose2& pose : recent) {
+    for (const Point2& corner : sensor.footprint(pose)) corners.push_back(corner);
+  }
+  if (corners.empty()) return seen;
+  if (method == "convex_hull") return raster.rasterize(PolygonWithHoles{convexHull(corners), {}});
+  std::vector<CellSpan> spans;
+  for (const auto& triangle : alphaShapeTriangles(corners, parameters_.alpha)) {
+    Ring ring(triangle.begin(), triangle.end());
+    if (signedArea(ring) < 0.0) std::reverse(ring.begin(), ring.end());
+    raster.appendConvexSpans(ring, spans);
+  }
+  for (const CellSpan& span : spans) {
+    for (int column = span.begin; column < span.end; ++column) {
+      seen[raster.index(span.row, column)] = 1;
+    }
+  }
+  return seen;
+}
+
+RemainingArea RemainingAreaCalculator::fromSeen(const CoverageRaster& raster,
+                                                const PolygonWithHoles& free_area,
+                                                const CellMask& seen) const {
+  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
   RemainingArea result;
   result.cell_size_m = raster.cellSize();
   const CellMask free = raster.rasterize(free_area);
-  CellMask seen(raster.cellCount(), 0);
-  if (!visited.empty()) {
-    const std::string& method = parameters_.replanning_method;
-    if (method == "footprint") {
-      SeenArea area(raster);
-      area.addTrajectory(visited, sensor);
-      seen = area.seenMask();
-    } else {
-      std::vector<Point2> corners;
-      for (const Pose2& pose : visited) {
-        for (const Point2& corner : sensor.footprint(pose)) corners.push_back(corner);
-      }
-      std::vector<CellSpan> spans;
-      if (method == "convex_hull") {
-        seen = raster.rasterize(PolygonWithHoles{convexHull(corners), {}});
-      } else {
-        for (const auto& triangle : alphaShapeTriangles(corners, parameters_.alpha)) {
-          Ring ring(triangle.begin(), triangle.end());
-          if (signedArea(ring) < 0.0) std::reverse(ring.begin(), ring.end());
-          raster.appendConvexSpans(ring, spans);
-        }
-        for (const CellSpan& span : spans) {
-          for (int column = span.begin; column < span.end; ++column) {
-            seen[raster.index(span.row, column)] = 1;
-          }
-        }
-      }
-    }
-  }
   CellMask remaining(raster.cellCount(), 0);
   for (std::size_t i = 0; i < remaining.size(); ++i) {
     remaining[i] = free[i] != 0 && seen[i] == 0 ? 1 : 0;

@@ -5,6 +5,9 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "trajectory_generation_tools/coverage/coverage_raster.h"
+#include "trajectory_generation_tools/replanning/visited_history.h"
 
 namespace kinematic_coverage::core {
 
@@ -44,7 +47,22 @@ class RemainingAreaCalculator {
   /// InvalidInputError for a non-finite pose.
   RemainingArea compute(const PolygonWithHoles& free_area, const std::vector<Pose2>& visited) const;
 
+  /// The same after a bounded history, whose recorded sensor sees its poses: exactly the
+  /// result of its poses while it holds them all, within one of its raster cells after.
+  RemainingArea compute(const PolygonWithHoles& free_area, const VisitedHistory& visited) const;
+
  private:
+  /// The raster the remaining area is computed on (sweep spacing / 64 cells, coarser for
+  /// maps of more than 4 000 000 of them).
+  CoverageRaster rasterCovering(const PolygonWithHoles& free_area) const;
+  /// What `sensor` saw along `recent` by `replanning_method`, plus what the history's
+  /// folded poses saw when `folded` is given.
+  CellMask seenMask(const CoverageRaster& raster, const std::vector<Pose2>& recent,
+                    const FrustumSensor& sensor, const VisitedHistory* folded) const;
+  /// The remaining area (free minus seen) cleaned of slivers and small parts, simplified.
+  RemainingArea fromSeen(const CoverageRaster& raster, const PolygonWithHoles& free_area,
+                         const CellMask& seen) const;
+
   PlannerParameters parameters_;
 };
 

@@ -62,6 +62,31 @@ Replanner::Replanner(const PlannerParameters& parameters) : parameters_(paramete
 ReplannedMission Replanner::replan(const PolygonWithHoles& updated_polygon,
                                    const std::vector<Pose2>& visited, const Point2& goal,
                                    const StageCallback& on_stage) const {
+  if (visited.empty()) {
+    throw InvalidInputError("no visited poses: replanning starts from the last visited pose");
+  }
+  return replanFrom(updated_polygon, visited.back(), visited.size(), goal, on_stage,
+                    [&](const PolygonWithHoles& free_area) {
+                      return RemainingAreaCalculator(parameters_).compute(free_area, visited);
+                    });
+}
+
+ReplannedMission Replanner::replan(const PolygonWithHoles& updated_polygon,
+                                   const VisitedHistory& visited, const Point2& goal,
+                                   const StageCallback& on_stage) const {
+  if (visited.empty()) {
+    throw InvalidInputError("no visited poses: replanning starts from the last visited pose");
+  }
+  return replanFrom(updated_polygon, visited.last(), visited.count(), goal, on_stage,
+                    [&](const PolygonWithHoles& free_area) {
+                      return RemainingAreaCalculator(parameters_).compute(free_area, visited);
+                    });
+}
+
+ReplannedMission Replanner::replanFrom(
+    const PolygonWithHoles& updated_polygon, const Pose2& last, std::size_t visited_count,
+    const Point2& goal, const StageCallback& on_stage,
+    const std::function<RemainingArea(const PolygonWithHoles&)>& remaining_of) const {
   const Clock::time_point start_time = Clock::now();
   ReplannedMission result;
   std::vector<PlanningStage> stages;
@@ -71,18 +96,14 @@ ReplannedMission Replanner::replan(const PolygonWithHoles& updated_polygon,
   };
 
   Clock::time_point t = Clock::now();
-  if (visited.empty()) {
-    throw InvalidInputError("no visited poses: replanning starts from the last visited pose");
-  }
   const PolygonValidator validator;
   validator.validate(updated_polygon);
   validator.validateEndpoint("goal", goal, updated_polygon);
-  const Pose2& last = visited.back();
   if (!std::isfinite(last.x) || !std::isfinite(last.y)) {
     throw InvalidInputError("the last visited pose has a non-finite coordinate");
   }
   stage("validate", t,
-        "updated polygon and goal valid, " + std::to_string(visited.size()) + " visited poses");
+        "updated polygon and goal valid, " + std::to_string(visited_count) + " visited poses");
 
   t = Clock::now();
   CleanedPolygon cleaned = PolygonCleaner().clean(updated_polygon);
@@ -97,7 +118,7 @@ ReplannedMission Replanner::replan(const PolygonWithHoles& updated_polygon,
   }
 
   t = Clock::now();
-  result.remaining = RemainingAreaCalculator(parameters_).compute(result.free_area, visited);
+  result.remaining = remaining_of(result.free_area);
   {
     const RemainingArea& remaining = result.remaining;
     std::ostringstream summary;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -7,6 +9,7 @@
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "trajectory_generation_tools/replanning/remaining_area.h"
+#include "trajectory_generation_tools/replanning/visited_history.h"
 
 namespace kinematic_coverage::core {
 
@@ -37,7 +40,18 @@ class Replanner {
                           const std::vector<Pose2>& visited, const Point2& goal,
                           const StageCallback& on_stage = {}) const;
 
+  /// The same from a bounded history (VisitedHistory): its seen area by its recorded sensor.
+  ReplannedMission replan(const PolygonWithHoles& updated_polygon, const VisitedHistory& visited,
+                          const Point2& goal, const StageCallback& on_stage = {}) const;
+
  private:
+  /// Validates, cleans, takes the remaining area from `remaining_of` (given the cleaned
+  /// free area) and plans it from `last`, the newest of `visited_count` poses.
+  ReplannedMission replanFrom(
+      const PolygonWithHoles& updated_polygon, const Pose2& last, std::size_t visited_count,
+      const Point2& goal, const StageCallback& on_stage,
+      const std::function<RemainingArea(const PolygonWithHoles&)>& remaining_of) const;
+
   PlannerParameters parameters_;
 };
 

@@ -7,8 +7,12 @@
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "auv_simulator");
+  // The handles outlive the node: the last one's end shuts ROS down, and with it the log
+  // that ROS_FATAL writes to.
+  ros::NodeHandle node;
+  ros::NodeHandle private_node("~");
   try {
-    kinematic_coverage::nodes::AuvSimulatorNode node(ros::NodeHandle(), ros::NodeHandle("~"));
+    kinematic_coverage::nodes::AuvSimulatorNode simulator(node, private_node);
     ros::spin();
   } catch (const kinematic_coverage::core::InvalidInputError& error) {
     ROS_FATAL("auv_simulator: %s", error.what());

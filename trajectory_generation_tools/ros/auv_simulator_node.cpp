@@ -20,8 +20,7 @@ constexpr double kMaxStepsPerTick = 100000.0;
 
 double positiveParameter(const ros::NodeHandle& private_node, const std::string& name,
                          double default_value) {
-  double value = default_value;
-  private_node.param(name, value, default_value);
+  const double value = readNumberParameter(private_node, name, default_value);
   if (!(std::isfinite(value) && value > 0.0)) {
     throw core::InvalidInputError("~" + name + " = " + std::to_string(value) +
                                   " is out of range: it must be a finite number > 0");
@@ -51,10 +50,11 @@ void AuvSimulatorNode::onTrajectory(const geometry_msgs::PoseArray::ConstPtr& me
   }
   try {
     const core::PlannerParameters parameters = readPlannerParameters(private_node_);
-    const std::vector<core::Pose2> poses = fromPoseArray(*message);
-    if (poses.empty()) throw core::InvalidInputError("the trajectory has no poses");
-    if (follower_ && message->header.frame_id != visited_.header.frame_id) {
-      throw core::InvalidInputError("the trajectory is in frame '" + message->header.frame_id +
+    if (message->poses.empty()) throw core::InvalidInputError("the trajectory has no poses");
+    const std::vector<core::Pose2> poses = checkedPoses(*message, "trajectory pose");
+    const std::string frame = frameOf(message->header);
+    if (follower_ && frame != visited_.header.frame_id) {
+      throw core::InvalidInputError("the trajectory is in frame '" + frame +
                                     "' but the robot is in frame '" + visited_.header.frame_id +
                                     "'");
     }
@@ -72,7 +72,7 @@ void AuvSimulatorNode::onTrajectory(const geometry_msgs::PoseArray::ConstPtr& me
     time_limit_s_ = parameters.sim_time_limit;
     sim_dt_ = parameters.sim_dt;
     outcome_reported_ = false;
-    visited_.header.frame_id = message->header.frame_id;
+    visited_.header.frame_id = frame;
     if (last_tick_.isZero()) last_tick_ = ros::Time::now();
     std::ostringstream summary;
     summary << "following " << poses.size() << " poses from (" << start.pose.x << ", "

@@ -21,13 +21,14 @@ namespace kinematic_coverage::nodes {
 /// and fixes the frame; a newer one restarts the model from the robot's current pose and
 /// speed, keeping the visited history; one with an older header stamp is ignored. `~status`
 /// (PlanStatus, stage "simulate") reports each start, the arrival at the last pose and every
-/// failure. Bad input (no poses, a non-finite pose, another frame, a parameter out of range, the
-/// last pose not reached within sim_time_limit) gives one ROS_ERROR and a failed status; the node
-/// keeps running.
+/// failure. Bad input (no poses, a non-finite pose or orientation, another frame, a parameter out
+/// of range, the last pose not reached within sim_time_limit) gives one ROS_ERROR and a failed
+/// status; the node keeps running.
 class AuvSimulatorNode {
  public:
   /// Topics are relative to `node`; ~status and the parameters are under `private_node`.
-  /// Throws core::InvalidInputError for ~real_time_factor or ~publish_rate not > 0.
+  /// Throws core::InvalidInputError for ~real_time_factor or ~publish_rate not a number
+  /// (an integer or a double) or not > 0.
   AuvSimulatorNode(const ros::NodeHandle& node, const ros::NodeHandle& private_node);
 
  private:

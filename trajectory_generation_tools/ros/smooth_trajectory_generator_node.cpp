@@ -18,6 +18,13 @@
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::nodes {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
 
 SmoothTrajectoryGeneratorNode::SmoothTrajectoryGeneratorNode(const ros::NodeHandle& node,
                                                              const ros::NodeHandle& private_node)
@@ -37,18 +44,49 @@ SmoothTrajectoryGeneratorNode::SmoothTrajectoryGeneratorNode(const ros::NodeHand
 
 void SmoothTrajectoryGeneratorNode::onPolygon(
     const kinematic_coverage::PolygonWithHolesStamped::ConstPtr& message) {
-  const bool waiting = waypoints_.has_value() && !polygon_.has_value();
-  polygon_ = *message;
+  const auto start = std::chrono::steady_clock::now();
+  const std::string frame = frameOf(message->header);
   ROS_INFO("smooth_trajectory_generator: polygon received (%zu holes, frame %s)",
-           message->polygon.holes.size(), message->header.frame_id.c_str());
-  if (waiting) generate();
+           message->polygon.holes.size(), frame.c_str());
+  // An invalid polygon is forgotten: smoothing against the one before could cross the
+  // obstacles it moved.
+  free_area_.reset();
+  try {
+    const core::PolygonWithHoles raw = fromMessage(message->polygon);
+    core::PolygonValidator().validate(raw);
+    core::CleanedPolygon cleaned = core::PolygonCleaner().clean(raw);
+    for (const std::string& warning : cleaned.warnings) {
+      ROS_WARN("smooth_trajectory_generator: %s", warning.c_str());
+    }
+    free_area_ = std::move(cleaned.free_area);
+    polygon_frame_ = frame;
+  } catch (const core::InvalidInputError& error) {
+    reject(std::string("polygon: ") + error.what(), secondsSince(start), frame);
+    return;
+  } catch (const std::exception& error) {
+    reject(std::string("internal error: polygon: ") + error.what(), secondsSince(start), frame);
+    return;
+  }
+  if (waypoints_) generate();
 }
 
 void SmoothTrajectoryGeneratorNode::onWaypoints(const geometry_msgs::PoseArray::ConstPtr& message) {
-  waypoints_ = *message;
+  const auto start = std::chrono::steady_clock::now();
+  const std::string frame = frameOf(message->header);
   ROS_INFO("smooth_trajectory_generator: waypoint_list of %zu waypoints received",
            message->poses.size());
-  if (!polygon_) {
+  waypoints_.reset();
+  try {
+    if (message->poses.empty()) {
+      throw core::InvalidInputError("waypoint_list has no poses: a trajectory needs at least one");
+    }
+    waypoints_ = checkedPoses(*message, "waypoint");
+    waypoint_frame_ = frame;
+  } catch (const core::InvalidInputError& error) {
+    reject(std::string("waypoint_list: ") + error.what(), secondsSince(start), frame);
+    return;
+  }
+  if (!free_area_) {
     ROS_INFO("smooth_trajectory_generator: waiting for a polygon to smooth against");
     return;
   }
@@ -57,24 +95,19 @@ void SmoothTrajectoryGeneratorNode::onWaypoints(const geometry_msgs::PoseArray::
 
 void SmoothTrajectoryGeneratorNode::generate() {
   const auto start = std::chrono::steady_clock::now();
-  const std::string frame = waypoints_->header.frame_id;
+  const std::vector<core::Pose2> waypoints = std::move(*waypoints_);
+  waypoints_.reset();
   std::string message;
   try {
-    if (!polygon_->header.frame_id.empty() && !frame.empty() &&
-        polygon_->header.frame_id != frame) {
-      throw core::InvalidInputError("waypoint_list is in frame '" + frame +
-                                    "' but the polygon is in frame '" + polygon_->header.frame_id +
-                                    "'");
+    if (polygon_frame_ != waypoint_frame_) {
+      throw core::InvalidInputError("waypoint_list is in frame '" + waypoint_frame_ +
+                                    "' but the polygon is in frame '" + polygon_frame_ + "'");
     }
     const core::PlannerParameters parameters = readPlannerParameters(private_node_);
-    const core::PolygonWithHoles raw = fromMessage(polygon_->polygon);
-    core::PolygonValidator().validate(raw);
-    const core::CleanedPolygon cleaned = core::PolygonCleaner().clean(raw);
     const core::GeneratedTrajectory trajectory =
-        core::TrajectoryGenerator(parameters)
-            .generate(fromPoseArray(*waypoints_), cleaned.free_area);
+        core::TrajectoryGenerator(parameters).generate(waypoints, *free_area_);
     std_msgs::Header header;
-    header.frame_id = frame.empty() ? polygon_->header.frame_id : frame;
+    header.frame_id = polygon_frame_;
     header.stamp = ros::Time::now();
     trajectory_publisher_.publish(toPoseArray(trajectory.poses, header));
     path_publisher_.publish(toPath(trajectory.poses, header));
@@ -84,7 +117,7 @@ void SmoothTrajectoryGeneratorNode::generate() {
     for (const core::TrajectoryPose& pose : trajectory.poses) {
       poses.push_back({pose.x, pose.y, pose.yaw});
     }
-    markers.markers.push_back(heatmapMarker(cleaned.free_area, poses, parameters, header));
+    markers.markers.push_back(heatmapMarker(*free_area_, poses, parameters, header));
     marker_publisher_.publish(markers);
     const core::SmoothingStatistics& turns = trajectory.statistics;
     std::ostringstream summary;
@@ -94,8 +127,7 @@ void SmoothTrajectoryGeneratorNode::generate() {
             << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
             << trajectory.poses.size() << " poses, " << trajectory.trajectory_length_m << " m, "
             << trajectory.traversal_time_s << " s";
-    const double duration_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double duration_s = secondsSince(start);
     ROS_INFO("smooth_trajectory_generator: smooth: %s (%.3f s)", summary.str().c_str(), duration_s);
     publishStatus(true, summary.str(), duration_s, header.frame_id);
     return;
@@ -104,10 +136,13 @@ void SmoothTrajectoryGeneratorNode::generate() {
   } catch (const std::exception& error) {
     message = std::string("internal error: ") + error.what();
   }
+  reject(message, secondsSince(start), waypoint_frame_);
+}
+
+void SmoothTrajectoryGeneratorNode::reject(const std::string& message, double duration_s,
+                                           const std::string& frame_id) {
   ROS_ERROR("smooth_trajectory_generator: smooth: %s", message.c_str());
-  publishStatus(false, message,
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                frame);
+  publishStatus(false, message, duration_s, frame_id);
 }
 
 void SmoothTrajectoryGeneratorNode::publishStatus(bool success, const std::string& message,

@@ -5,8 +5,10 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "kinematic_coverage/PolygonWithHolesStamped.h"
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
 namespace kinematic_coverage::nodes {
 
@@ -15,9 +17,11 @@ namespace kinematic_coverage::nodes {
 /// (Algorithm 1 with the raw hull and holes), samples and times it with the core's
 /// TrajectoryGenerator, and publishes `trajectory`, `trajectory_path` (stamped with the
 /// time of planning plus each pose's time offset), `~markers` (the smoothed path by
-/// variant and the coverage heatmap) and `~status`. A waypoint
-/// list that arrives before any polygon waits for one. Bad input gives one ROS_ERROR, a
-/// failed status and no output; the node keeps running.
+/// variant and the coverage heatmap) and `~status`. A polygon is validated and cleaned when
+/// it arrives; a waypoint list is checked when it arrives (at least one pose, finite
+/// positions, unit quaternions, the polygon's frame) and one that arrives before any valid
+/// polygon waits for one. Bad input (an invalid polygon, a bad waypoint list, parameters)
+/// gives one ROS_ERROR, a failed status and no output; the node keeps running.
 class SmoothTrajectoryGeneratorNode {
  public:
   /// Topics are relative to `node`; ~markers and ~status and the parameters (read at every
@@ -31,6 +35,9 @@ class SmoothTrajectoryGeneratorNode {
   /// Smooths the pending waypoint list against the newest polygon and publishes.
   void generate();
 
+  /// Reports a rejected message: one ROS_ERROR and a failed status.
+  void reject(const std::string& message, double duration_s, const std::string& frame_id);
+
   void publishStatus(bool success, const std::string& message, double duration_s,
                      const std::string& frame_id);
 
@@ -43,8 +50,12 @@ class SmoothTrajectoryGeneratorNode {
   ros::Publisher path_publisher_;
   ros::Publisher marker_publisher_;
   ros::Publisher status_publisher_;
-  std::optional<kinematic_coverage::PolygonWithHolesStamped> polygon_;
-  std::optional<geometry_msgs::PoseArray> waypoints_;
+  /// The newest valid polygon, cleaned, and its frame (docs/REFERENCE.md, Messages).
+  std::optional<core::PolygonWithHoles> free_area_;
+  std::string polygon_frame_;
+  /// The waypoint list waiting for a polygon or being smoothed, checked, and its frame.
+  std::optional<std::vector<core::Pose2>> waypoints_;
+  std::string waypoint_frame_;
 };
 
 }  // namespace kinematic_coverage::nodes

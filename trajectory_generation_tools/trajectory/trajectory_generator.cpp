@@ -1,8 +1,10 @@
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/smoothing/global_path_smoother.h"
 #include "trajectory_generation_tools/trajectory/primitive_path_metrics.h"
@@ -46,6 +48,9 @@ SmoothedPath TrajectoryGenerator::smoothedPath(const std::vector<Pose2>& waypoin
 
 GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& waypoints,
                                                   const PolygonWithHoles& free_area) const {
+  if (waypoints.empty()) {
+    throw InvalidInputError("no waypoints: a trajectory needs at least one");
+  }
   GeneratedTrajectory trajectory;
   if (parameters_.smoothing) {
     SmoothedPath smoothed = smoothedPath(waypoints, free_area);
@@ -54,6 +59,12 @@ GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& wayp
   } else {
     trajectory.path = SegmentPathBuilder().build(waypoints);
     trajectory.statistics = segmentPathStatistics(trajectory.path);
+  }
+  if (trajectory.path.empty()) {
+    // Every waypoint at one place: the robot stays there, turned as the first waypoint.
+    const Pose2& only = waypoints.front();
+    trajectory.path.push_back(PathPrimitive::rotation(
+        only.position(), std::isfinite(only.yaw) ? wrapAngle(only.yaw) : 0.0, 0.0));
   }
   TrajectorySampler(parameters_).sample(trajectory.path, trajectory.poses);
   trajectory.traversal_time_s =

@@ -31,8 +31,10 @@ class TrajectoryGenerator {
  public:
   explicit TrajectoryGenerator(const PlannerParameters& parameters) : parameters_(parameters) {}
 
-  /// The trajectory through `waypoints` in `free_area` (the cleaned free area). Throws
-  /// InvalidInputError for non-finite waypoints or parameters out of range.
+  /// The trajectory through `waypoints` in `free_area` (the cleaned free area); waypoints
+  /// all at one place (one waypoint) give one pose there with the first one's heading.
+  /// Throws InvalidInputError for no waypoints, non-finite waypoints or parameters out of
+  /// range.
   GeneratedTrajectory generate(const std::vector<Pose2>& waypoints,
                                const PolygonWithHoles& free_area) const;
 
