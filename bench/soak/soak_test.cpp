@@ -8,12 +8,7 @@
 // --trajectory-coverage also measures the smoothed trajectory's reachable coverage and
 // adds its distribution (smoothing cuts corners by design, so it is reported, not checked).
 //
-// --family NAME plans HardMapGenerator's maps of that family (test/support/hard_map_generator.h:
-// comb, spiral, rooms, shoreline, touching_holes, star) instead; their planner finds its
-// area through validation and cleaning (planMission), as coverage_tool does.
-//
 // Usage: soak_test --seeds FIRST:LAST[,FIRST:LAST...] [--holes-max 15] [--trajectory-coverage]
-//                  [--family NAME]
 
 #include <algorithm>
 #include <chrono>
@@ -23,7 +18,6 @@
 #include <exception>
 #include <iomanip>
 #include <iostream>
-#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -31,10 +25,8 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
-#include "test/support/hard_map_generator.h"
 #include "test/support/random_missions.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
@@ -50,7 +42,6 @@ struct SoakOptions {
   std::vector<std::pair<std::uint64_t, std::uint64_t>> seed_ranges;  ///< first, last
   int holes_max = 15;
   bool trajectory_coverage = false;
-  std::optional<testing::MapFamily> family;  ///< HardMapGenerator's maps instead
 };
 
 /// The smoothed trajectory's reachable coverage (%) of one seed.
@@ -67,7 +58,7 @@ enum class SoakOutcome { kPassed, kRejected, kFailed };
 SoakOptions parseOptions(int argc, char** argv) {
   const auto usage = [] {
     std::cerr << "usage: soak_test --seeds FIRST:LAST[,FIRST:LAST...] [--holes-max 15] "
-                 "[--trajectory-coverage] [--family NAME]\n";
+                 "[--trajectory-coverage]\n";
     std::exit(2);
   };
   SoakOptions options;
@@ -90,9 +81,6 @@ SoakOptions parseOptions(int argc, char** argv) {
         if (first > last) usage();
         options.seed_ranges.emplace_back(first, last);
       }
-    } else if (flag == "--family") {
-      options.family = testing::HardMapGenerator::fromName(value);
-      if (!options.family) usage();
     } else if (flag == "--holes-max") {
       options.holes_max = std::stoi(value);
       if (options.holes_max < 0) usage();
@@ -114,48 +102,32 @@ bool isPreciseRejection(const std::string& message) {
 /// Plans, smooths and checks one seed; prints a line for a failure. Adds the planning
 /// time of a plan that was made to `planning_times_s`, and with `trajectory_coverage` the
 /// smoothed trajectory's reachable coverage to that vector.
-SoakOutcome runSeed(std::uint64_t seed, const SoakOptions& options,
-                    std::vector<double>& planning_times_s,
+SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& planning_times_s,
                     std::vector<TrajectoryCoverageSample>* trajectory_coverage) {
-  Mission mission;
+  const testing::RandomMission random = testing::randomMission(seed, holes_max);
+  const Mission& mission = random.mission;
   std::ostringstream context;
-  context << "seed " << seed << std::fixed << std::setprecision(1);
-  if (options.family) {
-    const testing::HardMap map = testing::HardMapGenerator(*options.family).generate(seed);
-    mission = map.mission;
-    context << " (" << testing::HardMapGenerator::name(map.family) << ", holes "
-            << mission.polygon.holes.size() << ", footprint " << map.footprint_width_m << " m)";
-  } else {
-    const testing::RandomMission random = testing::randomMission(seed, options.holes_max);
-    mission = random.mission;
-    context << " (size " << random.size_m << " m, holes " << mission.polygon.holes.size()
-            << ", footprint " << random.footprint_width_m << " m)";
-  }
+  context << "seed " << seed << " (size " << std::fixed << std::setprecision(1) << random.size_m
+          << " m, holes " << mission.polygon.holes.size() << ", footprint "
+          << random.footprint_width_m << " m)";
   const auto fail = [&context](const std::string& why) {
     std::cout << "FAIL " << context.str() << ": " << why << std::endl;
     return SoakOutcome::kFailed;
   };
   try {
     const auto started = std::chrono::steady_clock::now();
-    PolygonWithHoles free_area = mission.polygon;
-    CoveragePlan plan;
-    if (options.family) {
-      PlannedMission planned = planMission(mission);
-      free_area = std::move(planned.free_area);
-      plan = std::move(planned.plan);
-    } else {
-      plan = CoveragePlanner(mission.parameters).plan(mission.polygon, mission.start, mission.goal);
-    }
+    const CoveragePlan plan =
+        CoveragePlanner(mission.parameters).plan(mission.polygon, mission.start, mission.goal);
     planning_times_s.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(mission.parameters).generate(plan.waypoints, free_area);
+        TrajectoryGenerator(mission.parameters).generate(plan.waypoints, mission.polygon);
     if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
       return fail("collision: min_obstacle_clearance_m " +
                   std::to_string(trajectory.min_obstacle_clearance_m));
     }
     const double covered = waypointPathReachableCoveragePercent(
-        free_area, plan.offset_parts, FrustumSensor::fromParameters(mission.parameters),
+        mission.polygon, plan.offset_parts, FrustumSensor::fromParameters(mission.parameters),
         plan.waypoints, RasterResolution{0.0, 1e-3, 1'000'000});
     if (!(covered >= kMinCoveragePercent)) {
       return fail("reachable coverage " + std::to_string(covered) + " %");
@@ -164,7 +136,7 @@ SoakOutcome runSeed(std::uint64_t seed, const SoakOptions& options,
       std::vector<Pose2> poses;
       poses.reserve(trajectory.poses.size());
       for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
-      const CoverageEvaluator evaluator(free_area, plan.offset_parts,
+      const CoverageEvaluator evaluator(mission.polygon, plan.offset_parts,
                                         FrustumSensor::fromParameters(mission.parameters),
                                         RasterResolution{0.0, 1e-3, 1'000'000});
       trajectory_coverage->push_back(
@@ -210,7 +182,7 @@ SoakTally runRange(std::uint64_t first, std::uint64_t last, const SoakOptions& o
   SoakTally tally;
   std::uint64_t done = 0;
   for (std::uint64_t seed = first;; ++seed) {
-    switch (runSeed(seed, options, tally.planning_times_s,
+    switch (runSeed(seed, options.holes_max, tally.planning_times_s,
                     options.trajectory_coverage ? &tally.trajectory_coverage : nullptr)) {
       case SoakOutcome::kPassed:
         ++tally.passed;
@@ -268,12 +240,8 @@ int main(int argc, char** argv) {
                       runRange(first, last, options));
     total.add(rows.back().second);
   }
-  if (options.family) {
-    std::cout << "family " << testing::HardMapGenerator::name(*options.family) << "\n";
-  } else {
-    std::cout << "holes-max " << options.holes_max << "\n";
-  }
-  std::cout << "| seeds | passed | rejected | failed | smoothed reachable coverage, least % | "
+  std::cout << "holes-max " << options.holes_max << "\n"
+            << "| seeds | passed | rejected | failed | smoothed reachable coverage, least % | "
                "1st percentile % | median % | median plan s (timing) | p99 plan s (timing) | "
                "max plan s (timing) |\n|---|---:|---:|---:|---|---:|---:|---:|---:|---:|\n";
   for (const auto& [seeds, tally] : rows) printRow(seeds, tally);

@@ -52,23 +52,21 @@ std::string formatPoint(const Point2& p) {
   return out.str();
 }
 
-/// The point of the polygon's boundary nearest to p.
-Point2 nearestBoundaryPoint(const PolygonWithHoles& polygon, const Point2& p) {
-  Point2 best = polygon.hull.front();
-  double best_distance = std::numeric_limits<double>::infinity();
-  auto visit = [&](const Ring& ring) {
-    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-      const Point2 q = closestPointOnSegment(p, ring[i], ring[(i + 1) % n]);
-      const double d = (q - p).norm();
-      if (d < best_distance) {
-        best_distance = d;
-        best = q;
-      }
-    }
-  };
-  visit(polygon.hull);
-  for (const Ring& hole : polygon.holes) visit(hole);
-  return best;
+/// Parameters in [0, 1] that cut the segment [a, b] where it crosses the ring's edges,
+/// sorted, with both ends.
+std::vector<double> ringCrossings(const Ring& ring, const Point2& a, const Point2& b) {
+  std::vector<double> ts = {0.0, 1.0};
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Point2& c = ring[i];
+    const Point2& d = ring[(i + 1) % n];
+    const double denominator = cross({0, 0}, b - a, d - c);
+    if (denominator == 0.0) continue;
+    const double t = cross({0, 0}, c - a, d - c) / denominator;
+    const double u = cross({0, 0}, c - a, b - a) / denominator;
+    if (t > 0.0 && t < 1.0 && u >= 0.0 && u <= 1.0) ts.push_back(t);
+  }
+  std::sort(ts.begin(), ts.end());
+  return ts;
 }
 
 /// True when the segment [a, b] passes through the interior of a hole (more than
@@ -77,17 +75,7 @@ Point2 nearestBoundaryPoint(const PolygonWithHoles& polygon, const Point2& p) {
 bool crossesHole(const std::vector<Ring>& holes, const Point2& a, const Point2& b,
                  double tolerance) {
   for (const Ring& hole : holes) {
-    std::vector<double> ts = {0.0, 1.0};
-    for (std::size_t i = 0, n = hole.size(); i < n; ++i) {
-      const Point2& c = hole[i];
-      const Point2& d = hole[(i + 1) % n];
-      const double denominator = cross({0, 0}, b - a, d - c);
-      if (denominator == 0.0) continue;
-      const double t = cross({0, 0}, c - a, d - c) / denominator;
-      const double u = cross({0, 0}, c - a, b - a) / denominator;
-      if (t > 0.0 && t < 1.0 && u >= 0.0 && u <= 1.0) ts.push_back(t);
-    }
-    std::sort(ts.begin(), ts.end());
+    const std::vector<double> ts = ringCrossings(hole, a, b);
     for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
       const Point2 mid = a + 0.5 * (ts[i] + ts[i + 1]) * (b - a);
       if (insideRing(mid, hole) && distanceToRing(mid, hole) > tolerance) return true;
@@ -96,9 +84,27 @@ bool crossesHole(const std::vector<Ring>& holes, const Point2& a, const Point2& 
   return false;
 }
 
+/// True when the segment from a (inside the hull or outside it, as a robot launched from a
+/// boat) to b (inside) leaves the hull after it has entered it: through a wall between two
+/// bays, say.
+bool leavesTheHull(const Ring& hull, const Point2& a, const Point2& b, double tolerance) {
+  const std::vector<double> ts = ringCrossings(hull, a, b);
+  bool entered = false;
+  for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
+    const Point2 mid = a + 0.5 * (ts[i] + ts[i + 1]) * (b - a);
+    const bool outside = !insideRing(mid, hull) && distanceToRing(mid, hull) > tolerance;
+    if (outside && entered) return true;
+    if (!outside) entered = true;
+  }
+  return false;
+}
+
 /// Where a start or goal enters the planned area: itself when inside the route area,
-/// otherwise the nearest point of the planned parts, joined by a straight leg that must
-/// not cross a hole.
+/// otherwise the nearest point of the planned parts, joined by a straight leg. A leg that
+/// crosses a hole is invalid input (docs/REFERENCE.md, Geometry and input rules); where
+/// the leg to the nearest point would leave the hull (a goal in a bay narrower than two
+/// wall distances, its nearest point across the wall in the next bay), the nearest point
+/// whose leg stays in the free area is taken, and without one the request is invalid.
 Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& route_area,
                   const std::vector<PolygonWithHoles>& parts, const Point2& p,
                   const std::string& what, double tolerance) {
@@ -112,18 +118,37 @@ Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& rou
     }
   }
   if (contains(route_area, p, tolerance)) return p;
-  Point2 entry = nearestBoundaryPoint(parts.front(), p);
+  // The nearest point of every boundary edge of the parts, nearest first.
+  std::vector<std::pair<double, Point2>> candidates;
+  auto visit = [&](const Ring& ring) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      const Point2 q = closestPointOnSegment(p, ring[i], ring[(i + 1) % n]);
+      candidates.emplace_back((q - p).norm(), q);
+    }
+  };
   for (const PolygonWithHoles& part : parts) {
-    const Point2 candidate = nearestBoundaryPoint(part, p);
-    if ((candidate - p).norm() < (entry - p).norm()) entry = candidate;
+    visit(part.hull);
+    for (const Ring& hole : part.holes) visit(hole);
   }
-  if (crossesHole(free_area.holes, p, entry, tolerance)) {
+  std::sort(candidates.begin(), candidates.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  const Point2 nearest = candidates.front().second;
+  if (crossesHole(free_area.holes, p, nearest, tolerance)) {
     throw InvalidInputError(what + " " + formatPoint(p) +
                             " is outside the offset free area and its straight leg to the "
                             "nearest point " +
-                            formatPoint(entry) + " crosses a hole");
+                            formatPoint(nearest) + " crosses a hole");
   }
-  return entry;
+  for (const auto& [distance, entry] : candidates) {
+    if (!leavesTheHull(free_area.hull, p, entry, tolerance) &&
+        !crossesHole(free_area.holes, p, entry, tolerance)) {
+      return entry;
+    }
+  }
+  throw InvalidInputError(what + " " + formatPoint(p) +
+                          " is outside the offset free area and no straight leg inside the "
+                          "free area joins it to the offset free area (its nearest point " +
+                          formatPoint(nearest) + " lies across the hull)");
 }
 
 /// The part nearest to p (0 when p lies in it): the one a robot starting at p enters.

@@ -191,5 +191,44 @@ TEST(CoverageRaster, RejectsInvalidInput) {
   EXPECT_GT(CoverageRaster::countCells(raster.rasterize(far)), 0u);
 }
 
+TEST(CoverageRaster, AreaFractionsOfAnEdgeAlongTheGridAreExact) {
+  // Edges a quarter cell off the cell centres: the centre samples miss (or add) a quarter
+  // cell along all of them, the fractions measure them.
+  const CoverageRaster raster({0, 0}, 1.0, 12, 12);
+  const PolygonWithHoles square{{{1.25, 1.25}, {10.75, 1.25}, {10.75, 10.75}, {1.25, 10.75}}, {}};
+  const double exact = 9.5 * 9.5;
+  EXPECT_GT(std::abs(raster.area(raster.rasterize(square)) - exact), 5.0);
+  const CellFractions fractions = raster.areaFractions(square);
+  double sum = 0.0;
+  for (float f : fractions) sum += f;
+  EXPECT_NEAR(sum, exact, 1e-4);
+  EXPECT_FLOAT_EQ(fractions[raster.index(1, 1)], 0.75f * 0.75f);
+  EXPECT_FLOAT_EQ(fractions[raster.index(5, 1)], 0.75f);
+  EXPECT_FLOAT_EQ(fractions[raster.index(5, 5)], 1.0f);
+  EXPECT_FLOAT_EQ(fractions[raster.index(0, 0)], 0.0f);
+}
+
+TEST(CoverageRaster, AreaFractionsOfRandomMapsSumToTheirArea) {
+  // Within perimeter * cell / (2 * kFractionLines), holes and slanted edges included.
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 20; ++trial) {
+    const PolygonWithHoles map = testing::randomMap(rng, 40.0, 6, 2.0);
+    const CoverageRaster raster = CoverageRaster::covering(map, {0.3, 1e-3, 4'000'000});
+    double perimeter = 0.0;
+    auto addPerimeter = [&](const Ring& ring) {
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        perimeter += (ring[(i + 1) % ring.size()] - ring[i]).norm();
+      }
+    };
+    addPerimeter(map.hull);
+    for (const Ring& hole : map.holes) addPerimeter(hole);
+    double sum = 0.0;
+    for (float f : raster.areaFractions(map)) sum += f;
+    EXPECT_NEAR(sum * raster.cellArea(), area(map),
+                perimeter * raster.cellSize() / (2.0 * CoverageRaster::kFractionLines))
+        << "trial " << trial;
+  }
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core

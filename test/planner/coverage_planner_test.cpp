@@ -87,6 +87,34 @@ TEST(CoveragePlanner, OffsetPartsLargestPlansOnlyTheLargestPartAndNamesTheOthers
   for (const Pose2& waypoint : plan.waypoints) EXPECT_LE(waypoint.x, 20.0);
 }
 
+TEST(CoveragePlanner, AGoalInANarrowBayIsJoinedAlongTheBayNotThroughItsWall) {
+  // A 1.2 m bay (narrower than two wall distances) beside a 6 m one, a wall 0.3 m thick
+  // between them: the nearest point of the offset free area to a goal deep in the narrow
+  // bay lies across the wall; the leg goes out of the bay instead.
+  const PolygonWithHoles comb = {{{0, 0},
+                                  {30, 0},
+                                  {30, 10},
+                                  {12.5, 10},
+                                  {12.5, 20},
+                                  {6.5, 20},
+                                  {6.5, 10},
+                                  {6.2, 10},
+                                  {6.2, 20},
+                                  {5, 20},
+                                  {5, 10},
+                                  {0, 10}},
+                                 {}};
+  const PlannerParameters parameters;
+  const Point2 goal(5.6, 18);
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(comb, {2, 2}, goal);
+  expectValidPlan(comb, plan, parameters, {2, 2}, goal);
+  ASSERT_EQ(plan.last_inside, plan.waypoints.size() - 2);
+  const Point2 entry = plan.waypoints[plan.last_inside].position();
+  EXPECT_TRUE(segmentInside(comb, entry, goal)) << entry.transpose();
+  EXPECT_NEAR(entry.x(), 5.6, 1e-9);
+  EXPECT_NEAR(entry.y(), 9.0, 1e-9);
+}
+
 TEST(CoveragePlanner, StartOutsideTheHullIsJoinedByAStraightLeg) {
   const PlannerParameters parameters;
   const CoveragePlan plan = CoveragePlanner(parameters).plan(kLake, {-10, 15}, {15, 40});

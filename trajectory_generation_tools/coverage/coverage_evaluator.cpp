@@ -37,6 +37,7 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
     : sensor_(requireValid(sensor)),
       raster_(CoverageRaster::covering(free_area, resolution)),
       free_area_(raster_.rasterize(free_area)),
+      free_fractions_(raster_.areaFractions(free_area)),
       offset_free_area_(free_area_.size(), 0) {
   for (const PolygonWithHoles& part : offset_parts) {
     const CellMask mask = raster_.rasterize(part);
@@ -72,17 +73,25 @@ CoverageReport CoverageEvaluator::report(const SeenArea& seen) const {
     throw InvalidInputError("coverage: the seen area was made on another raster");
   }
   CoverageReport result;
-  result.coverage_percent = seen.coveragePercent(free_area_);
+  double free_cells = 0.0;
+  double seen_free_cells = 0.0;
+  double unreachable_cells = 0.0;
+  std::size_t unseen_reachable = 0;
+  for (std::size_t i = 0; i < free_fractions_.size(); ++i) {
+    const double inside = free_fractions_[i];
+    free_cells += inside;
+    if (seen.seen(i)) seen_free_cells += inside;
+    if (reachable_area_[i] == 0) unreachable_cells += inside;
+    if (reachable_area_[i] != 0 && !seen.seen(i)) ++unseen_reachable;
+  }
+  if (!(free_cells > 0.0)) {
+    throw InvalidInputError("coverage: the free area covers no cell of the raster");
+  }
+  result.coverage_percent = 100.0 * seen_free_cells / free_cells;
   result.coverage_loss_percent = 100.0 - result.coverage_percent;
   result.reachable_coverage_percent = seen.coveragePercent(reachable_area_);
-  std::size_t unseen_reachable = 0;
-  std::size_t unreachable = 0;
-  for (std::size_t i = 0; i < free_area_.size(); ++i) {
-    if (reachable_area_[i] != 0 && !seen.seen(i)) ++unseen_reachable;
-    if (free_area_[i] != 0 && reachable_area_[i] == 0) ++unreachable;
-  }
   result.unseen_reachable_area_m2 = static_cast<double>(unseen_reachable) * raster_.cellArea();
-  result.unreachable_area_m2 = static_cast<double>(unreachable) * raster_.cellArea();
+  result.unreachable_area_m2 = unreachable_cells * raster_.cellArea();
   return result;
 }
 

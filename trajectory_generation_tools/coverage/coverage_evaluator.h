@@ -64,13 +64,17 @@ class CoverageEvaluator {
   SeenArea seeWaypointPath(const std::vector<Pose2>& waypoints,
                            double rotation_step = kDefaultRotationStep) const;
 
-  /// The coverage figures of a seen area made on this evaluator's raster.
+  /// The coverage figures of a seen area made on this evaluator's raster: coverage_percent
+  /// weighs every seen cell by its share inside the free area (areaFractions), the
+  /// reachable figures count the cells whose centres lie in the reachable area.
   CoverageReport report(const SeenArea& seen) const;
 
  private:
   FrustumSensor sensor_;
   CoverageRaster raster_;
   CellMask free_area_;
+  /// Each cell's share inside the free area: the weight of coverage_percent.
+  CellFractions free_fractions_;
   CellMask offset_free_area_;
   CellMask reachable_area_;
 };

@@ -216,6 +216,80 @@ CellMask CoverageRaster::rasterize(const PolygonWithHoles& polygon) const {
   return mask;
 }
 
+CellFractions CoverageRaster::areaFractions(const PolygonWithHoles& polygon) const {
+  const CellMask centres = rasterize(polygon);
+  CellFractions fractions(centres.begin(), centres.end());
+  std::vector<const Ring*> rings{&polygon.hull};
+  for (const Ring& hole : polygon.holes) rings.push_back(&hole);
+  // Per row, the edges that reach into it and the cells they pass through.
+  std::vector<std::vector<std::pair<Point2, Point2>>> row_edges(static_cast<std::size_t>(rows_));
+  std::vector<std::vector<int>> row_cells(static_cast<std::size_t>(rows_));
+  const auto clampedRow = [&](double y) {
+    const double row = std::floor((y - origin_.y()) / cell_size_);
+    return static_cast<int>(std::clamp(row, 0.0, static_cast<double>(rows_ - 1)));
+  };
+  const auto clampedColumn = [&](double x) {
+    const double column = std::floor((x - origin_.x()) / cell_size_);
+    return static_cast<int>(std::clamp(column, 0.0, static_cast<double>(columns_ - 1)));
+  };
+  for (const Ring* ring : rings) {
+    for (std::size_t i = 0, n = ring->size(); i < n; ++i) {
+      const Point2& a = std::min((*ring)[i], (*ring)[(i + 1) % n], lowerFirst);
+      const Point2& b = std::max((*ring)[i], (*ring)[(i + 1) % n], lowerFirst);
+      for (int row = clampedRow(a.y()); row <= clampedRow(b.y()); ++row) {
+        if (a.y() != b.y()) row_edges[static_cast<std::size_t>(row)].emplace_back(a, b);
+        // The part of the edge within the row's band, and the cells under it.
+        const double low = std::max(a.y(), origin_.y() + row * cell_size_);
+        const double high = std::min(b.y(), origin_.y() + (row + 1) * cell_size_);
+        double x0 = a.x();
+        double x1 = b.x();
+        if (a.y() != b.y()) {
+          x0 = crossingAt(a, b, std::clamp(low, a.y(), b.y()));
+          x1 = crossingAt(a, b, std::clamp(high, a.y(), b.y()));
+        }
+        std::vector<int>& cells = row_cells[static_cast<std::size_t>(row)];
+        for (int column = clampedColumn(std::min(x0, x1));
+             column <= clampedColumn(std::max(x0, x1)); ++column) {
+          cells.push_back(column);
+        }
+      }
+    }
+  }
+  std::vector<double> crossings;
+  std::vector<double> inside;
+  for (int row = 0; row < rows_; ++row) {
+    std::vector<int>& cells = row_cells[static_cast<std::size_t>(row)];
+    if (cells.empty()) continue;
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    inside.assign(cells.size(), 0.0);
+    for (int line = 0; line < kFractionLines; ++line) {
+      const double y = origin_.y() + (row + (line + 0.5) / kFractionLines) * cell_size_;
+      crossings.clear();
+      for (const auto& [a, b] : row_edges[static_cast<std::size_t>(row)]) {
+        if (a.y() <= y && y < b.y()) crossings.push_back(crossingAt(a, b, y));
+      }
+      std::sort(crossings.begin(), crossings.end());
+      // Even-odd: [crossings[0], crossings[1]], [crossings[2], crossings[3]], ... are inside.
+      std::size_t interval = 0;
+      for (std::size_t k = 0; k < cells.size(); ++k) {
+        const double left = origin_.x() + cells[k] * cell_size_;
+        const double right = left + cell_size_;
+        while (interval + 1 < crossings.size() && crossings[interval + 1] <= left) interval += 2;
+        for (std::size_t j = interval; j + 1 < crossings.size() && crossings[j] < right; j += 2) {
+          inside[k] +=
+              std::max(0.0, std::min(right, crossings[j + 1]) - std::max(left, crossings[j]));
+        }
+      }
+    }
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      fractions[index(row, cells[k])] =
+          static_cast<float>(std::clamp(inside[k] / (kFractionLines * cell_size_), 0.0, 1.0));
+    }
+  }
+  return fractions;
+}
+
 void CoverageRaster::appendConvexSpans(const Ring& convex, std::vector<CellSpan>& spans) const {
   if (convex.size() < 3) return;
   double low = std::numeric_limits<double>::infinity();
