@@ -34,7 +34,8 @@ double median(std::vector<double> times) {
   return times[times.size() / 2];
 }
 
-/// Times the stages of measureTrajectoryCoverage on one trajectory and prints its row.
+/// Times the stages of measureTrajectoryCoverage's figures on one trajectory (not its
+/// heatmap, drawn on a second grid) and prints its row.
 void benchmark(const char* name, const kinematic_coverage::core::Mission& mission,
                const kinematic_coverage::core::PlannedMission& planned, int runs) {
   using namespace kinematic_coverage::core;
@@ -51,7 +52,7 @@ void benchmark(const char* name, const kinematic_coverage::core::Mission& missio
   for (int run = 0; run < runs; ++run) {
     const Clock::time_point start = Clock::now();
     const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts, sensor,
-                                      reportingResolution());
+                                      reportingResolution(), kReportingGridAngle);
     const Clock::time_point rasterized = Clock::now();
     const SeenArea seen = evaluator.seeTrajectory(poses);
     const Clock::time_point seen_done = Clock::now();

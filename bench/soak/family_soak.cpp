@@ -61,6 +61,8 @@ constexpr double kRelativeTolerance = 1e-9;
 /// Slack on the sampling distance and the curvature bound (rounding).
 constexpr double kSamplingSlack = 1e-6;
 constexpr double kCurvatureSlack = 1e-6;
+/// Seeds passed over for their size before a family is given up (its maps are larger).
+constexpr std::uint64_t kMaxPassedOver = 10'000;
 
 struct Options {
   int maps = 0;
@@ -247,10 +249,19 @@ int runFamily(testing::MapFamily family, const Options& options) {
   double unseen_difference = 0.0;
   std::size_t max_vertices = 0;
   std::vector<double> times;
+  std::uint64_t passed_over = 0;
   for (std::uint64_t seed = options.first_seed; maps < options.maps; ++seed) {
     const testing::HardMap map = generator.generate(seed);
     const std::size_t vertices = vertexCount(map.mission.polygon);
-    if (vertices > options.max_vertices) continue;
+    if (vertices > options.max_vertices) {
+      if (++passed_over > kMaxPassedOver) {
+        std::cout << "FAIL " << name << ": no map of at most " << options.max_vertices
+                  << " vertices in " << kMaxPassedOver << " seeds" << std::endl;
+        ++failed;
+        break;
+      }
+      continue;
+    }
     max_vertices = std::max(max_vertices, vertices);
     const MapResult result = runMap(map, options);
     ++maps;

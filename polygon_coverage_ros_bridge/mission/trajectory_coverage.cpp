@@ -12,15 +12,20 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
                                              const PlannerParameters& parameters,
                                              const std::vector<Pose2>& poses) {
   const auto start = std::chrono::steady_clock::now();
-  const CoverageEvaluator evaluator(
-      free_area, offset_parts, FrustumSensor::fromParameters(parameters), reportingResolution());
+  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters);
+  const CoverageEvaluator evaluator(free_area, offset_parts, sensor, reportingResolution(),
+                                    kReportingGridAngle);
   TrajectoryCoverage coverage;
-  const SeenArea seen = evaluator.seeTrajectory(poses);
-  coverage.report = evaluator.report(seen);
+  coverage.report = evaluator.report(evaluator.seeTrajectory(poses));
   coverage.cell_size_m = evaluator.raster().cellSize();
+  // The heatmap on a grid along the map's axes, as plots draw it.
+  RasterResolution drawing;
+  drawing.min_cell_size = kReportingCellSize;
+  SeenArea seen(CoverageRaster::covering(free_area, drawing));
+  seen.addTrajectory(poses, sensor);
+  coverage.heatmap = seen.heatmap();
   coverage.duration_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  coverage.heatmap = seen.heatmap();
   return coverage;
 }
 

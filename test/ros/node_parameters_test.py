@@ -10,6 +10,7 @@ import subprocess
 import sys
 import unittest
 
+import roslib.packages
 import rospy
 import rostest
 from geometry_msgs.msg import Pose, PoseArray, PoseStamped
@@ -26,9 +27,13 @@ SIMULATOR = '/auv_simulator'
 def run_node(node_type, name, *parameters):
     """Runs a node with private parameters (`_name:=value`: an integer, a double, true or
     false, else a string) until it exits; returns its exit status and output."""
-    done = subprocess.run(['rosrun', 'kinematic_coverage', node_type, '__name:=' + name]
-                          + list(parameters), capture_output=True, text=True,
-                          timeout=START_TIMEOUT_S)
+    # The executable as roslaunch finds it (rosrun's own search trips over build trees
+    # inside the package's folder).
+    executables = roslib.packages.find_node('kinematic_coverage', node_type)
+    if not executables:
+        raise AssertionError('no executable %s in package kinematic_coverage' % node_type)
+    done = subprocess.run([executables[0], '__name:=' + name] + list(parameters),
+                          capture_output=True, text=True, timeout=START_TIMEOUT_S)
     return done.returncode, done.stdout + done.stderr
 
 

@@ -1,5 +1,6 @@
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <sstream>
 
@@ -20,6 +21,24 @@ const FrustumSensor& requireValid(const FrustumSensor& sensor) {
   return sensor;
 }
 
+/// The polygon turned by `angle` about the origin.
+PolygonWithHoles turned(const PolygonWithHoles& polygon, double angle) {
+  if (angle == 0.0) return polygon;
+  const Eigen::Rotation2Dd rotation(angle);
+  PolygonWithHoles result = polygon;
+  for (Point2& p : result.hull) p = rotation * p;
+  for (Ring& hole : result.holes) {
+    for (Point2& p : hole) p = rotation * p;
+  }
+  return result;
+}
+
+std::vector<PolygonWithHoles> turned(const std::vector<PolygonWithHoles>& parts, double angle) {
+  std::vector<PolygonWithHoles> result;
+  for (const PolygonWithHoles& part : parts) result.push_back(turned(part, angle));
+  return result;
+}
+
 }  // namespace
 
 RasterResolution reportingResolution() {
@@ -27,19 +46,21 @@ RasterResolution reportingResolution() {
   resolution.cell_size = 0.0;
   resolution.relative_accuracy = 1e-3;
   resolution.min_cell_size = kReportingCellSize;
+  resolution.floor_cells = kReportingFloorCells;
   return resolution;
 }
 
 CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
                                      const std::vector<PolygonWithHoles>& offset_parts,
                                      const FrustumSensor& sensor,
-                                     const RasterResolution& resolution)
+                                     const RasterResolution& resolution, double grid_angle)
     : sensor_(requireValid(sensor)),
-      raster_(CoverageRaster::covering(free_area, resolution)),
-      free_area_(raster_.rasterize(free_area)),
-      free_fractions_(raster_.areaFractions(free_area)),
+      grid_angle_(grid_angle),
+      raster_(CoverageRaster::covering(turned(free_area, -grid_angle), resolution)),
+      free_area_(raster_.rasterize(turned(free_area, -grid_angle))),
+      free_fractions_(raster_.areaFractions(turned(free_area, -grid_angle))),
       offset_free_area_(free_area_.size(), 0) {
-  for (const PolygonWithHoles& part : offset_parts) {
+  for (const PolygonWithHoles& part : turned(offset_parts, -grid_angle)) {
     const CellMask mask = raster_.rasterize(part);
     for (std::size_t i = 0; i < mask.size(); ++i) offset_free_area_[i] |= mask[i];
   }
@@ -53,16 +74,31 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
                                                             sensor_.length());
 }
 
+Point2 CoverageEvaluator::toRaster(const Point2& p) const {
+  return grid_angle_ == 0.0 ? p : Point2(Eigen::Rotation2Dd(-grid_angle_) * p);
+}
+
+std::vector<Pose2> CoverageEvaluator::toRaster(const std::vector<Pose2>& poses) const {
+  if (grid_angle_ == 0.0) return poses;
+  std::vector<Pose2> result;
+  result.reserve(poses.size());
+  for (const Pose2& pose : poses) {
+    const Point2 p = toRaster(pose.position());
+    result.push_back({p.x(), p.y(), pose.yaw - grid_angle_});
+  }
+  return result;
+}
+
 SeenArea CoverageEvaluator::seeTrajectory(const std::vector<Pose2>& poses) const {
   SeenArea seen(raster_);
-  seen.addTrajectory(poses, sensor_);
+  seen.addTrajectory(toRaster(poses), sensor_);
   return seen;
 }
 
 SeenArea CoverageEvaluator::seeWaypointPath(const std::vector<Pose2>& waypoints,
                                             double rotation_step) const {
   SeenArea seen(raster_);
-  seen.addWaypointPath(waypoints, sensor_, rotation_step);
+  seen.addWaypointPath(toRaster(waypoints), sensor_, rotation_step);
   return seen;
 }
 

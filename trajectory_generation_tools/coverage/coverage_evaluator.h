@@ -29,13 +29,25 @@ struct CoverageReport {
 /// at most 5 cm, accurate to 0.1 % of the free area.
 constexpr double kReportingCellSize = 0.05;
 
+/// Angle (radians) between the reporting raster's axes and the map's: a boundary or a
+/// lane along the grid would put all of its cells' centre samples on one side of it, a
+/// bias of up to half a cell along its whole length (0.2 % of a 150 m^2 spiral of
+/// corridors); at an angle no map drawn in whole degrees has, the samples fall on both
+/// sides alike.
+constexpr double kReportingGridAngle = 0.2;
+
+/// Grids of up to this many cells are affordable for every report: maps smaller than
+/// 50 m x 50 m get cells finer than kReportingCellSize, down to this count.
+constexpr std::size_t kReportingFloorCells = 1'000'000;
+
 /// The resolution of the coverage figures that coverage_tool reports: the automatic cell
 /// size for a worst-case error of 0.1 % of the free area, but no finer than
-/// kReportingCellSize. Maps up to about 100 m across get 5 cm cells, whose
-/// error is far below 0.1 % (test/coverage/analytic_coverage_test.cpp) although the worst
-/// case (perimeter * cell / 2) is looser; larger maps get the coarser cells that the bound
-/// allows, which the 4 000 000-cell budget coarsens further on large maps (by 1 % on a
-/// square, more on long or ragged maps, whose worst case then exceeds 0.1 %).
+/// kReportingCellSize on maps larger than 50 m x 50 m, nor than a grid of
+/// kReportingFloorCells cells on smaller ones (a 30 m lake gets 3.2 cm cells, a 9 m comb
+/// 0.9 cm). The worst case (perimeter * cell / 2) is looser than the typical error
+/// (test/coverage/analytic_coverage_test.cpp); larger maps get the coarser cells that
+/// the bound allows, which the 4 000 000-cell budget coarsens further on large maps (by
+/// 1 % on a square, more on long or ragged maps, whose worst case then exceeds 0.1 %).
 RasterResolution reportingResolution();
 
 /// Evaluates what a sensor sees of a map: rasterizes the free area, the offset free area
@@ -47,9 +59,12 @@ class CoverageEvaluator {
   /// wall offset splits the free area), every one of them grown into the reachable area.
   /// Throws InvalidInputError for degenerate or non-finite areas, a sensor whose width is
   /// not > 0 or whose length is not >= 0, or an offset free area that covers no cell.
+  /// With `grid_angle`, the raster's axes turn by that angle against the map's (the map,
+  /// the areas and every pose are turned by its opposite before they are rasterized);
+  /// raster(), the masks and the seen areas are then in the raster's frame.
   CoverageEvaluator(const PolygonWithHoles& free_area,
                     const std::vector<PolygonWithHoles>& offset_parts, const FrustumSensor& sensor,
-                    const RasterResolution& resolution = {});
+                    const RasterResolution& resolution = {}, double grid_angle = 0.0);
 
   const CoverageRaster& raster() const { return raster_; }
   const CellMask& freeArea() const { return free_area_; }
@@ -70,7 +85,12 @@ class CoverageEvaluator {
   CoverageReport report(const SeenArea& seen) const;
 
  private:
+  /// Map frame to raster frame.
+  Point2 toRaster(const Point2& p) const;
+  std::vector<Pose2> toRaster(const std::vector<Pose2>& poses) const;
+
   FrustumSensor sensor_;
+  double grid_angle_;
   CoverageRaster raster_;
   CellMask free_area_;
   /// Each cell's share inside the free area: the weight of coverage_percent.

@@ -138,7 +138,12 @@ CoverageRaster CoverageRaster::covering(const PolygonWithHoles& region,
     for (const Ring& hole : region.holes) boundary_length += perimeter(hole);
     cell_size = 2.0 * resolution.relative_accuracy * region_area / boundary_length;
     const double budget_cell_size = std::sqrt(extent.x() * extent.y() / budget);
-    cell_size = std::max({cell_size, resolution.min_cell_size, budget_cell_size});
+    double floor = resolution.min_cell_size;
+    if (resolution.floor_cells > 0) {
+      floor = std::min(
+          floor, std::sqrt(extent.x() * extent.y() / static_cast<double>(resolution.floor_cells)));
+    }
+    cell_size = std::max({cell_size, floor, budget_cell_size});
     while (cells(cell_size) > budget) cell_size *= kCellSizeGrowth;
   }
   const double columns = cellsAlong(extent.x(), cell_size);

@@ -40,6 +40,11 @@ struct RasterResolution {
   /// evaluation time, grows with the inverse square of the size; a floor keeps them
   /// affordable where a coarser grid is already accurate enough.
   double min_cell_size = 0.0;
+  /// The floor gives way, down to the cell size at which the grid has this many cells (0:
+  /// never): a small map gets fine cells while they are cheap, since the floor would leave
+  /// its error above the accuracy asked for (a 34 m^2 comb of narrow bays at 5 cm cells is
+  /// off by 0.4 %).
+  std::size_t floor_cells = 0;
 };
 
 /// A grid of square cells over a bounding box, on which areas are sampled at the cell
