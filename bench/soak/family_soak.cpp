@@ -9,7 +9,8 @@
 //  - every pose lies in the free area and the trajectory keeps a clearance above 0;
 //  - consecutive poses are at most the sampling distance apart (continuity), and the
 //    curvature is at most 1 / r;
-//  - on maps of at most --oracle-max-vertices vertices, the coverage that metrics.json
+//  - on maps of at most --oracle-max-vertices vertices (and trajectories of at most
+//    kOracleMaxPoses poses), the coverage that metrics.json
 //    reports (coverage_percent) equals the exact polygon oracle's
 //    (test/coverage/exact_coverage_oracle.h) within 0.1 % of the free area. The unseen
 //    reachable area is compared too, with the oracle's reachable area grown from the
@@ -20,9 +21,11 @@
 // each failure with its family and seed, a progress line every 20 maps, and a table with a
 // row per family. Exit status 1 when any map failed.
 //
-// Usage: family_soak --maps N [--first-seed S] [--families comb,spiral,...]
+// Usage: family_soak --maps N[,N...] [--first-seed S] [--families comb,spiral,...]
 //                    [--max-vertices V] [--oracle-max-vertices 200]
 // Seeds are taken from S on; maps of more than V vertices are passed over (not counted).
+// Each N is a batch of maps with its own table row ("comb, maps 1-5", "comb, maps 6-200"),
+// so that a short run prints the first rows of a long one.
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -38,6 +41,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -61,11 +65,16 @@ constexpr double kRelativeTolerance = 1e-9;
 /// Slack on the sampling distance and the curvature bound (rounding).
 constexpr double kSamplingSlack = 1e-6;
 constexpr double kCurvatureSlack = 1e-6;
+/// Trajectories of more poses are not measured by the oracle: its exact union of every
+/// footprint and of the hull of every two consecutive ones can outgrow memory (a star map
+/// of 66 vertices and 4 172 poses ran out of it); a map whose oracle runs out of memory is
+/// not counted as checked either.
+constexpr std::size_t kOracleMaxPoses = 3000;
 /// Seeds passed over for their size before a family is given up (its maps are larger).
 constexpr std::uint64_t kMaxPassedOver = 10'000;
 
 struct Options {
-  int maps = 0;
+  std::vector<int> batches;  ///< maps per table row, in order
   std::uint64_t first_seed = 0;
   std::vector<testing::MapFamily> families = testing::HardMapGenerator::families();
   std::size_t max_vertices = std::numeric_limits<std::size_t>::max();
@@ -73,7 +82,7 @@ struct Options {
 };
 
 [[noreturn]] void usage() {
-  std::cerr << "usage: family_soak --maps N [--first-seed S] [--families comb,spiral,...] "
+  std::cerr << "usage: family_soak --maps N[,N...] [--first-seed S] [--families comb,spiral,...] "
                "[--max-vertices V] [--oracle-max-vertices 200]\n";
   std::exit(2);
 }
@@ -85,7 +94,12 @@ Options parseOptions(int argc, char** argv) {
     if (i + 1 >= argc) usage();
     const std::string value = argv[++i];
     if (flag == "--maps") {
-      options.maps = std::stoi(value);
+      std::istringstream sizes(value);
+      std::string size;
+      while (std::getline(sizes, size, ',')) {
+        options.batches.push_back(std::stoi(size));
+        if (options.batches.back() <= 0) usage();
+      }
     } else if (flag == "--first-seed") {
       options.first_seed = std::stoull(value);
     } else if (flag == "--families") {
@@ -105,7 +119,7 @@ Options parseOptions(int argc, char** argv) {
       usage();
     }
   }
-  if (options.maps <= 0 || options.families.empty()) usage();
+  if (options.batches.empty() || options.families.empty()) usage();
   return options;
 }
 
@@ -118,8 +132,9 @@ std::size_t vertexCount(const PolygonWithHoles& polygon) {
 /// What one map showed.
 struct MapResult {
   bool failed = false;
-  bool split = false;   ///< the offset free area fell into several parts
-  bool oracle = false;  ///< compared with the oracle
+  bool split = false;       ///< the offset free area fell into several parts
+  bool oracle = false;      ///< small enough for the oracle
+  int oracle_measured = 0;  ///< trajectories the oracle measured (of two)
   /// Largest |reported - exact| of coverage_percent and of the unseen reachable area, both
   /// in % of the free area.
   double coverage_difference_percent = 0.0;
@@ -161,15 +176,21 @@ std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
   if (parameters.smoothing && trajectory.max_curvature > 1.0 / radius + kCurvatureSlack) {
     failures.push_back("curvature " + std::to_string(trajectory.max_curvature) + " above 1/r");
   }
-  if (!failures.empty() || !with_oracle) return failures;
+  if (!failures.empty() || !with_oracle || poses.size() > kOracleMaxPoses) return failures;
   const TrajectoryCoverage reported =
       measureTrajectoryCoverage(free_area, plan.offset_parts, parameters, poses);
   // The oracle grows the planner's offset parts, not its own erosion: the planner's mitred
   // offset lacks w^2 (tan(a/2) - a/2) at every reflex corner (a: its turn) of the exact
   // one, a gap of the offset's definition, not of the coverage measurement checked here.
-  const testing::ExactCoverageOracle oracle(free_area, plan.offset_parts,
-                                            testing::oracleFootprint(parameters));
-  const testing::ExactCoverage exact = oracle.measure(poses);
+  testing::ExactCoverage exact;
+  try {
+    const testing::ExactCoverageOracle oracle(free_area, plan.offset_parts,
+                                              testing::oracleFootprint(parameters));
+    exact = oracle.measure(poses);
+  } catch (const std::bad_alloc&) {
+    return failures;  // the oracle's limit, not the package's: the map is not counted checked
+  }
+  ++result->oracle_measured;
   const double free_m2 = exact.free_area_m2;
   const double coverage = std::abs(reported.report.coverage_percent - exact.coverage_percent);
   const double unseen =
@@ -237,10 +258,8 @@ double quantile(std::vector<double> values, double q) {
   return values[std::min(values.size() - 1, rank == 0 ? 0 : rank - 1)];
 }
 
-/// Runs one family's maps and prints its table row; returns the number of failed maps.
-int runFamily(testing::MapFamily family, const Options& options) {
-  const testing::HardMapGenerator generator(family);
-  const std::string name = testing::HardMapGenerator::name(family);
+/// The maps of one batch and what they showed.
+struct BatchTally {
   int maps = 0;
   int failed = 0;
   int split = 0;
@@ -249,40 +268,57 @@ int runFamily(testing::MapFamily family, const Options& options) {
   double unseen_difference = 0.0;
   std::size_t max_vertices = 0;
   std::vector<double> times;
-  std::uint64_t passed_over = 0;
-  for (std::uint64_t seed = options.first_seed; maps < options.maps; ++seed) {
-    const testing::HardMap map = generator.generate(seed);
-    const std::size_t vertices = vertexCount(map.mission.polygon);
-    if (vertices > options.max_vertices) {
-      if (++passed_over > kMaxPassedOver) {
-        std::cout << "FAIL " << name << ": no map of at most " << options.max_vertices
-                  << " vertices in " << kMaxPassedOver << " seeds" << std::endl;
-        ++failed;
-        break;
-      }
-      continue;
-    }
-    max_vertices = std::max(max_vertices, vertices);
-    const MapResult result = runMap(map, options);
+
+  void add(const MapResult& result, std::size_t vertices) {
     ++maps;
     failed += result.failed ? 1 : 0;
     split += result.split ? 1 : 0;
-    with_oracle += result.oracle ? 1 : 0;
+    with_oracle += result.oracle_measured == 2 ? 1 : 0;
     coverage_difference = std::max(coverage_difference, result.coverage_difference_percent);
     unseen_difference = std::max(unseen_difference, result.unseen_difference_percent);
+    max_vertices = std::max(max_vertices, vertices);
     times.push_back(result.planning_time_s);
-    if (maps % 20 == 0) {
-      std::cerr << "progress: " << name << " " << maps << " maps (up to seed " << seed << "), "
-                << failed << " failed" << std::endl;
-    }
   }
-  struct rusage usage {};
-  getrusage(RUSAGE_SELF, &usage);
-  std::cout << std::fixed << "| " << name << " | " << maps << " | " << max_vertices << " | "
-            << split << " | " << failed << " | " << with_oracle << " | " << std::setprecision(3)
-            << coverage_difference << " | " << unseen_difference << " | " << quantile(times, 0.5)
-            << " | " << (times.empty() ? 0.0 : *std::max_element(times.begin(), times.end()))
-            << " | " << std::setprecision(0) << usage.ru_maxrss / 1024.0 << " |" << std::endl;
+};
+
+/// Runs one family's batches of maps, a table row each; returns the number of failed maps.
+int runFamily(testing::MapFamily family, const Options& options) {
+  const testing::HardMapGenerator generator(family);
+  const std::string name = testing::HardMapGenerator::name(family);
+  int failed = 0;
+  int done = 0;
+  std::uint64_t seed = options.first_seed;
+  std::uint64_t passed_over = 0;
+  for (const int batch_size : options.batches) {
+    BatchTally tally;
+    while (tally.maps < batch_size) {
+      const testing::HardMap map = generator.generate(seed++);
+      const std::size_t vertices = vertexCount(map.mission.polygon);
+      if (vertices > options.max_vertices) {
+        if (++passed_over > kMaxPassedOver) {
+          std::cout << "FAIL " << name << ": no map of at most " << options.max_vertices
+                    << " vertices in " << kMaxPassedOver << " seeds" << std::endl;
+          return failed + 1;
+        }
+        continue;
+      }
+      tally.add(runMap(map, options), vertices);
+      if (++done % 20 == 0) {
+        std::cerr << "progress: " << name << " " << done << " maps (up to seed " << seed - 1
+                  << "), " << failed + tally.failed << " failed" << std::endl;
+      }
+    }
+    failed += tally.failed;
+    struct rusage usage {};
+    getrusage(RUSAGE_SELF, &usage);
+    const std::vector<double>& times = tally.times;
+    std::cout << std::fixed << "| " << name << ", maps " << done - tally.maps + 1 << "-" << done
+              << " | " << tally.maps << " | " << tally.max_vertices << " | " << tally.split << " | "
+              << tally.failed << " | " << tally.with_oracle << " | " << std::setprecision(3)
+              << tally.coverage_difference << " | " << tally.unseen_difference << " | "
+              << quantile(times, 0.5) << " | " << *std::max_element(times.begin(), times.end())
+              << " | " << std::setprecision(0) << usage.ru_maxrss / 1024.0 << " |" << std::endl;
+  }
   return failed;
 }
 
@@ -292,7 +328,7 @@ int runFamily(testing::MapFamily family, const Options& options) {
 int main(int argc, char** argv) {
   using namespace kinematic_coverage::core;
   const Options options = parseOptions(argc, argv);
-  std::cout << "| family | maps | most vertices | split offset | failed | oracle checked | "
+  std::cout << "| family, maps | maps | most vertices | split offset | failed | oracle checked | "
                "coverage_percent against the oracle, largest difference | unseen reachable "
                "against the oracle, largest difference (% of free area) | median plan s "
                "(timing) | max plan s (timing) | peak RSS MB (timing) |\n"

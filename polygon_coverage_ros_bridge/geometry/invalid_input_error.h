@@ -13,4 +13,12 @@ class InvalidInputError : public std::runtime_error {
   explicit InvalidInputError(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// Thrown for input over one of the documented size limits (docs/REFERENCE.md, Size
+/// limits): the user's to change (a simpler polygon, a coarser sampling) however late in
+/// the pipeline it shows, so boundaries never report it as an internal error.
+class SizeLimitError : public InvalidInputError {
+ public:
+  explicit SizeLimitError(const std::string& message) : InvalidInputError(message) {}
+};
+
 }  // namespace kinematic_coverage::core

@@ -114,7 +114,7 @@ void checkSkeletonSize(const Ring& ring, const std::string& name) {
           << static_cast<long long>(kMaxSkeletonPairs) << ": simplify " << name
           << " to fewer vertices (noise far below wall_distance and the sweep distance only adds "
              "vertices) or plan the area in parts";
-  throw InvalidInputError(message.str());
+  throw SizeLimitError(message.str());
 }
 
 }  // namespace

@@ -30,6 +30,8 @@ std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
   GeneratedTrajectory trajectory;
   try {
     trajectory = TrajectoryGenerator(parameters).generate(plan.waypoints, free_area);
+  } catch (const SizeLimitError&) {
+    throw;
   } catch (const InvalidInputError& error) {
     throw InternalError(parameters.smoothing ? "smooth" : "trajectory", error.what());
   }
@@ -51,6 +53,8 @@ std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
   TrajectoryCoverage coverage;
   try {
     coverage = measureTrajectoryCoverage(free_area, plan.offset_parts, parameters, poses);
+  } catch (const SizeLimitError&) {
+    throw;
   } catch (const InvalidInputError& error) {
     throw InternalError("coverage", error.what());
   }

@@ -194,6 +194,8 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
   try {
     joined = OffsetPartJoiner(free_area, parameters.wall_distance)
                  .join(parts, nearestPart(parts, start));
+  } catch (const SizeLimitError&) {
+    throw;
   } catch (const InvalidInputError& error) {
     throw InternalError("offset", std::string("joining the parts: ") + error.what());
   }
@@ -357,8 +359,8 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     stage("region", t, summary.str());
   }
 
-  // A stage that fails from here on failed on valid input (a bug), except the size
-  // limits: failing_stage is null while they are checked.
+  // A stage that fails from here on failed on valid input (a bug), unless the input is
+  // over a size limit.
   const char* failing_stage = "decompose";
   try {
     // Cell decomposition over candidate directions, per part.
@@ -382,8 +384,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
       stage("decompose", t, summary.str());
     }
 
-    // Size limits, before anything of their size is built: the user's to change.
-    failing_stage = nullptr;
+    // Size limits, before anything of their size is built.
     checkCellLimit(decompositions, parameters_);
     if (const std::size_t dropped = fitDirectionsToGtspLimit(decompositions); dropped > 0) {
       plan.warnings.push_back(
@@ -529,8 +530,9 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
               << plan.time_cost_s << " s";
       stage("path", t, summary.str());
     }
+  } catch (const SizeLimitError&) {
+    throw;
   } catch (const InvalidInputError& error) {
-    if (failing_stage == nullptr) throw;
     throw InternalError(failing_stage, error.what());
   }
   plan.planning_time_s = secondsSince(planning_start);

@@ -48,7 +48,7 @@ void checkCellLimit(const std::vector<Decomposition>& decompositions,
   if (parameters.decomposition_type == "trapezoidal") {
     message << "; the boustrophedon decomposition makes fewer cells than the trapezoidal one";
   }
-  throw InvalidInputError(message.str());
+  throw SizeLimitError(message.str());
 }
 
 std::size_t fitDirectionsToGtspLimit(std::vector<Decomposition>& decompositions) {
@@ -120,7 +120,7 @@ void checkLaneLimit(const std::vector<Decomposition>& decompositions,
     message << "a larger sensor_distance (the sensor's height above the bottom) or lateral_fov";
   }
   message << ", or a smaller lateral_overlap; or plan a smaller area";
-  throw InvalidInputError(message.str());
+  throw SizeLimitError(message.str());
 }
 
 }  // namespace kinematic_coverage::core

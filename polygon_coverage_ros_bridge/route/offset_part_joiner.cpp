@@ -98,12 +98,15 @@ std::pair<Point2, Point2> closestVertices(const std::vector<PolygonWithHoles>& p
     for (const Ring& hole : parts[k].holes) result.insert(result.end(), hole.begin(), hole.end());
     return result;
   };
+  std::vector<std::vector<Point2>> to_vertices;
+  for (std::size_t j : to) to_vertices.push_back(vertices(j));
   double best = std::numeric_limits<double>::infinity();
   std::pair<Point2, Point2> result;
   for (std::size_t i : from) {
     const std::vector<Point2> a = vertices(i);
-    for (std::size_t j : to) {
-      for (const Point2& q : vertices(j)) {
+    for (std::size_t k = 0; k < to.size(); ++k) {
+      const std::size_t j = to[k];
+      for (const Point2& q : to_vertices[k]) {
         for (const Point2& p : a) {
           const double d = (p - q).squaredNorm();
           if (d < best) {
