@@ -18,7 +18,7 @@ from rosgraph_msgs.msg import Log
 from std_msgs.msg import Empty
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
-from ros_test_support import Collector, RejectionChecks, wait_until  # noqa: E402
+from ros_test_support import Collector, RejectionChecks, point_message, wait_until  # noqa: E402
 
 SQUARE = [(0, 0), (30, 0), (30, 30), (0, 30)]
 NAN = float('nan')
@@ -63,15 +63,6 @@ def pose_stamped(x, y, frame='map', quaternion=None):
     message = PoseStamped(pose=pose(x, y, quaternion=quaternion))
     message.header.frame_id = frame
     message.header.stamp = rospy.Time.now()
-    return message
-
-
-def point_message(x, y, frame='map'):
-    message = PointStamped()
-    message.header.frame_id = frame
-    message.header.stamp = rospy.Time.now()
-    message.point.x = x
-    message.point.y = y
     return message
 
 

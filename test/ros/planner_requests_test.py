@@ -17,7 +17,7 @@ from std_msgs.msg import Empty
 from std_srvs.srv import Trigger
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
-from ros_test_support import Collector, strictly_inside_hole  # noqa: E402
+from ros_test_support import Collector, point_message, strictly_inside_hole  # noqa: E402
 
 TIMEOUT_S = 30.0
 SQUARE = [(0, 0), (30, 0), (30, 30), (0, 30)]
@@ -33,15 +33,6 @@ def polygon_message(hull, holes=(), frame='map'):
     message.header.stamp = rospy.Time.now()
     message.polygon.hull = ring(hull)
     message.polygon.holes = [ring(hole) for hole in holes]
-    return message
-
-
-def point_message(x, y, frame='map'):
-    message = PointStamped()
-    message.header.frame_id = frame
-    message.header.stamp = rospy.Time.now()
-    message.point.x = x
-    message.point.y = y
     return message
 
 

@@ -7,6 +7,7 @@ import xmlrpc.client
 import rosgraph
 import rospy
 import yaml
+from geometry_msgs.msg import PointStamped
 from rosgraph_msgs.msg import Log
 
 
@@ -14,6 +15,16 @@ def load_mission(path):
     """The mission file as a dict (polygon hull and holes, start, goal, parameters)."""
     with open(path) as stream:
         return yaml.safe_load(stream)
+
+
+def point_message(x, y, frame='map'):
+    """A stamped point (a start or goal) in `frame`."""
+    message = PointStamped()
+    message.header.frame_id = frame
+    message.header.stamp = rospy.Time.now()
+    message.point.x = x
+    message.point.y = y
+    return message
 
 
 def inside_ring(point, ring):
