@@ -59,7 +59,7 @@ std::size_t TrajectorySampler::pieces(const PathPrimitive& primitive) const {
   }
   if (!(ratio < static_cast<double>(kMaxPoses))) {
     throw SizeLimitError("sampling a primitive of the path would need more than " +
-                            std::to_string(kMaxPoses) + " poses");
+                         std::to_string(kMaxPoses) + " poses");
   }
   return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(ratio)));
 }
@@ -154,8 +154,8 @@ void TrajectorySampler::sample(const std::vector<PathPrimitive>& path,
     piece_counts[i] = pieces(path[i]);
     total += piece_counts[i] + 1;
     if (total > kMaxPoses) {
-      throw SizeLimitError("sampling the path would need more than " +
-                              std::to_string(kMaxPoses) + " poses");
+      throw SizeLimitError("sampling the path would need more than " + std::to_string(kMaxPoses) +
+                           " poses");
     }
   }
   poses.reserve(total);
