@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "fuzz/fuzz_check.h"
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
@@ -176,7 +177,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Mission m = mission(input);
   kinematic_coverage::fuzz::runExpectingOnlyInvalidInput([&] {
     kinematic_coverage::core::ParameterValidator().validate(m.parameters);
-    checkPlan(m, kinematic_coverage::core::planMission(m));
+    kinematic_coverage::core::PlannedMission planned;
+    try {
+      planned = kinematic_coverage::core::planMission(m);
+    } catch (const kinematic_coverage::core::InternalError&) {
+      // A failure on valid input, which the planner reports as such (coverage_tool exits 1
+      // naming the stage). Tolerated here, as it was while the planner called these invalid
+      // input, until the ones this fuzzer finds are fixed: the sweeps stage laying a pattern
+      // point outside the offset free area (test/planner/coverage_planner_test.cpp,
+      // KnownDefectAPatternPointOutsideTheOffsetAreaIsAnInternalError) and the solve stage
+      // meeting an infinite transition cost.
+      return;
+    }
+    checkPlan(m, planned);
   });
   return 0;
 }
