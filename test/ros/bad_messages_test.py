@@ -12,13 +12,14 @@ import unittest
 
 import rospy
 import rostest
-from geometry_msgs.msg import Point32, PointStamped, Pose, PoseArray, PoseStamped, Polygon
+from geometry_msgs.msg import PointStamped, Pose, PoseArray, PoseStamped
 from kinematic_coverage.msg import PlanStatus, PolygonWithHolesStamped
 from rosgraph_msgs.msg import Log
 from std_msgs.msg import Empty
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
-from ros_test_support import Collector, RejectionChecks, point_message, wait_until  # noqa: E402
+from ros_test_support import (Collector, RejectionChecks, point_message, stamped_polygon,
+                              wait_until)  # noqa: E402
 
 SQUARE = [(0, 0), (30, 0), (30, 30), (0, 30)]
 NAN = float('nan')
@@ -28,17 +29,8 @@ REPLANNER = '/replanner'
 PLANNER = '/coverage_planner'
 
 
-def ring(points):
-    return Polygon(points=[Point32(x=x, y=y, z=0.0) for x, y in points])
-
-
 def polygon_message(hull=SQUARE, holes=(), frame='map'):
-    message = PolygonWithHolesStamped()
-    message.header.frame_id = frame
-    message.header.stamp = rospy.Time.now()
-    message.polygon.hull = ring(hull)
-    message.polygon.holes = [ring(hole) for hole in holes]
-    return message
+    return stamped_polygon(hull, holes, frame)
 
 
 def pose(x, y, yaw=0.0, quaternion=None):

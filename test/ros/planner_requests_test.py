@@ -10,30 +10,17 @@ import unittest
 
 import rospy
 import rostest
-from geometry_msgs.msg import Point32, PointStamped, PoseArray, Polygon
+from geometry_msgs.msg import PointStamped, PoseArray
 from kinematic_coverage.msg import PlanStatus, PolygonWithHolesStamped
 from rosgraph_msgs.msg import Log
 from std_msgs.msg import Empty
 from std_srvs.srv import Trigger
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
-from ros_test_support import Collector, point_message, strictly_inside_hole  # noqa: E402
+from ros_test_support import Collector, point_message, stamped_polygon, strictly_inside_hole  # noqa: E402
 
 TIMEOUT_S = 30.0
 SQUARE = [(0, 0), (30, 0), (30, 30), (0, 30)]
-
-
-def ring(points):
-    return Polygon(points=[Point32(x=x, y=y, z=0.0) for x, y in points])
-
-
-def polygon_message(hull, holes=(), frame='map'):
-    message = PolygonWithHolesStamped()
-    message.header.frame_id = frame
-    message.header.stamp = rospy.Time.now()
-    message.polygon.hull = ring(hull)
-    message.polygon.holes = [ring(hole) for hole in holes]
-    return message
 
 
 class PlannerRequestsTest(unittest.TestCase):
@@ -59,7 +46,7 @@ class PlannerRequestsTest(unittest.TestCase):
         of coverage_planner ROS_ERRORs and of waypoint lists published for it."""
         statuses = len(self.status.messages)
         waypoints = len(self.waypoints.messages)
-        self.polygon.publish(polygon_message(hull, holes))
+        self.polygon.publish(stamped_polygon(hull, holes))
         self.start.publish(point_message(start[0], start[1], start_frame))
         self.goal.publish(point_message(goal[0], goal[1]))
         time.sleep(0.5)  # the latched inputs reach the node before activate
@@ -120,7 +107,7 @@ class PlannerRequestsTest(unittest.TestCase):
         hole = [(12, 8), (18, 8), (18, 22), (12, 22)]
         count = len(self.waypoints.messages)
         trajectories = len(self.trajectory.messages)
-        self.polygon.publish(polygon_message(SQUARE, [hole]))
+        self.polygon.publish(stamped_polygon(SQUARE, [hole]))
         time.sleep(0.5)
         answer = self.plan_service()
         self.assertTrue(answer.success, answer.message)

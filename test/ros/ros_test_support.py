@@ -7,7 +7,8 @@ import xmlrpc.client
 import rosgraph
 import rospy
 import yaml
-from geometry_msgs.msg import PointStamped
+from geometry_msgs.msg import Point32, PointStamped, Polygon
+from kinematic_coverage.msg import PolygonWithHolesStamped
 from rosgraph_msgs.msg import Log
 
 
@@ -15,6 +16,19 @@ def load_mission(path):
     """The mission file as a dict (polygon hull and holes, start, goal, parameters)."""
     with open(path) as stream:
         return yaml.safe_load(stream)
+
+
+def stamped_polygon(hull, holes=(), frame='map'):
+    """A polygon with holes (lists of (x, y)) stamped in `frame`."""
+    def ring(points):
+        return Polygon(points=[Point32(x=x, y=y, z=0.0) for x, y in points])
+
+    message = PolygonWithHolesStamped()
+    message.header.frame_id = frame
+    message.header.stamp = rospy.Time.now()
+    message.polygon.hull = ring(hull)
+    message.polygon.holes = [ring(hole) for hole in holes]
+    return message
 
 
 def point_message(x, y, frame='map'):
