@@ -14,15 +14,18 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fuzz/fuzz_check.h"
-#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
 #include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
 
 namespace {
@@ -135,6 +138,52 @@ Mission mission(FuzzedDataProvider& input) {
   return m;
 }
 
+/// A number as YAML: round-trip digits, or what YAML reads as NaN or infinity.
+std::string yamlNumber(double value) {
+  if (std::isnan(value)) return ".nan";
+  if (std::isinf(value)) return value > 0 ? ".inf" : "-.inf";
+  return kinematic_coverage::core::formatRoundTrip(value);
+}
+
+/// The mission as a mission file for `coverage_tool plan`, written to the file that
+/// KC_FUZZ_PRINT_MISSION names, so that a finding replays outside the fuzzer:
+///   KC_FUZZ_PRINT_MISSION=mission.yaml planner_fuzzer FINDING
+void printMission(const Mission& m, const char* path) {
+  const auto ring = [](const Ring& points) {
+    std::string text = "[";
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      text +=
+          (i ? ", [" : "[") + yamlNumber(points[i].x()) + ", " + yamlNumber(points[i].y()) + "]";
+    }
+    return text + "]";
+  };
+  const PlannerParameters& p = m.parameters;
+  std::string text = "polygon:\n  hull: " + ring(m.polygon.hull) + "\n  holes:";
+  if (m.polygon.holes.empty()) text += " []";
+  for (const Ring& hole : m.polygon.holes) text += "\n    - " + ring(hole);
+  text += "\nstart: [" + yamlNumber(m.start.x()) + ", " + yamlNumber(m.start.y()) + "]";
+  text += "\ngoal: [" + yamlNumber(m.goal.x()) + ", " + yamlNumber(m.goal.y()) + "]";
+  text += "\ndecomposition_type: " + p.decomposition_type;
+  text += "\ncost_function: " + p.cost_function;
+  text += "\nsensor_model: " + p.sensor_model;
+  const std::pair<const char*, double> numbers[] = {{"wall_distance", p.wall_distance},
+                                                    {"lateral_footprint", p.lateral_footprint},
+                                                    {"sensor_distance", p.sensor_distance},
+                                                    {"lateral_fov", p.lateral_fov},
+                                                    {"onward_fov", p.onward_fov},
+                                                    {"lateral_overlap", p.lateral_overlap},
+                                                    {"turning_radius", p.turning_radius},
+                                                    {"v_max", p.v_max},
+                                                    {"a_max", p.a_max},
+                                                    {"yaw_rate_max", p.yaw_rate_max}};
+  for (const auto& [name, value] : numbers)
+    text += "\n" + std::string(name) + ": " + yamlNumber(value);
+  if (std::FILE* file = std::fopen(path, "w")) {
+    std::fprintf(file, "%s\n", text.c_str());
+    std::fclose(file);
+  }
+}
+
 void checkPlan(const Mission& m, const PlannedMission& planned) {
   const std::vector<Pose2>& waypoints = planned.plan.waypoints;
   fuzzCheck(!waypoints.empty(), "plan without waypoints");
@@ -175,20 +224,11 @@ void checkPlan(const Mission& m, const PlannedMission& planned) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider input(data, size);
   const Mission m = mission(input);
+  if (const char* path = std::getenv("KC_FUZZ_PRINT_MISSION")) printMission(m, path);
   kinematic_coverage::fuzz::runExpectingOnlyInvalidInput([&] {
     kinematic_coverage::core::ParameterValidator().validate(m.parameters);
-    kinematic_coverage::core::PlannedMission planned;
-    try {
-      planned = kinematic_coverage::core::planMission(m);
-    } catch (const kinematic_coverage::core::InternalError&) {
-      // A failure on valid input, which the planner reports as such (coverage_tool exits 1
-      // naming the stage). Tolerated here, as it was while the planner called these invalid
-      // input, until the ones this fuzzer finds are fixed: the sweeps stage laying a pattern
-      // point outside the offset free area (test/planner/coverage_planner_test.cpp,
-      // KnownDefectAPatternPointOutsideTheOffsetAreaIsAnInternalError) and the solve stage
-      // meeting an infinite transition cost.
-      return;
-    }
+    const kinematic_coverage::core::PlannedMission planned =
+        kinematic_coverage::core::planMission(m);
     checkPlan(m, planned);
   });
   return 0;

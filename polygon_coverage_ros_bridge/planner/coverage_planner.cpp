@@ -400,6 +400,16 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     const SegmentCost segment_cost(parameters_);
     const VisibilityGraph graph(area, segment_cost);
     const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
+    if (sensor.length() > sensor.width()) {
+      // Lanes see W/2 beside them, but the reachable area reaches L/2 from the offset free
+      // area: along walls parallel to the lanes, what lies between stays unseen.
+      std::ostringstream warning;
+      warning << "the footprint is longer (L " << sensor.length() << " m) than wide (W "
+              << sensor.width() << " m): along walls parallel to the lanes a band up to "
+              << 0.5 * (sensor.length() - sensor.width())
+              << " m wide of the reachable area stays unseen (see unseen_reachable_area_m2)";
+      plan.warnings.push_back(warning.str());
+    }
     const TransitionPath transition = [&](const Point2& a, const Point2& b) {
       return graph.shortestPath(a, b);
     };

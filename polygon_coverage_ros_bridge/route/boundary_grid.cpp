@@ -25,6 +25,13 @@ double angleWithin(double tolerance, double length) {
   return std::asin(std::min(1.0, tolerance / length));
 }
 
+/// True when every vertex of the ring lies within `tolerance` of its first.
+bool collapses(const Ring& ring, double tolerance) {
+  return std::all_of(ring.begin(), ring.end(), [&](const Point2& p) {
+    return p.allFinite() && (p - ring.front()).norm() <= tolerance;
+  });
+}
+
 /// The ring without repeated consecutive vertices, validated and oriented.
 Ring cleanedRing(const Ring& ring, const std::string& name, bool counter_clockwise,
                  double tolerance) {
@@ -61,6 +68,9 @@ BoundaryGrid::BoundaryGrid(const PolygonWithHoles& polygon) {
   tolerance_ = kRelativeTolerance * std::max(extent, 1.0);
   polygon_.hull = cleanedRing(polygon.hull, "hull", true, tolerance_);
   for (std::size_t h = 0; h < polygon.holes.size(); ++h) {
+    // A hole whose vertices all lie within the tolerance of each other is a point to every
+    // test here (they all allow the tolerance): it blocks nothing.
+    if (collapses(polygon.holes[h], tolerance_)) continue;
     polygon_.holes.push_back(
         cleanedRing(polygon.holes[h], "hole " + std::to_string(h), false, tolerance_));
   }

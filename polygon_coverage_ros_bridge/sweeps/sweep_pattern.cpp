@@ -487,13 +487,27 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& 
 
   // Lane ends pulled in by the inset, never past the lane's middle. The corner and side
   // checks above use the full lanes: the inset only gives up what the footprint's onward
-  // half-length still sees.
+  // half-length still sees. An end that the corner tolerance of verticalInterval put a
+  // hair outside the cell (a lane through an acute corner) moves onto the cell's nearest
+  // boundary point, so that every lane end lies in the cell and so in the area
+  // (planner_fuzzer: a lane end 1e-8 beyond a corner of the offset free area).
+  auto insideCell = [&](const Point2& end) {
+    if (insideRing(end, cell)) return end;
+    Point2 nearest = end;
+    double nearest_distance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0, n = cell.size(); i < n; ++i) {
+      const Point2 candidate = closestPointOnSegment(end, cell[i], cell[(i + 1) % n]);
+      const double distance = (candidate - end).norm();
+      if (distance < nearest_distance) nearest_distance = distance, nearest = candidate;
+    }
+    return nearest;
+  };
   std::vector<std::pair<Point2, Point2>> result;
   for (std::size_t k = 0; k < positions.size(); ++k) {
     const auto [lo, hi] = spans[k];
     const double inset = std::min(lane_end_inset_, 0.5 * (hi - lo));
-    result.emplace_back(fromSweepFrame({positions[k], lo + inset}, direction),
-                        fromSweepFrame({positions[k], hi - inset}, direction));
+    result.emplace_back(insideCell(fromSweepFrame({positions[k], lo + inset}, direction)),
+                        insideCell(fromSweepFrame({positions[k], hi - inset}, direction)));
   }
   return result;
 }

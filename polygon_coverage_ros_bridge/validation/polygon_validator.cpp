@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/box_intersection_d.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -25,6 +26,31 @@ using KSegment = Kernel::Segment_2;
 using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using ExactPolygon = CGAL::Polygon_2<ExactKernel>;
 using EdgeBox = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
+
+/// A ring whose mean width (twice its area over its perimeter) is at most this share of
+/// the hull's extent is a sliver: the route stage treats points that close as one (its
+/// tolerance, route/boundary_grid.cpp), so such a ring is a line to the planner.
+constexpr double kRelativeSliverWidth = 1e-9;
+
+/// Rejects a ring thinner than `tolerance` on average (see kRelativeSliverWidth).
+void checkNotSliver(const Ring& ring, const std::string& ring_name, double tolerance) {
+  double twice_area = 0.0;
+  double perimeter = 0.0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Point2& a = ring[i];
+    const Point2& b = ring[(i + 1) % n];
+    twice_area += a.x() * b.y() - b.x() * a.y();
+    perimeter += (b - a).norm();
+  }
+  if (std::abs(twice_area) <= tolerance * perimeter) {
+    throw InvalidInputError(ring_name + " is a sliver: its mean width (twice its area, " +
+                            formatNumber(0.5 * std::abs(twice_area)) +
+                            " m^2, over its perimeter, " + formatNumber(perimeter) +
+                            " m) is below " + formatNumber(tolerance) +
+                            " m (1e-9 of the hull's extent), which the planner cannot tell "
+                            "from a line");
+  }
+}
 
 /// A ring without duplicate consecutive vertices, remembering each vertex's input index.
 struct DedupedRing {
@@ -184,6 +210,13 @@ void PolygonValidator::validate(const PolygonWithHoles& polygon) const {
   validateRing(polygon.hull, "hull");
   for (std::size_t h = 0; h < polygon.holes.size(); ++h) {
     validateRing(polygon.holes[h], ringName(h));
+  }
+  Eigen::AlignedBox2d hull_extent;
+  for (const Point2& p : polygon.hull) hull_extent.extend(p);
+  const double sliver_width = kRelativeSliverWidth * std::max(1.0, hull_extent.sizes().maxCoeff());
+  checkNotSliver(polygon.hull, "hull", sliver_width);
+  for (std::size_t h = 0; h < polygon.holes.size(); ++h) {
+    checkNotSliver(polygon.holes[h], ringName(h), sliver_width);
   }
 
   // A hole entirely outside the hull: their interiors do not meet. A hole vertex strictly

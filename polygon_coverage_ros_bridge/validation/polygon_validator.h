@@ -26,7 +26,9 @@ constexpr double kMaxCoordinateMagnitude = 1e8;
 class PolygonValidator {
  public:
   /// Rejects: more than the size limits above; a non-finite or too large coordinate; a
-  /// ring with fewer than 3 distinct vertices or zero area; a self-intersecting ring
+  /// ring with fewer than 3 distinct vertices or zero area, or a sliver (a mean width,
+  /// twice the area over the perimeter, of at most 1e-9 of the hull's extent); a
+  /// self-intersecting ring
   /// (checked after dropping duplicate consecutive vertices, so a repeated vertex is
   /// allowed); a hole entirely outside the hull (their interiors do not meet).
   void validate(const PolygonWithHoles& polygon) const;

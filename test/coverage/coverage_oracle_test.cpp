@@ -93,6 +93,29 @@ TEST(ExactCoverageOracle, TwoPoses) {
   EXPECT_NEAR(line.reachableAreaM2(), 64.0, 1e-6);  // R = E for L = 0
 }
 
+TEST(ExactCoverageOracle, StraightRunsCountAsTheFootprintSweptAlongThem) {
+  const ExactCoverageOracle oracle(kSquare, kWall, kFootprint);
+  // A segment sampled every 0.1 m: (4 + L) x W, as its two ends.
+  std::vector<Pose2> segment;
+  for (int k = 0; k <= 40; ++k) segment.push_back({3.0 + 0.1 * k, 5.0, 0.0});
+  EXPECT_NEAR(oracle.measure(segment).seen_free_area_m2, 4.8 * 3.0, kExact);
+  EXPECT_NEAR(oracle.measure(segment, false).seen_free_area_m2, 4.8 * 3.0, 1e-9);
+  // Segments, a rotation in place, a reversal and an arc: merged or pair by pair, the same.
+  std::vector<Pose2> path;
+  for (int k = 0; k <= 20; ++k) path.push_back({2.0 + 0.2 * k, 2.0, 0.0});
+  path.push_back({6.0, 2.0, M_PI / 4});
+  for (int k = 0; k <= 10; ++k) {
+    const double angle = -M_PI / 2 + M_PI * k / 10.0;
+    path.push_back({6.0 + 1.5 * std::cos(angle), 3.5 + 1.5 * std::sin(angle), angle + M_PI / 2});
+  }
+  for (int k = 1; k <= 15; ++k) path.push_back({6.0 - 0.25 * k, 5.0, M_PI});
+  for (int k = 1; k <= 5; ++k) path.push_back({2.25 + 0.25 * k, 5.0, 0.0});
+  const ExactCoverage merged = oracle.measure(path);
+  const ExactCoverage pairwise = oracle.measure(path, false);
+  EXPECT_NEAR(merged.seen_free_area_m2, pairwise.seen_free_area_m2, 1e-9);
+  EXPECT_NEAR(merged.seen_reachable_area_m2, pairwise.seen_reachable_area_m2, 1e-9);
+}
+
 /// Two squares, [0, 10]^2 and [12, 20] x [1, 9], joined by a strait 1.5 m wide
 /// (y in [4.25, 5.75]): with a 1 m wall distance the offset free area falls apart into
 /// [1, 9]^2 and [13, 19] x [2, 8], each with a bump into the strait's mouth bounded by the

@@ -30,6 +30,12 @@ using ExactPolygonSet = CGAL::Polygon_set_2<Kernel>;
 /// not the convex hull (docs/REFERENCE.md, Sensor footprint and coverage).
 constexpr double kSamePosition = 1e-9;
 
+/// A pose continues a straight run when its heading is the run's within this angle
+/// (radians) and its position lies within kStraightRunOffset (metres) of the run's line:
+/// sampling a segment rounds to about 1e-15 relative, far below both.
+constexpr double kStraightRunAngle = 1e-12;
+constexpr double kStraightRunOffset = 1e-9;
+
 /// The erosion's band polygons are grown by this factor so that rounding their corners to
 /// doubles (about 1e-16 relative) never leaves a point nearer than wall_distance to the
 /// boundary outside the band: the eroded set stays a subset of the exact one.
@@ -315,7 +321,8 @@ OffsetFreeAreaDifference ExactCoverageOracle::compareOffsetFreeArea(
   return {CGAL::to_double(exactArea(missing)), CGAL::to_double(exactArea(extra))};
 }
 
-ExactCoverage ExactCoverageOracle::measure(const std::vector<Pose2>& poses) const {
+ExactCoverage ExactCoverageOracle::measure(const std::vector<Pose2>& poses,
+                                           bool merge_straight_runs) const {
   const Impl& m = *impl_;
   // The seen area (docs/REFERENCE.md, Sensor footprint and coverage): every footprint, and
   // the convex hull of each two consecutive footprints at different positions (which holds
@@ -326,10 +333,31 @@ ExactCoverage ExactCoverageOracle::measure(const std::vector<Pose2>& poses) cons
     const std::array<ExactPoint, 4> corners = m.corners(pose);
     Impl::addHull(corners.begin(), corners.end(), pieces);
   };
+  // The last pose of the straight run starting at `first`: each next pose has the run's
+  // heading, lies on its line and advances along it.
+  auto straightRunEnd = [&](std::size_t first) {
+    const Pose2& origin = poses[first];
+    const Point2 along(std::cos(origin.yaw), std::sin(origin.yaw));
+    std::size_t last = first;
+    while (last + 1 < poses.size()) {
+      const Pose2& next = poses[last + 1];
+      const Point2 offset(next.x - origin.x, next.y - origin.y);
+      const Point2 step(next.x - poses[last].x, next.y - poses[last].y);
+      if (std::abs(std::remainder(next.yaw - origin.yaw, 2.0 * M_PI)) > kStraightRunAngle ||
+          std::abs(along.x() * offset.y() - along.y() * offset.x()) > kStraightRunOffset ||
+          step.dot(along) <= kSamePosition) {
+        break;
+      }
+      ++last;
+    }
+    return last;
+  };
   if (poses.size() == 1) addFootprint(poses.front());
-  for (std::size_t i = 1; i < poses.size(); ++i) {
-    const Pose2& a = poses[i - 1];
-    const Pose2& b = poses[i];
+  for (std::size_t i = 0; i + 1 < poses.size();) {
+    const std::size_t last = merge_straight_runs ? std::max(straightRunEnd(i), i + 1) : i + 1;
+    const Pose2& a = poses[i];
+    const Pose2& b = poses[last];
+    i = last;
     if (std::hypot(b.x - a.x, b.y - a.y) > kSamePosition) {
       std::array<ExactPoint, 8> corners;
       const std::array<ExactPoint, 4> ca = m.corners(a);

@@ -85,7 +85,12 @@ class ExactCoverageOracle {
 
   /// The seen area of `poses` (the union of their footprints and of the convex hulls of
   /// consecutive footprints at different positions), intersected exactly with F and R.
-  ExactCoverage measure(const std::vector<Pose2>& poses) const;
+  /// With `merge_straight_runs`, a run of poses of one heading advancing along one line
+  /// (a sampled segment) counts as the hull of its first and last footprints, which is
+  /// the union of its consecutive hulls (the footprint swept along the segment) up to the
+  /// run's rounding; that keeps the exact union small enough for trajectories of
+  /// thousands of poses.
+  ExactCoverage measure(const std::vector<Pose2>& poses, bool merge_straight_runs = true) const;
 
  private:
   struct Impl;

@@ -116,13 +116,11 @@ TEST(CoveragePlanner, AGoalInANarrowBayIsJoinedAlongTheBayNotThroughItsWall) {
   EXPECT_NEAR(entry.y(), 9.0, 1e-9);
 }
 
-TEST(CoveragePlanner, KnownDefectAPatternPointOutsideTheOffsetAreaIsAnInternalError) {
-  // Found by planner_fuzzer (its seed corpus input seed_01, which it tolerates in this one
-  // form until the fix; a 5 s run meets several such maps): a footprint longer
-  // than wide (W 0.72 m, L 2.70 m) on a 9-vertex hull, where the sweeps stage lays a
-  // pattern point outside the offset free area. Until the sweeps stage is fixed, this must
-  // at least be reported as an internal error naming the stage (coverage_tool exits 1),
-  // never as input the user must change; once fixed, expect a valid plan here instead.
+TEST(CoveragePlanner, LanesThroughAcuteCornersEndInsideTheOffsetArea) {
+  // Found by planner_fuzzer (its seed corpus input seed_01): a footprint longer than wide
+  // (W 0.72 m, L 2.70 m) on a 9-vertex hull whose offset has acute corners. Lanes placed
+  // through those corners ended 1e-8 m beyond them, outside the offset free area, and the
+  // sweeps stage failed on valid input.
   const PolygonWithHoles hull = {{{28.5, 17.5},
                                   {17.5, 17.5},
                                   {14, 26.5},
@@ -141,13 +139,8 @@ TEST(CoveragePlanner, KnownDefectAPatternPointOutsideTheOffsetAreaIsAnInternalEr
   parameters.lateral_overlap = 0.72074031980502995;
   parameters.turning_radius = 4.7983420811323896;
   parameters.decomposition_type = "trapezoidal";
-  try {
-    CoveragePlanner(parameters).plan(hull, {-5, -5}, {-5, -5});
-    ADD_FAILURE() << "planned: the defect is fixed, expect a valid plan here";
-  } catch (const InternalError& error) {
-    EXPECT_EQ(error.stage(), "sweeps");
-    EXPECT_NE(std::string(error.what()).find("route point"), std::string::npos) << error.what();
-  }
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(hull, {-5, -5}, {-5, -5});
+  expectValidPlan(hull, plan, parameters, {-5, -5}, {-5, -5});
 }
 
 TEST(CoveragePlanner, StartOutsideTheHullIsJoinedByAStraightLeg) {

@@ -248,6 +248,14 @@ TEST(BoundaryGrid, RejectsDegenerateRings) {
                InvalidInputError);
 }
 
+TEST(BoundaryGrid, AHoleWithinTheToleranceIsAPointThatBlocksNothing) {
+  // Every test allows the tolerance (1e-9 of the extent), so a hole that small is a point.
+  const BoundaryGrid grid(
+      {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{5, 5}, {5 + 1e-12, 5}, {5, 5 + 1e-12}}}});
+  EXPECT_TRUE(grid.polygon().holes.empty());
+  EXPECT_TRUE(grid.segmentInside({1, 1}, {9, 9}));
+}
+
 TEST(BoundaryGrid, AgreesWithPlanarGeometryOnRandomSegments) {
   std::mt19937 rng(11);
   int disagreements = 0;

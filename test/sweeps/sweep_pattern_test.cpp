@@ -18,6 +18,9 @@ namespace {
 
 std::vector<Point2> straight(const Point2& a, const Point2& b) { return {a, b}; }
 
+/// How far (relative to the coordinates' scale) a lane end may lie outside its cell.
+constexpr double kEndRounding = 1e-13;
+
 /// Lanes lie in the cell, run parallel to the direction, and neighbouring lanes are at
 /// most one sweep distance apart.
 void expectValidLanes(const Ring& cell, double direction, const FrustumSensor& sensor) {
@@ -26,10 +29,17 @@ void expectValidLanes(const Ring& cell, double direction, const FrustumSensor& s
   const PolygonWithHoles area{cell, {}};
   const Point2 along = directionVector(direction);
   const Point2 across(along.y(), -along.x());  // the order of the lanes
+  double scale = 1.0;
+  for (const Point2& p : cell) scale = std::max(scale, p.cwiseAbs().maxCoeff());
   for (std::size_t k = 0; k < lanes.size(); ++k) {
     const auto& [a, b] = lanes[k];
     EXPECT_TRUE(segmentInside(area, a, b, 1e-7));
-    EXPECT_NEAR(std::abs(cross({0, 0}, along, b - a)), 0.0, 1e-7);
+    // Lane ends are route points: inside the cell up to rounding, not up to a tolerance.
+    EXPECT_TRUE(contains(area, a, kEndRounding * scale)) << "end " << a.transpose();
+    EXPECT_TRUE(contains(area, b, kEndRounding * scale)) << "end " << b.transpose();
+    // Parallel up to the corner tolerance (1e-9 of the scale) that an end through an
+    // acute corner may move by to stay inside the cell.
+    EXPECT_NEAR(std::abs(cross({0, 0}, along, b - a)), 0.0, std::max(1e-7, 2e-9 * scale));
     EXPECT_GE((b - a).dot(along), -1e-9);
     if (k > 0) {
       const double gap = (a - lanes[k - 1].first).dot(across);
@@ -253,6 +263,29 @@ TEST(SweepPattern, RandomCellsHaveValidLanes) {
         SCOPED_TRACE(::testing::Message() << "trial " << trial << " direction " << direction);
         expectValidLanes(cell.polygon, direction, sensor);
       }
+    }
+  }
+}
+
+TEST(SweepPattern, LanesThroughAcuteCornersEndInsideTheCell) {
+  // Slivers far from the origin, so that the corner tolerance (relative to the scale)
+  // is large: a lane placed through an acute corner must still end inside the cell.
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> coordinate(-400.0, 400.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Point2 origin(coordinate(rng), coordinate(rng));
+    const double heading = 2.0 * M_PI * unit(rng);
+    const double length = 0.05 + 3.0 * unit(rng);
+    const double opening = 0.02 + 0.6 * unit(rng);
+    const Point2 b = origin + length * Point2(std::cos(heading), std::sin(heading));
+    const Point2 c =
+        origin + 0.7 * length * Point2(std::cos(heading + opening), std::sin(heading + opening));
+    const Ring cell = {origin, b, c};
+    const FrustumSensor sensor(0.2 + 2.0 * unit(rng), 0.5 + 3.0 * unit(rng), 0.7 * unit(rng));
+    for (double direction : {heading, heading + opening, heading + 0.5 * opening}) {
+      SCOPED_TRACE(::testing::Message() << "trial " << trial << " direction " << direction);
+      expectValidLanes(cell, direction, sensor);
     }
   }
 }

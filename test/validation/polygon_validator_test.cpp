@@ -59,6 +59,21 @@ TEST(PolygonValidator, RejectsZeroArea) {
             "hole 1 has zero area: all its vertices lie on one line");
 }
 
+TEST(PolygonValidator, RejectsSliversThinnerThanTheRouteTolerance) {
+  // Found by planner_fuzzer: a triangle whose first two vertices are 5.6e-14 m apart has a
+  // non-zero exact area, but the route stage (tolerance 1e-9 of the hull's extent) sees a
+  // line, and planning failed on it.
+  const std::string hull_error = validationError(
+      {{{-5, -5}, {-5, -4.999999999999944}, {13.977287313476129, 34.72168021276061}}, {}});
+  EXPECT_EQ(hull_error.rfind("hull is a sliver: its mean width", 0), 0u) << hull_error;
+  EXPECT_NE(hull_error.find("is below 3.972168021e-08 m"), std::string::npos) << hull_error;
+  const std::string hole_error =
+      validationError({square(0, 0, 10), {square(1, 1, 1), {{2, 5}, {4, 5}, {3, 5 + 1e-12}}}});
+  EXPECT_EQ(hole_error.rfind("hole 1 is a sliver", 0), 0u) << hole_error;
+  // A thin ring well above the tolerance is valid.
+  EXPECT_EQ(validationError({square(0, 0, 10), {{{2, 5}, {4, 5}, {3, 5 + 1e-6}}}}), "");
+}
+
 TEST(PolygonValidator, NamesTheCrossingEdgesOfABowtie) {
   EXPECT_EQ(validationError({{{0, 0}, {2, 2}, {2, 0}, {0, 2}}, {}}),
             "hull is self-intersecting: edge 0 (vertices 0-1) and edge 2 (vertices 2-3) meet "
