@@ -243,11 +243,26 @@ struct ExactCoverageOracle::Impl {
       reachable_area = offset_free_area;
     } else {
       const ExactPolygon disk = regularPolygon(Point2::Zero(), r, disk_sides);
+      const CGAL::Bbox_2 disk_box = disk.bbox();
       std::vector<ExactPolygonWithHoles> parts;
       offset_free_area.polygons_with_holes(std::back_inserter(parts));
       std::vector<ExactPolygonWithHoles> grown;
       for (const ExactPolygonWithHoles& part : parts) {
-        grown.push_back(CGAL::minkowski_sum_2(part, disk));
+        // A hole narrower than the disk along x or y is filled by the sum: from each of its
+        // points E lies less than r away along that axis, and D holds that offset. Such
+        // holes are left out here because CGAL 5.5's own filter of them (Hole_filter_2)
+        // erases them from a std::deque through iterators that each erase invalidates
+        // (std::bad_alloc on some star maps of the family soak); with none left to filter
+        // it erases nothing.
+        ExactPolygonWithHoles kept(part.outer_boundary());
+        for (auto hole = part.holes_begin(); hole != part.holes_end(); ++hole) {
+          const CGAL::Bbox_2 box = hole->bbox();
+          if (box.xmax() - box.xmin() >= disk_box.xmax() - disk_box.xmin() &&
+              box.ymax() - box.ymin() >= disk_box.ymax() - disk_box.ymin()) {
+            kept.add_hole(*hole);
+          }
+        }
+        grown.push_back(CGAL::minkowski_sum_2(kept, disk));
       }
       reachable_area.join(grown.begin(), grown.end());
       reachable_area.intersection(free_area);
