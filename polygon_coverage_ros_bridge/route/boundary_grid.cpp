@@ -57,15 +57,21 @@ Ring cleanedRing(const Ring& ring, const std::string& name, bool counter_clockwi
 }  // namespace
 
 BoundaryGrid::BoundaryGrid(const PolygonWithHoles& polygon) {
-  double extent = 0.0;
+  // Rounding grows with the coordinates' magnitude, not only with the polygon's extent: a
+  // small part of the offset free area far from the origin (planner_fuzzer: 0.55 m across at
+  // x = 15 m) carries the rounding of the stages before, relative to its coordinates.
+  double scale = 1.0;
   if (!polygon.hull.empty()) {
     Eigen::AlignedBox2d box;
     for (const Point2& p : polygon.hull) {
       if (p.allFinite()) box.extend(p);
     }
-    if (!box.isEmpty()) extent = box.sizes().maxCoeff();
+    if (!box.isEmpty()) {
+      scale = std::max({scale, box.sizes().maxCoeff(), box.min().cwiseAbs().maxCoeff(),
+                        box.max().cwiseAbs().maxCoeff()});
+    }
   }
-  tolerance_ = kRelativeTolerance * std::max(extent, 1.0);
+  tolerance_ = kRelativeTolerance * scale;
   polygon_.hull = cleanedRing(polygon.hull, "hull", true, tolerance_);
   for (std::size_t h = 0; h < polygon.holes.size(); ++h) {
     // A hole whose vertices all lie within the tolerance of each other is a point to every

@@ -49,7 +49,8 @@ class SweepPatternGenerator {
   /// lanes, and only the parts of a cell's sides that lie on the area's boundary are
   /// checked, except within W/2 - margin of a decomposition cut: a cut lies on the
   /// neighbouring cell's side, and that cell's lanes, within the margin of it, see that
-  /// far across it.
+  /// far across it. Lane ends within 1e-8 of the map's scale of the area's boundary are
+  /// put on it, so that the router locates them exactly.
   SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
                         const PolygonWithHoles& area);
 
@@ -76,6 +77,9 @@ class SweepPatternGenerator {
   /// The parts of the cell's edges that lie on the area's boundary (every edge without an
   /// area), less the points within `cut_reach` of the parts that are decomposition cuts.
   std::vector<std::pair<Point2, Point2>> sidesToSee(const Ring& cell, double cut_reach) const;
+
+  /// The nearest point of the area's boundary when one lies within `reach` of p, else p.
+  Point2 onNearbyAreaBoundary(const Point2& p, double reach) const;
 
   /// The parameter intervals in [0, 1] of the edge a + t (b - a) that lie on area edges.
   std::vector<std::pair<double, double>> onAreaBoundary(const Point2& a, const Point2& b) const;

@@ -28,8 +28,9 @@ using ExactPolygon = CGAL::Polygon_2<ExactKernel>;
 using EdgeBox = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
 
 /// A ring whose mean width (twice its area over its perimeter) is at most this share of
-/// the hull's extent is a sliver: the route stage treats points that close as one (its
-/// tolerance, route/boundary_grid.cpp), so such a ring is a line to the planner.
+/// the map's scale (the hull's extent or largest coordinate) is a sliver: the route stage treats
+/// points that close as one (its tolerance, route/boundary_grid.cpp), so such a ring is a line to
+/// the planner.
 constexpr double kRelativeSliverWidth = 1e-9;
 
 /// Rejects a ring thinner than `tolerance` on average (see kRelativeSliverWidth).
@@ -47,7 +48,7 @@ void checkNotSliver(const Ring& ring, const std::string& ring_name, double toler
                             formatNumber(0.5 * std::abs(twice_area)) +
                             " m^2, over its perimeter, " + formatNumber(perimeter) +
                             " m) is below " + formatNumber(tolerance) +
-                            " m (1e-9 of the hull's extent), which the planner cannot tell "
+                            " m (1e-9 of the map's scale), which the planner cannot tell "
                             "from a line");
   }
 }
@@ -213,7 +214,10 @@ void PolygonValidator::validate(const PolygonWithHoles& polygon) const {
   }
   Eigen::AlignedBox2d hull_extent;
   for (const Point2& p : polygon.hull) hull_extent.extend(p);
-  const double sliver_width = kRelativeSliverWidth * std::max(1.0, hull_extent.sizes().maxCoeff());
+  const double sliver_width =
+      kRelativeSliverWidth *
+      std::max({1.0, hull_extent.sizes().maxCoeff(), hull_extent.min().cwiseAbs().maxCoeff(),
+                hull_extent.max().cwiseAbs().maxCoeff()});
   checkNotSliver(polygon.hull, "hull", sliver_width);
   for (std::size_t h = 0; h < polygon.holes.size(); ++h) {
     checkNotSliver(polygon.holes[h], ringName(h), sliver_width);

@@ -27,7 +27,8 @@ class PolygonValidator {
  public:
   /// Rejects: more than the size limits above; a non-finite or too large coordinate; a
   /// ring with fewer than 3 distinct vertices or zero area, or a sliver (a mean width,
-  /// twice the area over the perimeter, of at most 1e-9 of the hull's extent); a
+  /// twice the area over the perimeter, of at most 1e-9 of the map's scale: the hull's
+  /// extent or its largest coordinate); a
   /// self-intersecting ring
   /// (checked after dropping duplicate consecutive vertices, so a repeated vertex is
   /// allowed); a hole entirely outside the hull (their interiors do not meet).

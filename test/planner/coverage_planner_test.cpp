@@ -143,6 +143,36 @@ TEST(CoveragePlanner, LanesThroughAcuteCornersEndInsideTheOffsetArea) {
   expectValidPlan(hull, plan, parameters, {-5, -5}, {-5, -5});
 }
 
+TEST(CoveragePlanner, ASmallOffsetAreaFarFromTheOriginKeepsItsLaneEndsInside) {
+  // Found by planner_fuzzer: the offset free area is 0.55 m across at (15, 15). The route
+  // stage's tolerance followed the area's extent only (5.5e-10 m), less than the rounding
+  // that the cells carry at coordinates of 15 m, so a lane end on a cell's corner lay
+  // "outside the area" and the transitions stage failed on valid input.
+  const PolygonWithHoles hull = {{{20.874691964009198, 15.708343402335082},
+                                  {21.184039707702244, 18.886425283785073},
+                                  {15.999999985992337, 16.732050815656205},
+                                  {15, 17},
+                                  {14, 16.73205080756888},
+                                  {13.267949192431123, 16},
+                                  {13, 15},
+                                  {13.267949192431121, 14},
+                                  {14, 13.267949192431123},
+                                  {15, 13},
+                                  {15.999999999999998, 13.267949192431121},
+                                  {16.732050807568875, 14}},
+                                 {}};
+  PlannerParameters parameters;
+  parameters.wall_distance = 1.747009277346526;
+  parameters.sensor_distance = 0.9457667617297865;
+  parameters.lateral_fov = 1.1864368056340127;
+  parameters.onward_fov = 2.0866980950750476;
+  parameters.lateral_overlap = 0.8241383538584348;
+  parameters.turning_radius = 1.8709583598561028;
+  parameters.decomposition_type = "trapezoidal";
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(hull, {-5, -5}, {-5, -5});
+  expectValidPlan(hull, plan, parameters, {-5, -5}, {-5, -5});
+}
+
 TEST(CoveragePlanner, StartOutsideTheHullIsJoinedByAStraightLeg) {
   const PlannerParameters parameters;
   const CoveragePlan plan = CoveragePlanner(parameters).plan(kLake, {-10, 15}, {15, 40});

@@ -256,6 +256,16 @@ TEST(BoundaryGrid, AHoleWithinTheToleranceIsAPointThatBlocksNothing) {
   EXPECT_TRUE(grid.segmentInside({1, 1}, {9, 9}));
 }
 
+TEST(BoundaryGrid, ToleranceFollowsTheCoordinatesAsWellAsTheExtent) {
+  // Rounding grows with the coordinates: a small polygon far from the origin gets the
+  // tolerance of its coordinates, a large one near it that of its extent.
+  EXPECT_DOUBLE_EQ(BoundaryGrid({{{15, 15}, {15.5, 15}, {15.5, 15.5}, {15, 15.5}}, {}}).tolerance(),
+                   1e-9 * 15.5);
+  EXPECT_DOUBLE_EQ(BoundaryGrid({{{-20, 0}, {20, 0}, {20, 10}, {-20, 10}}, {}}).tolerance(),
+                   1e-9 * 40.0);
+  EXPECT_DOUBLE_EQ(BoundaryGrid({{{0, 0}, {0.5, 0}, {0.5, 0.5}}, {}}).tolerance(), 1e-9);
+}
+
 TEST(BoundaryGrid, AgreesWithPlanarGeometryOnRandomSegments) {
   std::mt19937 rng(11);
   int disagreements = 0;
