@@ -308,6 +308,36 @@ bool BoundaryGrid::directionFree(int cluster, const Point2& direction,
   return free;
 }
 
+bool BoundaryGrid::passesInsideConvexCorner(int cluster, const Point2& a, const Point2& b) const {
+  const Cluster& c = clusters_[cluster];
+  if (c.bend || c.ray_angles.size() != 2) return false;
+  const int out = c.ray_outgoing[0] != 0 ? 0 : 1;
+  const Point2 out_ray(std::cos(c.ray_angles[out]), std::sin(c.ray_angles[out]));
+  const Point2 in_ray(std::cos(c.ray_angles[1 - out]), std::sin(c.ray_angles[1 - out]));
+  double wedge = std::fmod(c.ray_angles[1 - out] - c.ray_angles[out], 2.0 * M_PI);
+  if (wedge < 0.0) wedge += 2.0 * M_PI;
+  if (!(wedge < M_PI)) return false;  // the free angle there
+  // The line cuts the corner: the corner and the free wedge lie on its two sides.
+  const Point2 d = b - a;
+  const double side_of_vertex = crossOf(d, c.position - a);
+  const double side_of_inward = crossOf(d, out_ray + in_ray);
+  if (!((side_of_vertex > 0.0 && side_of_inward < 0.0) ||
+        (side_of_vertex < 0.0 && side_of_inward > 0.0))) {
+    return false;
+  }
+  // Beyond the points where it cuts the corner's rays the line is outside: the segment
+  // must not reach past them, except within the tolerance of its own ends.
+  const double length = d.norm();
+  for (const Point2& ray : {out_ray, in_ray}) {
+    const double denominator = crossOf(d, ray);
+    if (denominator == 0.0) continue;
+    const double s = crossOf(c.position - a, ray) / denominator;  // along the segment
+    const double t = crossOf(c.position - a, d) / denominator;    // along the ray
+    if (t > 0.0 && s * length > tolerance_ && (1.0 - s) * length > tolerance_) return false;
+  }
+  return true;
+}
+
 bool BoundaryGrid::endAllows(const Contact& contact, const Point2& far_end) const {
   if (contact.cluster >= 0) {
     // The end lies up to the tolerance from the vertex, on either side of its edges (a lane
@@ -369,8 +399,9 @@ bool BoundaryGrid::segmentInside(const Point2& a, const Contact& a_contact, cons
       const double to_b = (s - b).norm();
       if (along > 0.0 && along < length_sq && to_a > tolerance_ && to_b > tolerance_) {
         const int k = start_cluster_[e];
-        if (!directionFree(k, d, angleWithin(tolerance_, to_b)) ||
-            !directionFree(k, -d, angleWithin(tolerance_, to_a))) {
+        if (!passesInsideConvexCorner(k, a, b) &&
+            (!directionFree(k, d, angleWithin(tolerance_, to_b)) ||
+             !directionFree(k, -d, angleWithin(tolerance_, to_a)))) {
           return false;
         }
       }

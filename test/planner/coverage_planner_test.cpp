@@ -173,6 +173,26 @@ TEST(CoveragePlanner, ASmallOffsetAreaFarFromTheOriginKeepsItsLaneEndsInside) {
   expectValidPlan(hull, plan, parameters, {-5, -5}, {-5, -5});
 }
 
+TEST(CoveragePlanner, TransitionsBetweenLaneEndsNearAConvexCornerAreFinite) {
+  // Found by planner_fuzzer: an offset free area 0.57 m across, whose cell has a lane
+  // 1.3e-7 m long at a corner; the route stage refused the chord between its ends, and the
+  // solve stage met an infinite transition cost.
+  const PolygonWithHoles hull = {
+      {{28.5, 17.5}, {16.5, 16.5}, {15.5, 17}, {14, 16.5}, {13, 15.5}, {13, 14.5}, {14, 13.5},
+       {15.5, 13}, {16.5, 13.5}},
+      {}};
+  PlannerParameters parameters;
+  parameters.wall_distance = 1.7462979108529295;
+  parameters.sensor_distance = 0.6537250974819611;
+  parameters.lateral_fov = 1.010946912328647;
+  parameters.onward_fov = 2.2437657091353485;
+  parameters.lateral_overlap = 0.72074031980503;
+  parameters.turning_radius = 4.79834208113239;
+  parameters.decomposition_type = "trapezoidal";
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(hull, {-5, -5}, {-5, -5});
+  expectValidPlan(hull, plan, parameters, {-5, -5}, {-5, -5});
+}
+
 TEST(CoveragePlanner, StartOutsideTheHullIsJoinedByAStraightLeg) {
   const PlannerParameters parameters;
   const CoveragePlan plan = CoveragePlanner(parameters).plan(kLake, {-10, 15}, {15, 40});

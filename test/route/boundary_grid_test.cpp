@@ -266,6 +266,35 @@ TEST(BoundaryGrid, ToleranceFollowsTheCoordinatesAsWellAsTheExtent) {
   EXPECT_DOUBLE_EQ(BoundaryGrid({{{0, 0}, {0.5, 0}, {0.5, 0.5}}, {}}).tolerance(), 1e-9);
 }
 
+TEST(BoundaryGrid, ChordsNearAConvexCornerAreInside) {
+  // planner_fuzzer: an offset free area 0.57 m across at (15, 15), and two lane ends on the
+  // edges of its bottom corner, 2.6e-8 m and 1.1e-7 m from it. The chord between them
+  // passes the corner within the tolerance (1.56e-8 m), on its free side; it was refused
+  // because its directions were judged from the corner's rays alone, and the solve stage
+  // met an infinite transition cost.
+  const BoundaryGrid grid({{{15.022278871488929, 15.000000000000002},
+                            {15.366007046015762, 14.885423941824392},
+                            {15.595159162366983, 15},
+                            {15.36600704601576, 15.114576058175611}},
+                           {}});
+  const Point2 a(15.36600702135765, 14.885423950043762);
+  const Point2 b(15.36600714464821, 14.885423991140616);
+  EXPECT_TRUE(grid.segmentInside(a, b));
+  EXPECT_TRUE(grid.segmentInside(b, a));
+  // The same at other distances from the corner, in tolerances.
+  const Point2 bottom = grid.polygon().hull[1];
+  const Point2 to_left = (grid.polygon().hull[0] - bottom).normalized();
+  const Point2 to_right = (grid.polygon().hull[2] - bottom).normalized();
+  for (double from_a : {0.5, 1.0, 1.7, 3.0, 10.0, 1000.0}) {
+    for (double from_b : {0.5, 1.0, 1.7, 3.0, 7.0, 10.0, 1000.0}) {
+      const Point2 on_left = bottom + from_a * grid.tolerance() * to_left;
+      const Point2 on_right = bottom + from_b * grid.tolerance() * to_right;
+      EXPECT_TRUE(grid.segmentInside(on_left, on_right)) << from_a << ", " << from_b;
+      EXPECT_TRUE(grid.segmentInside(on_right, on_left)) << from_a << ", " << from_b;
+    }
+  }
+}
+
 TEST(BoundaryGrid, AgreesWithPlanarGeometryOnRandomSegments) {
   std::mt19937 rng(11);
   int disagreements = 0;
