@@ -73,10 +73,10 @@ class BoundaryGrid {
   void addTouchingEdges();
   bool directionFree(int cluster, const Point2& direction, double angle_tolerance) const;
   bool touches(const Contact& contact, int edge) const;
-  /// True when the cluster is one convex corner (free angle under 180 degrees) and the
-  /// segment [a, b] cuts it on its free side without reaching past its rays (but within
-  /// the tolerance of its ends): a chord between the corner's two edges, inside the area
-  /// whatever angles it makes with them.
+  /// True when the cluster is one convex corner (free angle under 180 degrees) and both
+  /// ends of [a, b] lie in its free wedge, up to the tolerance: the segment is then inside
+  /// the area near the corner, whatever angles it makes with the corner's rays (a chord
+  /// between its edges).
   bool passesInsideConvexCorner(int cluster, const Point2& a, const Point2& b) const;
   /// The vertex cluster where edges e and f meet with wall in the narrow angle between
   /// them, or -1.

@@ -177,10 +177,16 @@ TEST(CoveragePlanner, TransitionsBetweenLaneEndsNearAConvexCornerAreFinite) {
   // Found by planner_fuzzer: an offset free area 0.57 m across, whose cell has a lane
   // 1.3e-7 m long at a corner; the route stage refused the chord between its ends, and the
   // solve stage met an infinite transition cost.
-  const PolygonWithHoles hull = {
-      {{28.5, 17.5}, {16.5, 16.5}, {15.5, 17}, {14, 16.5}, {13, 15.5}, {13, 14.5}, {14, 13.5},
-       {15.5, 13}, {16.5, 13.5}},
-      {}};
+  const PolygonWithHoles hull = {{{28.5, 17.5},
+                                  {16.5, 16.5},
+                                  {15.5, 17},
+                                  {14, 16.5},
+                                  {13, 15.5},
+                                  {13, 14.5},
+                                  {14, 13.5},
+                                  {15.5, 13},
+                                  {16.5, 13.5}},
+                                 {}};
   PlannerParameters parameters;
   parameters.wall_distance = 1.7462979108529295;
   parameters.sensor_distance = 0.6537250974819611;
@@ -191,6 +197,28 @@ TEST(CoveragePlanner, TransitionsBetweenLaneEndsNearAConvexCornerAreFinite) {
   parameters.decomposition_type = "trapezoidal";
   const CoveragePlan plan = CoveragePlanner(parameters).plan(hull, {-5, -5}, {-5, -5});
   expectValidPlan(hull, plan, parameters, {-5, -5}, {-5, -5});
+}
+
+TEST(CoveragePlanner, TransitionsAlongAnEdgePastAConvexCornerAreFinite) {
+  // Found by planner_fuzzer: a lane end just past a corner of the offset free area, on the
+  // next edge, and another at the far end of the edge before it; the route stage refused
+  // the transition between them and the solve stage met an infinite cost.
+  const PolygonWithHoles hull = {{{30.608537836557257, 22.13686274150293},
+                                  {15, 17},
+                                  {8.572093340119306, 11.9318255814334},
+                                  {20.20407070343419, 4.048520334254395}},
+                                 {}};
+  PlannerParameters parameters;
+  parameters.wall_distance = 1.7462979108529295;
+  parameters.sensor_distance = 0.6537250974819611;
+  parameters.lateral_fov = 1.010946912328647;
+  parameters.onward_fov = 1.5074375841353487;
+  parameters.lateral_overlap = 0.72074031980503;
+  parameters.turning_radius = 4.79834208113239;
+  parameters.decomposition_type = "trapezoidal";
+  const Point2 start(-4.9999999999999964, -5);
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(hull, start, {-5, -5});
+  expectValidPlan(hull, plan, parameters, start, {-5, -5});
 }
 
 TEST(CoveragePlanner, StartOutsideTheHullIsJoinedByAStraightLeg) {

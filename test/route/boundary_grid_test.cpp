@@ -281,6 +281,17 @@ TEST(BoundaryGrid, ChordsNearAConvexCornerAreInside) {
   const Point2 b(15.36600714464821, 14.885423991140616);
   EXPECT_TRUE(grid.segmentInside(a, b));
   EXPECT_TRUE(grid.segmentInside(b, a));
+  // planner_fuzzer: a chord from one corner nearly along an edge to just past the next
+  // corner on the following edge, 11.5 m long, passing that corner at about the tolerance.
+  const BoundaryGrid quadrilateral({{{15.838964377377614, 15.437669685194587},
+                                     {11.527633899657719, 12.03833985771821},
+                                     {19.627632462885003, 6.5487520446419731},
+                                     {26.819140787604042, 19.051311122172542}},
+                                    {}});
+  const Point2 at_corner(26.819140778875269, 19.051311119299854);
+  const Point2 past_corner(15.838964315913149, 15.437669636732057);
+  EXPECT_TRUE(quadrilateral.segmentInside(at_corner, past_corner));
+  EXPECT_TRUE(quadrilateral.segmentInside(past_corner, at_corner));
   // The same at other distances from the corner, in tolerances.
   const Point2 bottom = grid.polygon().hull[1];
   const Point2 to_left = (grid.polygon().hull[0] - bottom).normalized();
