@@ -28,7 +28,7 @@ using ExactPolygon = CGAL::Polygon_2<ExactKernel>;
 using EdgeBox = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
 
 /// A ring whose mean width (twice its area over its perimeter) is at most this share of
-/// the map's scale (the hull's extent or largest coordinate) is a sliver: the route stage treats
+/// the ring's scale (its extent or largest coordinate) is a sliver: the route stage treats
 /// points that close as one (its tolerance, route/boundary_grid.cpp), so such a ring is a line to
 /// the planner.
 constexpr double kRelativeSliverWidth = 1e-9;
@@ -48,7 +48,7 @@ void checkNotSliver(const Ring& ring, const std::string& ring_name, double toler
                             formatNumber(0.5 * std::abs(twice_area)) +
                             " m^2, over its perimeter, " + formatNumber(perimeter) +
                             " m) is below " + formatNumber(tolerance) +
-                            " m (1e-9 of the map's scale), which the planner cannot tell "
+                            " m (1e-9 of its scale), which the planner cannot tell "
                             "from a line");
   }
 }
@@ -194,6 +194,12 @@ void PolygonValidator::validateRing(const Ring& ring, const std::string& ring_na
   if (!CGAL::is_simple_2(deduped.points.begin(), deduped.points.end(), Kernel())) {
     throw InvalidInputError(ring_name + " is self-intersecting: " + findSelfIntersection(deduped));
   }
+  Eigen::AlignedBox2d extent;
+  for (const Point2& p : ring) extent.extend(p);
+  checkNotSliver(ring, ring_name,
+                 kRelativeSliverWidth *
+                     std::max({1.0, extent.sizes().maxCoeff(), extent.min().cwiseAbs().maxCoeff(),
+                               extent.max().cwiseAbs().maxCoeff()}));
 }
 
 void PolygonValidator::validate(const PolygonWithHoles& polygon) const {
@@ -212,17 +218,6 @@ void PolygonValidator::validate(const PolygonWithHoles& polygon) const {
   for (std::size_t h = 0; h < polygon.holes.size(); ++h) {
     validateRing(polygon.holes[h], ringName(h));
   }
-  Eigen::AlignedBox2d hull_extent;
-  for (const Point2& p : polygon.hull) hull_extent.extend(p);
-  const double sliver_width =
-      kRelativeSliverWidth *
-      std::max({1.0, hull_extent.sizes().maxCoeff(), hull_extent.min().cwiseAbs().maxCoeff(),
-                hull_extent.max().cwiseAbs().maxCoeff()});
-  checkNotSliver(polygon.hull, "hull", sliver_width);
-  for (std::size_t h = 0; h < polygon.holes.size(); ++h) {
-    checkNotSliver(polygon.holes[h], ringName(h), sliver_width);
-  }
-
   // A hole entirely outside the hull: their interiors do not meet. A hole vertex strictly
   // inside the hull settles it cheaply; otherwise an exact Boolean test decides.
   const DedupedRing hull = dropDuplicateVertices(polygon.hull);

@@ -27,8 +27,8 @@ class PolygonValidator {
  public:
   /// Rejects: more than the size limits above; a non-finite or too large coordinate; a
   /// ring with fewer than 3 distinct vertices or zero area, or a sliver (a mean width,
-  /// twice the area over the perimeter, of at most 1e-9 of the map's scale: the hull's
-  /// extent or its largest coordinate); a
+  /// twice the area over the perimeter, of at most 1e-9 of the ring's scale: its extent or
+  /// its largest coordinate); a
   /// self-intersecting ring
   /// (checked after dropping duplicate consecutive vertices, so a repeated vertex is
   /// allowed); a hole entirely outside the hull (their interiors do not meet).
@@ -42,8 +42,8 @@ class PolygonValidator {
                         const PolygonWithHoles& polygon) const;
 
   /// Throws InvalidInputError when `ring` (duplicate consecutive vertices allowed) is not a
-  /// simple polygon with non-zero area; `ring_name` names it in the message. Used on the
-  /// cleaner's output as well.
+  /// simple polygon with non-zero area, or is a sliver (above); `ring_name` names it in the
+  /// message. Used on the cleaner's output as well.
   void validateRing(const Ring& ring, const std::string& ring_name) const;
 };
 

@@ -47,6 +47,21 @@ void expectWellFormed(const PolygonWithHoles& free_area) {
   }
 }
 
+TEST(PolygonCleaner, HolesThatLeaveOnlyASliverFreeAreInvalidInput) {
+  // Found by planner_fuzzer: two holes cover a thin triangle but for 1.8e-15 m^2, and the
+  // route stage, for which that is a line, failed on the "valid" free area.
+  const std::string error = cleaningError({{{-5, -5},
+                                            {-4.999999999992768, 13.947368431836509},
+                                            {-3.441543287949205, 33.12523863956347}},
+                                           {{{14.340920738194825, 16.11604005098343},
+                                             {-4.9999999999999645, -5},
+                                             {-4.999999999999858, 34.998779296875}},
+                                            {{-4.999999996309658, 10.501375971647917},
+                                             {-4.965576520716009, -4.972490270619115},
+                                             {-4.9763003491785005, -4.940231984954153}}}});
+  EXPECT_EQ(error.rfind("after cleaning, the hull is a sliver", 0), 0u) << error;
+}
+
 TEST(PolygonCleaner, LeavesACleanPolygonAloneButOrientsIt) {
   PolygonWithHoles raw{square(0, 0, 30), {square(8, 8, 4)}};
   std::reverse(raw.hull.begin(), raw.hull.end());
