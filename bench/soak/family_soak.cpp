@@ -64,7 +64,8 @@ constexpr double kRelativeTolerance = 1e-9;
 /// Slack on the sampling distance and the curvature bound (rounding).
 constexpr double kSamplingSlack = 1e-6;
 constexpr double kCurvatureSlack = 1e-6;
-/// Seeds passed over for their size before a family is given up (its maps are larger).
+/// Seeds passed over for their size in a row before a family is given up (its maps are
+/// larger).
 constexpr std::uint64_t kMaxPassedOver = 10'000;
 
 struct Options {
@@ -308,6 +309,7 @@ int runFamily(testing::MapFamily family, const Options& options) {
         }
         continue;
       }
+      passed_over = 0;
       tally.add(runMap(map, options), vertices);
       if (++done % 20 == 0) {
         std::cerr << "progress: " << name << " " << done << " maps (up to seed " << seed - 1
