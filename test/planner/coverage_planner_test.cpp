@@ -116,6 +116,22 @@ TEST(CoveragePlanner, AGoalInANarrowBayIsJoinedAlongTheBayNotThroughItsWall) {
   EXPECT_NEAR(entry.y(), 9.0, 1e-9);
 }
 
+/// The parameters of a planner_fuzzer finding: a trapezoidal decomposition and the frustum
+/// sensor's fuzzed values.
+PlannerParameters fuzzedParameters(double wall_distance, double sensor_distance, double lateral_fov,
+                                   double onward_fov, double lateral_overlap,
+                                   double turning_radius) {
+  PlannerParameters parameters;
+  parameters.wall_distance = wall_distance;
+  parameters.sensor_distance = sensor_distance;
+  parameters.lateral_fov = lateral_fov;
+  parameters.onward_fov = onward_fov;
+  parameters.lateral_overlap = lateral_overlap;
+  parameters.turning_radius = turning_radius;
+  parameters.decomposition_type = "trapezoidal";
+  return parameters;
+}
+
 TEST(CoveragePlanner, LanesThroughAcuteCornersEndInsideTheOffsetArea) {
   // Found by planner_fuzzer (its seed corpus input seed_01): a footprint longer than wide
   // (W 0.72 m, L 2.70 m) on a 9-vertex hull whose offset has acute corners. Lanes placed
@@ -131,14 +147,9 @@ TEST(CoveragePlanner, LanesThroughAcuteCornersEndInsideTheOffsetArea) {
                                   {15.5, 13},
                                   {16.5, 13.5}},
                                  {}};
-  PlannerParameters parameters;
-  parameters.wall_distance = 1.7462979108529295;
-  parameters.sensor_distance = 0.65372509748196106;
-  parameters.lateral_fov = 1.010946912328647;
-  parameters.onward_fov = 2.2437657091353485;
-  parameters.lateral_overlap = 0.72074031980502995;
-  parameters.turning_radius = 4.7983420811323896;
-  parameters.decomposition_type = "trapezoidal";
+  const PlannerParameters parameters =
+      fuzzedParameters(1.7462979108529295, 0.65372509748196106, 1.010946912328647,
+                       2.2437657091353485, 0.72074031980502995, 4.7983420811323896);
   const CoveragePlan plan = CoveragePlanner(parameters).plan(hull, {-5, -5}, {-5, -5});
   expectValidPlan(hull, plan, parameters, {-5, -5}, {-5, -5});
 }
@@ -161,14 +172,9 @@ TEST(CoveragePlanner, ASmallOffsetAreaFarFromTheOriginKeepsItsLaneEndsInside) {
                                   {15.999999999999998, 13.267949192431121},
                                   {16.732050807568875, 14}},
                                  {}};
-  PlannerParameters parameters;
-  parameters.wall_distance = 1.747009277346526;
-  parameters.sensor_distance = 0.9457667617297865;
-  parameters.lateral_fov = 1.1864368056340127;
-  parameters.onward_fov = 2.0866980950750476;
-  parameters.lateral_overlap = 0.8241383538584348;
-  parameters.turning_radius = 1.8709583598561028;
-  parameters.decomposition_type = "trapezoidal";
+  const PlannerParameters parameters =
+      fuzzedParameters(1.747009277346526, 0.9457667617297865, 1.1864368056340127,
+                       2.0866980950750476, 0.8241383538584348, 1.8709583598561028);
   const CoveragePlan plan = CoveragePlanner(parameters).plan(hull, {-5, -5}, {-5, -5});
   expectValidPlan(hull, plan, parameters, {-5, -5}, {-5, -5});
 }
@@ -187,14 +193,9 @@ TEST(CoveragePlanner, TransitionsBetweenLaneEndsNearAConvexCornerAreFinite) {
                                   {15.5, 13},
                                   {16.5, 13.5}},
                                  {}};
-  PlannerParameters parameters;
-  parameters.wall_distance = 1.7462979108529295;
-  parameters.sensor_distance = 0.6537250974819611;
-  parameters.lateral_fov = 1.010946912328647;
-  parameters.onward_fov = 2.2437657091353485;
-  parameters.lateral_overlap = 0.72074031980503;
-  parameters.turning_radius = 4.79834208113239;
-  parameters.decomposition_type = "trapezoidal";
+  const PlannerParameters parameters =
+      fuzzedParameters(1.7462979108529295, 0.6537250974819611, 1.010946912328647,
+                       2.2437657091353485, 0.72074031980503, 4.79834208113239);
   const CoveragePlan plan = CoveragePlanner(parameters).plan(hull, {-5, -5}, {-5, -5});
   expectValidPlan(hull, plan, parameters, {-5, -5}, {-5, -5});
 }
@@ -208,14 +209,9 @@ TEST(CoveragePlanner, TransitionsAlongAnEdgePastAConvexCornerAreFinite) {
                                   {8.572093340119306, 11.9318255814334},
                                   {20.20407070343419, 4.048520334254395}},
                                  {}};
-  PlannerParameters parameters;
-  parameters.wall_distance = 1.7462979108529295;
-  parameters.sensor_distance = 0.6537250974819611;
-  parameters.lateral_fov = 1.010946912328647;
-  parameters.onward_fov = 1.5074375841353487;
-  parameters.lateral_overlap = 0.72074031980503;
-  parameters.turning_radius = 4.79834208113239;
-  parameters.decomposition_type = "trapezoidal";
+  const PlannerParameters parameters =
+      fuzzedParameters(1.7462979108529295, 0.6537250974819611, 1.010946912328647,
+                       1.5074375841353487, 0.72074031980503, 4.79834208113239);
   const Point2 start(-4.9999999999999964, -5);
   const CoveragePlan plan = CoveragePlanner(parameters).plan(hull, start, {-5, -5});
   expectValidPlan(hull, plan, parameters, start, {-5, -5});
