@@ -38,8 +38,9 @@ void checkNotSliver(const Ring& ring, const std::string& ring_name, double toler
   double twice_area = 0.0;
   double perimeter = 0.0;
   for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    const Point2& a = ring[i];
-    const Point2& b = ring[(i + 1) % n];
+    // Relative to the first vertex, so that large coordinates do not cancel.
+    const Point2 a = ring[i] - ring.front();
+    const Point2 b = ring[(i + 1) % n] - ring.front();
     twice_area += a.x() * b.y() - b.x() * a.y();
     perimeter += (b - a).norm();
   }
