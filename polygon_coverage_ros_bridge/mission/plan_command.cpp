@@ -61,12 +61,13 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
   request.title =
       "Coverage plan: " + std::filesystem::path(arguments.mission_path).filename().string() +
       (mission.parameters.smoothing ? " (smoothed)" : " (unsmoothed)");
-  const std::vector<std::string> written = writePlanOutputs(request, out_dir, out);
+  const PlanOutputs outputs = writePlanOutputs(request, out_dir, out);
+  for (const std::string& warning : outputs.warnings) notes << "warning: " << warning << "\n";
   err << notes.str();
   out << "write: " << plan.waypoints.size() << " waypoints, planning took "
       << formatSeconds(planning_time_s) << "\n";
   out << "wrote";
-  for (const std::string& path : written) out << " " << path;
+  for (const std::string& path : outputs.files) out << " " << path;
   out << "\n";
 }
 

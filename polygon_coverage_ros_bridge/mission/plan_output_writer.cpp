@@ -19,8 +19,8 @@
 
 namespace kinematic_coverage::core {
 
-std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
-                                          const std::string& out_dir, std::ostream& out) {
+PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string& out_dir,
+                             std::ostream& out) {
   const PlannerParameters& parameters = *request.parameters;
   const PolygonWithHoles& free_area = *request.free_area;
   const CoveragePlan& plan = *request.plan;
@@ -87,7 +87,12 @@ std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
       .set("traversal_time_s", trajectory.traversal_time_s)
       .set("max_curvature", trajectory.max_curvature)
       .set("turns_total", static_cast<double>(turns.turns_total))
-      .set("turns_smoothed", static_cast<double>(turns.turns_smoothed));
+      .set("turns_smoothed", static_cast<double>(turns.turns_smoothed))
+      .set("turns_inner", static_cast<double>(turns.inner))
+      .set("turns_outer_bisector", static_cast<double>(turns.outer_bisector))
+      .set("turns_outer_tangent", static_cast<double>(turns.outer_tangent))
+      .set("turns_reverse_curve", static_cast<double>(turns.reverse_curve))
+      .set("turns_sharp", static_cast<double>(turns.turns_total - turns.turns_smoothed));
   setCoverageMetrics(coverage.report, metrics);
   if (combined) metrics.set("combined_coverage_percent", combined->report.coverage_percent);
   if (std::isfinite(trajectory.min_obstacle_clearance_m)) {
@@ -111,8 +116,17 @@ std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
           << " of " << turns.turns_total << " turns smoothed  |  " << trajectory.trajectory_length_m
           << " m  |  " << trajectory.traversal_time_s << " s";
   plot.title_lines = {request.title, figures.str()};
+  PlanOutputs outputs;
+  // Replanning: what the visited poses and the new trajectory see together.
+  const TrajectoryCoverage& searched = combined ? *combined : coverage;
+  if (const std::optional<std::string> warning = reachableCoverageWarning(searched)) {
+    outputs.warnings.push_back(*warning);
+    if (searched.largest_unseen_region)
+      plot.unseen_region = searched.largest_unseen_region->outline;
+  }
   CoveragePlot().writePng(plot, plot_path);
-  return {waypoints_path, trajectory_path, metrics_path, plot_path};
+  outputs.files = {waypoints_path, trajectory_path, metrics_path, plot_path};
+  return outputs;
 }
 
 }  // namespace kinematic_coverage::core

@@ -26,11 +26,19 @@ struct PlanOutputRequest {
   std::optional<std::vector<Pose2>> visited;
 };
 
+/// What writePlanOutputs wrote and found.
+struct PlanOutputs {
+  std::vector<std::string> files;     ///< the written paths
+  std::vector<std::string> warnings;  ///< e.g. reachable area left unseen (no "warning: ")
+};
+
 /// Smooths, samples and times the plan's trajectory (TrajectoryGenerator), measures its
 /// coverage, and writes DIR/waypoints.csv, DIR/trajectory.csv, DIR/metrics.json and
 /// DIR/plot.png (docs/REFERENCE.md, File formats), with one progress line per stage on `out`.
-/// Returns the written paths. Throws InvalidInputError when a file cannot be written.
-std::vector<std::string> writePlanOutputs(const PlanOutputRequest& request,
-                                          const std::string& out_dir, std::ostream& out);
+/// A trajectory that sees less than kReachableCoverageBarPercent of the reachable area
+/// gives a warning, and the plot outlines the largest unseen region. Throws
+/// InvalidInputError when a file cannot be written.
+PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string& out_dir,
+                             std::ostream& out);
 
 }  // namespace kinematic_coverage::core

@@ -85,7 +85,8 @@ void ReplanCommand::run(const std::vector<std::string>& args, std::ostream& out,
   request.title = "Replan: " + std::filesystem::path(arguments.mission_path).filename().string() +
                   " (" + mission.parameters.replanning_method + ")";
   request.visited = visited;
-  std::vector<std::string> written = writePlanOutputs(request, arguments.values.at("--out"), out);
+  const PlanOutputs outputs = writePlanOutputs(request, arguments.values.at("--out"), out);
+  std::vector<std::string> written = outputs.files;
   const std::string remaining_path =
       (std::filesystem::path(arguments.values.at("--out")) / "remaining.yaml").string();
   writeTextFile(remaining_path, remainingYaml(replanned.remaining.parts));
@@ -93,6 +94,7 @@ void ReplanCommand::run(const std::vector<std::string>& args, std::ostream& out,
 
   std::ostringstream notes;
   for (const std::string& warning : replanned.warnings) notes << "warning: " << warning << "\n";
+  for (const std::string& warning : outputs.warnings) notes << "warning: " << warning << "\n";
   err << notes.str();
   out << "write: " << replanned.plan.waypoints.size() << " waypoints, replanning took "
       << formatSeconds(replanned.planning_time_s) << "\n";

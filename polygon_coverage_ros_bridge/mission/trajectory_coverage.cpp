@@ -16,7 +16,9 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
   const CoverageEvaluator evaluator(free_area, offset_parts, sensor, reportingResolution(),
                                     kReportingGridAngle);
   TrajectoryCoverage coverage;
-  coverage.report = evaluator.report(evaluator.seeTrajectory(poses));
+  const SeenArea seen_reported = evaluator.seeTrajectory(poses);
+  coverage.report = evaluator.report(seen_reported);
+  coverage.largest_unseen_region = evaluator.largestUnseenRegion(seen_reported);
   coverage.cell_size_m = evaluator.raster().cellSize();
   // The heatmap on a grid along the map's axes, as plots draw it.
   RasterResolution drawing;
@@ -27,6 +29,22 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
   coverage.duration_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return coverage;
+}
+
+std::optional<std::string> reachableCoverageWarning(const TrajectoryCoverage& coverage) {
+  const CoverageReport& report = coverage.report;
+  if (report.reachable_coverage_percent >= kReachableCoverageBarPercent) return std::nullopt;
+  std::ostringstream out;
+  out.precision(5);
+  out << "the trajectory sees " << report.reachable_coverage_percent
+      << " % of the reachable area, less than " << kReachableCoverageBarPercent
+      << " %: " << report.unseen_reachable_area_m2 << " m^2 of it unseen";
+  if (const std::optional<UnseenRegion>& region = coverage.largest_unseen_region) {
+    out.precision(4);
+    out << ", the largest unseen region " << region->area_m2 << " m^2 around ("
+        << region->centroid.x() << ", " << region->centroid.y() << ")";
+  }
+  return out.str();
 }
 
 std::string coverageSummary(const TrajectoryCoverage& coverage) {

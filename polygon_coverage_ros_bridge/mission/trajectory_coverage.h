@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,13 @@ struct TrajectoryCoverage {
   double cell_size_m = 0.0;  ///< edge of the raster's square cells
   double duration_s = 0.0;   ///< rasterizing the areas, seeing the poses and the report
   Heatmap heatmap;           ///< separate visits per cell, for plot.png
+  /// The largest piece of the reachable area never seen; none when all of it was seen.
+  std::optional<UnseenRegion> largest_unseen_region;
 };
+
+/// The share of the reachable area (percent) below which a trajectory leaves area it
+/// could search unseen, and `plan` says so.
+constexpr double kReachableCoverageBarPercent = 99.9;
 
 /// Measures the coverage of a trajectory's sampled `poses` over a
 /// mission's cleaned free area, with the sensor that `parameters` describe, on the raster
@@ -30,6 +37,11 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
                                              const std::vector<PolygonWithHoles>& offset_parts,
                                              const PlannerParameters& parameters,
                                              const std::vector<Pose2>& poses);
+
+/// A warning when the trajectory sees less than kReachableCoverageBarPercent of the
+/// reachable area, naming the unseen area and the largest unseen region (its area and
+/// centroid); none otherwise.
+std::optional<std::string> reachableCoverageWarning(const TrajectoryCoverage& coverage);
 
 /// The summary of a coverage stage's progress line, e.g. "99.977 % of the free area seen
 /// (coverage loss 0.023 %), 100 % of the reachable area, 5 cm cells".

@@ -58,7 +58,7 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   }
   requirePositive("turning_radius", p.turning_radius, "m");
   requireOneOf("offset_parts", p.offset_parts, {"all", "largest"});
-  requireOneOf("smoothing_strategy", p.smoothing_strategy, {"global", "local"});
+  requireOneOf("smoothing_strategy", p.smoothing_strategy, {"coverage_safe", "global", "local"});
   if (!(std::isfinite(p.min_turning_radius) && p.min_turning_radius >= 0.0 &&
         p.min_turning_radius <= p.turning_radius)) {
     throw InvalidInputError(

@@ -40,6 +40,34 @@ std::vector<Pose2> lawnmower(double x0, double x1, double y0, double y1, double 
   return waypoints;
 }
 
+// The largest unseen piece of the reachable area, found on a turned raster and reported
+// in the map's frame: a lane along the bottom of a 40 m x 10 m area, a leg up its right
+// end and a short one back leave x 0 to 35, y 4 to 10 and x 35 to 38, y 4 to 6 unseen,
+// one region of 216 m^2.
+TEST(CoverageEvaluator, NamesTheLargestUnseenRegionInTheMapsFrame) {
+  const PolygonWithHoles area{rectangle(0, 0, 40, 10), {}};
+  const FrustumSensor sensor(4.0, 2.0, 0.0);
+  for (const double angle : {0.0, 0.2}) {
+    SCOPED_TRACE("grid angle " + std::to_string(angle));
+    const CoverageEvaluator evaluator(area, {area}, sensor, {0.05}, angle);
+    const SeenArea seen =
+        evaluator.seeWaypointPath({{0, 2, 0}, {40, 2, 0}, {40, 8, 0}, {36, 8, 0}});
+    const std::optional<UnseenRegion> region = evaluator.largestUnseenRegion(seen);
+    ASSERT_TRUE(region.has_value());
+    EXPECT_NEAR(region->area_m2, 216.0, 2.0);
+    EXPECT_NEAR(region->centroid.x(), (210.0 * 17.5 + 6.0 * 36.5) / 216.0, 0.2);
+    EXPECT_NEAR(region->centroid.y(), (210.0 * 7.0 + 6.0 * 5.0) / 216.0, 0.2);
+    ASSERT_EQ(region->outline.size(), 4u);
+    EXPECT_NEAR(region->outline[0].x(), 0.0, 0.1);
+    EXPECT_NEAR(region->outline[0].y(), 4.0, 0.1);
+    EXPECT_NEAR(region->outline[2].x(), 38.0, 0.1);
+    EXPECT_NEAR(region->outline[2].y(), 10.0, 0.1);
+  }
+  const CoverageEvaluator evaluator(area, {area}, sensor, {0.05});
+  EXPECT_FALSE(evaluator.largestUnseenRegion(evaluator.seeWaypointPath(lawnmower(0, 40, 0, 10, 2)))
+                   .has_value());
+}
+
 TEST(CoverageEvaluator, LawnmowerWithOverlapCoversTheReachableArea) {
   // 30 m square, 1 m wall distance, the thesis's 40 % overlap, footprint 4 m x 1.6 m.
   const PolygonWithHoles free_area{rectangle(0, 0, 30, 30), {}};

@@ -175,6 +175,22 @@ TEST(SeenArea, QuarterRotationMatchesIndependentUnionOfFootprints) {
   EXPECT_NEAR(seenArea(seen), expected, 1e-3 * expected);
 }
 
+// A path given as poses, rotations included, sees with addSweptPath exactly what the
+// waypoint path it samples sees, and more than addTrajectory (the rotation's sectors).
+TEST(SeenArea, SweptPathOfAWaypointPathSeesTheSameCells) {
+  const FrustumSensor sensor(4.0, 2.0, 0.0);
+  const CoverageRaster raster({0.0, 0.0}, 0.02, 1500, 1000);
+  const std::vector<Pose2> waypoints{{5, 5, 0}, {20, 5, 0}, {20, 12, 0}, {8, 16, 0}};
+  SeenArea expected(raster);
+  expected.addWaypointPath(waypoints, sensor, 0.2);
+  SeenArea swept(raster);
+  swept.addSweptPath(waypointPathPoses(waypoints, 0.2), sensor);
+  SeenArea unswept(raster);
+  unswept.addTrajectory(waypointPathPoses(waypoints, 0.2), sensor);
+  EXPECT_EQ(swept.seenMask(), expected.seenMask());
+  EXPECT_GT(seenArea(swept), seenArea(unswept));
+}
+
 TEST(SeenArea, CircleTurnSeesAnnulus) {
   const FrustumSensor sensor(4.0, 2.0, 0.0);
   const CoverageRaster raster({26.0, 26.0}, 0.02, 2400, 2400);

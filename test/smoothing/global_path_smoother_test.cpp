@@ -8,6 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "test/smoothing/smoothing_oracle.h"
+#include "trajectory_generation_tools/coverage/seen_area.h"
 #include "trajectory_generation_tools/smoothing/corner_coverage_check.h"
 
 namespace kinematic_coverage::core {
@@ -180,6 +181,80 @@ TEST(GlobalPathSmoother, CoveragePreservingChoosesTheFastestSmoothingThatPreserv
   // smoothed than that (a slower smoothing that preserves coverage).
   EXPECT_GT(unconstrained_kept, 10);
   EXPECT_GT(smoothed, unconstrained_kept);
+}
+
+/// The reachable area (m^2) that the sharp path through `waypoints` sees and `path` does
+/// not, on a raster of 3 cm cells over `area`, a rectangle: the cells within half a
+/// footprint length of the rectangle shrunk by `wall_distance` (its offset free area).
+double lostReachable(const PolygonWithHoles& area, double wall_distance,
+                     const std::vector<Point2>& waypoints, const SmoothedPath& path,
+                     const FrustumSensor& sensor) {
+  const CoverageRaster raster = CoverageRaster::covering(area, {0.03});
+  const Point2 low = area.hull[0] + Point2::Constant(wall_distance);
+  const Point2 high = area.hull[2] - Point2::Constant(wall_distance);
+  std::vector<Pose2> sharp_poses;
+  for (const Point2& p : waypoints) sharp_poses.push_back({p.x(), p.y(), 0.0});
+  SeenArea sharp(raster);
+  sharp.addWaypointPath(sharp_poses, sensor, 0.05);
+  std::vector<Pose2> poses;
+  for (const PathPrimitive& p : path.primitives) {
+    for (int k = 0; k <= 200; ++k) poses.push_back(p.poseAt(k / 200.0));
+  }
+  SeenArea smoothed(raster);
+  smoothed.addSweptPath(poses, sensor);
+  std::size_t lost = 0;
+  for (std::size_t i = 0; i < raster.cellCount(); ++i) {
+    if (!sharp.seen(i) || smoothed.seen(i)) continue;
+    const Point2 centre = raster.cellCentre(i);
+    const Point2 outside = (low - centre).cwiseMax(centre - high).cwiseMax(Point2::Zero());
+    if (insideRing(centre, area.hull) && outside.norm() <= 0.5 * sensor.length()) ++lost;
+  }
+  return lost * raster.cellArea();
+}
+
+TEST(GlobalPathSmoother, CoverageSafeKeepsTheTipOfADeadEndBay) {
+  // A bay 11 m wide, swept up one lane and back down another 3 m beside it: the turn at
+  // its far end is a near-reversal, which the inner arc takes 32 m before the end. The
+  // plain programme loses the bay's end; the coverage-safe one turns beyond it instead.
+  const FrustumSensor sensor(4.0, 3.0, 0.0);
+  PolygonWithHoles bay;
+  bay.hull = {{-4, -10}, {7, -10}, {7, 43}, {-4, 43}};
+  const std::vector<Point2> path{{0, -8}, {0, 40}, {3, -8}, {6, -8}};
+  GlobalSmoothingOptions safe = options(1.0, 1.0);
+  safe.safe_sensor = sensor;
+  safe.wall_distance = 3.0;  // the lanes' ends keep 3 m from the walls
+  const SmoothedPath plain = GlobalPathSmoother(bay, options(1.0, 1.0)).smooth(path);
+  const SmoothedPath kept = GlobalPathSmoother(bay, safe).smooth(path);
+  testing::expectContinuousPath(kept, 60.0);
+  EXPECT_GT(lostReachable(bay, 3.0, path, plain, sensor), 1.0);
+  EXPECT_LT(lostReachable(bay, 3.0, path, kept, sensor), 0.05);
+  EXPECT_EQ(kept.statistics.inner, 1);  // the last corner, a right angle
+  for (const PathPrimitive& p : kept.primitives) {
+    if (p.kind() == PrimitiveKind::kArc) {
+      EXPECT_GT(testing::sampledArcClearance(bay, p, 0.005), 1e-9);
+    }
+  }
+}
+
+TEST(GlobalPathSmoother, CoverageSafeSmoothsWhatOverlappingLanesSeeAgain) {
+  // Boustrophedon lanes 2 m apart under a 4 m wide footprint: what a U-turn's arcs cut off
+  // between two lanes, the neighbouring lanes see, so those turns stay smoothed. Only the
+  // outermost lanes' outer corners have no neighbour beyond them: there the cut loses a
+  // corner of the reachable area, which the plain programme gives up and the coverage-safe
+  // one keeps.
+  const FrustumSensor sensor(4.0, 3.0, 0.0);
+  GlobalSmoothingOptions safe = options(1.0, 1.0);
+  safe.safe_sensor = sensor;
+  safe.wall_distance = 5.0;  // the lanes keep 5 m from the walls
+  const PolygonWithHoles area = lanesHull(20, 2.0);
+  const SmoothedPath plain = GlobalPathSmoother(area, options(1.0, 1.0)).smooth(lanes(20, 2.0));
+  const SmoothedPath path = GlobalPathSmoother(area, safe).smooth(lanes(20, 2.0));
+  testing::expectContinuousPath(path, 100.0);
+  EXPECT_EQ(plain.statistics.turns_smoothed, 38);
+  EXPECT_GE(path.statistics.turns_smoothed, 36);
+  EXPECT_EQ(path.statistics.turns_smoothed + path.statistics.kept_for_coverage, 38);
+  EXPECT_GT(lostReachable(area, 5.0, lanes(20, 2.0), plain, sensor), 0.5);
+  EXPECT_LT(lostReachable(area, 5.0, lanes(20, 2.0), path, sensor), 0.05);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // The smoothed path's properties for every smoothing strategy: Algorithm 1
 // (PathSmoother) and the global programme (GlobalPathSmoother) at one radius, with a
-// variable radius, and coverage-preserving. On seeded random paths among random holes:
-// continuity (positions and headings), statistics that match the primitives, arcs clear of
+// variable radius, coverage-preserving and coverage-safe. On seeded random paths among random
+// holes: continuity (positions and headings), statistics that match the primitives, arcs clear of
 // the hull and holes, curvature at most 1 / min_turning_radius.
 #include <gtest/gtest.h>
 
@@ -57,6 +57,13 @@ std::vector<Strategy> strategies() {
        [](const PolygonWithHoles& area, double r, const std::vector<Point2>& points) {
          GlobalSmoothingOptions options = globalOptions(r, 1.0);
          options.preserved_sensor = FrustumSensor(4.0, 3.0, 0.0);
+         return GlobalPathSmoother(area, options).smooth(points);
+       },
+       1.0, 60, 0.01},
+      {"coverage_safe",
+       [](const PolygonWithHoles& area, double r, const std::vector<Point2>& points) {
+         GlobalSmoothingOptions options = globalOptions(r, 1.0);
+         options.safe_sensor = FrustumSensor(4.0, 3.0, 0.0);
          return GlobalPathSmoother(area, options).smooth(points);
        },
        1.0, 60, 0.01},

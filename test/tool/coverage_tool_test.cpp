@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -209,6 +210,13 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
                                 "min_obstacle_clearance_m", "turns_total", "turns_smoothed"}) {
     EXPECT_GT(metric(json, key), 0.0) << key << " in " << json;
   }
+  EXPECT_EQ(metric(json, "turns_inner") + metric(json, "turns_outer_bisector") +
+                metric(json, "turns_outer_tangent") + metric(json, "turns_reverse_curve"),
+            metric(json, "turns_smoothed"))
+      << json;
+  EXPECT_EQ(metric(json, "turns_sharp"),
+            metric(json, "turns_total") - metric(json, "turns_smoothed"))
+      << json;
   // With 50 % overlap the lake's trajectory sees nearly all of it.
   EXPECT_GE(metric(json, "coverage_percent"), 99.9) << json;
   EXPECT_LE(metric(json, "coverage_percent"), 100.0) << json;
@@ -248,13 +256,31 @@ TEST(CoverageTool, PlansEveryPartOfASplitAreaAndNamesTheGap) {
   EXPECT_GE(metric(json, "reachable_coverage_percent"), 99.9) << json;
   EXPECT_LE(metric(json, "unseen_reachable_area_m2"), 0.5) << json;
 
-  // Only the largest part: the other one is named, and its area shows as unseen.
+  // Only the largest part: the other one is named, and its area shows as unseen, in the
+  // figures, in a warning that names where it is, and outlined in the plot.
   const ToolRun largest =
       runTool("plan '" + mission + "' --out '" + out_dir + "' --set offset_parts=largest");
   ASSERT_EQ(largest.exit_status, 0);
-  ASSERT_EQ(largest.err_lines.size(), 1u);
+  ASSERT_EQ(largest.err_lines.size(), 2u);
   EXPECT_NE(largest.err_lines[0].find("is not planned (offset_parts: largest)"), std::string::npos)
       << largest.err_lines[0];
+  EXPECT_NE(largest.err_lines[1].find("warning: the trajectory sees "), std::string::npos)
+      << largest.err_lines[1];
+  EXPECT_NE(largest.err_lines[1].find("% of the reachable area, less than 99.9 %"),
+            std::string::npos)
+      << largest.err_lines[1];
+  // The unseen room: x 22 to 36, y 3 to 17, centred at (29, 10).
+  double area = 0.0, x = 0.0, y = 0.0;
+  const std::string& line = largest.err_lines[1];
+  const std::size_t named = line.find("the largest unseen region ");
+  ASSERT_NE(named, std::string::npos) << line;
+  ASSERT_EQ(std::sscanf(line.c_str() + named, "the largest unseen region %lf m^2 around (%lf, %lf)",
+                        &area, &x, &y),
+            3)
+      << line;
+  EXPECT_GE(area, 144.0) << line;
+  EXPECT_NEAR(x, 29.0, 1.0) << line;
+  EXPECT_NEAR(y, 10.0, 1.0) << line;
   const std::string partial = readText(out_dir + "/metrics.json");
   EXPECT_LE(metric(partial, "reachable_coverage_percent"), 80.0) << partial;
   EXPECT_GE(metric(partial, "unseen_reachable_area_m2"), 144.0) << partial;

@@ -52,7 +52,7 @@ TEST(TrajectoryGenerator, RejectsAMinTurningRadiusAboveTheTurningRadius) {
 /// waypoint's heading, under every strategy; no waypoint is invalid.
 TEST(TrajectoryGenerator, OneWaypointGivesOnePoseAndNoneIsInvalid) {
   const PolygonWithHoles area{{{-5, -5}, {5, -5}, {5, 5}, {-5, 5}}, {}};
-  for (const char* strategy : {"global", "local", "none"}) {
+  for (const char* strategy : {"coverage_safe", "global", "local", "none"}) {
     SCOPED_TRACE(strategy);
     PlannerParameters parameters;
     parameters.smoothing = std::string(strategy) != "none";

@@ -1,8 +1,12 @@
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <sstream>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "trajectory_generation_tools/coverage/reachable_area.h"
@@ -78,6 +82,10 @@ Point2 CoverageEvaluator::toRaster(const Point2& p) const {
   return grid_angle_ == 0.0 ? p : Point2(Eigen::Rotation2Dd(-grid_angle_) * p);
 }
 
+Point2 CoverageEvaluator::fromRaster(const Point2& p) const {
+  return grid_angle_ == 0.0 ? p : Point2(Eigen::Rotation2Dd(grid_angle_) * p);
+}
+
 std::vector<Pose2> CoverageEvaluator::toRaster(const std::vector<Pose2>& poses) const {
   if (grid_angle_ == 0.0) return poses;
   std::vector<Pose2> result;
@@ -102,12 +110,68 @@ SeenArea CoverageEvaluator::seeWaypointPath(const std::vector<Pose2>& waypoints,
   return seen;
 }
 
-CoverageReport CoverageEvaluator::report(const SeenArea& seen) const {
+void CoverageEvaluator::requireOwnRaster(const SeenArea& seen) const {
   if (seen.raster().cellCount() != raster_.cellCount() ||
       seen.raster().cellSize() != raster_.cellSize() ||
       seen.raster().origin() != raster_.origin()) {
     throw InvalidInputError("coverage: the seen area was made on another raster");
   }
+}
+
+std::optional<UnseenRegion> CoverageEvaluator::largestUnseenRegion(const SeenArea& seen) const {
+  requireOwnRaster(seen);
+  const auto unseen = [&](std::size_t i) { return reachable_area_[i] != 0 && !seen.seen(i); };
+  // Flood fill over the unseen reachable cells, 8-connected; each cell is visited once.
+  std::vector<std::uint8_t> done(raster_.cellCount(), 0);
+  std::vector<std::size_t> stack;
+  std::optional<UnseenRegion> largest;
+  const int columns = raster_.columns();
+  const int rows = raster_.rows();
+  for (std::size_t first = 0; first < done.size(); ++first) {
+    if (done[first] != 0 || !unseen(first)) continue;
+    std::size_t cells = 0;
+    Point2 sum = Point2::Zero();
+    Point2 low = Point2::Constant(std::numeric_limits<double>::infinity());
+    Point2 high = -low;
+    done[first] = 1;
+    stack.assign(1, first);
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      const int row = static_cast<int>(i / static_cast<std::size_t>(columns));
+      const int column = static_cast<int>(i % static_cast<std::size_t>(columns));
+      const Point2 centre = fromRaster(raster_.cellCentre(i));
+      ++cells;
+      sum += centre;
+      low = low.cwiseMin(centre);
+      high = high.cwiseMax(centre);
+      for (int dr = -1; dr <= 1; ++dr) {
+        for (int dc = -1; dc <= 1; ++dc) {
+          const int r = row + dr;
+          const int c = column + dc;
+          if (r < 0 || r >= rows || c < 0 || c >= columns) continue;
+          const std::size_t j = raster_.index(r, c);
+          if (done[j] != 0 || !unseen(j)) continue;
+          done[j] = 1;
+          stack.push_back(j);
+        }
+      }
+    }
+    const double area = static_cast<double>(cells) * raster_.cellArea();
+    if (largest && area <= largest->area_m2) continue;
+    // The cells' centres grown by half a (turned) cell's diagonal: the cells themselves.
+    const Point2 half = Point2::Constant(std::sqrt(0.5) * raster_.cellSize());
+    low -= half;
+    high += half;
+    largest = UnseenRegion{area,
+                           sum / static_cast<double>(cells),
+                           {low, {high.x(), low.y()}, high, {low.x(), high.y()}}};
+  }
+  return largest;
+}
+
+CoverageReport CoverageEvaluator::report(const SeenArea& seen) const {
+  requireOwnRaster(seen);
   CoverageReport result;
   double free_cells = 0.0;
   double seen_free_cells = 0.0;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
@@ -50,6 +51,15 @@ constexpr std::size_t kReportingFloorCells = 1'000'000;
 /// 1 % on a square, more on long or ragged maps, whose worst case then exceeds 0.1 %).
 RasterResolution reportingResolution();
 
+/// A connected piece of the reachable area that a trajectory never saw (cells touching at
+/// an edge or a corner), in the map's frame: where the object could hide.
+struct UnseenRegion {
+  double area_m2 = 0.0;
+  Point2 centroid = Point2::Zero();
+  /// Its bounding box along the map's axes (4 corners, counter-clockwise), for plots.
+  Ring outline;
+};
+
 /// Evaluates what a sensor sees of a map: rasterizes the free area, the offset free area
 /// and the reachable area once, then measures trajectories or waypoint paths on them.
 class CoverageEvaluator {
@@ -84,9 +94,16 @@ class CoverageEvaluator {
   /// reachable figures count the cells whose centres lie in the reachable area.
   CoverageReport report(const SeenArea& seen) const;
 
+  /// The largest UnseenRegion of a seen area made on this evaluator's raster; none when
+  /// the whole reachable area was seen.
+  std::optional<UnseenRegion> largestUnseenRegion(const SeenArea& seen) const;
+
  private:
-  /// Map frame to raster frame.
+  /// Map frame to raster frame, and back.
   Point2 toRaster(const Point2& p) const;
+  Point2 fromRaster(const Point2& p) const;
+  /// Throws InvalidInputError unless `seen` was made on this evaluator's raster.
+  void requireOwnRaster(const SeenArea& seen) const;
   std::vector<Pose2> toRaster(const std::vector<Pose2>& poses) const;
 
   FrustumSensor sensor_;

@@ -82,6 +82,10 @@ void SeenArea::addWaypointPath(const std::vector<Pose2>& waypoints, const Frustu
   addPoses(waypointPathPoses(waypoints, rotation_step), sensor, true);
 }
 
+void SeenArea::addSweptPath(const std::vector<Pose2>& poses, const FrustumSensor& sensor) {
+  addPoses(poses, sensor, true);
+}
+
 void SeenArea::addPoses(const std::vector<Pose2>& poses, const FrustumSensor& sensor,
                         bool sweep_rotations) {
   for (std::size_t i = 0; i < poses.size(); ++i) {

@@ -49,6 +49,13 @@ class SeenArea {
   void addWaypointPath(const std::vector<Pose2>& waypoints, const FrustumSensor& sensor,
                        double rotation_step = kDefaultRotationStep);
 
+  /// Adds what `sensor` sees along `poses` as addTrajectory does, except that consecutive
+  /// poses at the same position are an in-place rotation between their headings (at most
+  /// pi), whose swept sectors are seen as addWaypointPath sees them: a path of segments,
+  /// arcs and rotations measured on the same terms as the waypoint path it smooths. One
+  /// pass. Throws InvalidInputError for a non-finite pose (nothing is added then).
+  void addSweptPath(const std::vector<Pose2>& poses, const FrustumSensor& sensor);
+
   const CoverageRaster& raster() const { return raster_; }
 
   /// How many separate times the cell with row-major index `index` was seen (saturating).

@@ -25,6 +25,11 @@ constexpr PlotColour kWaypointColour{230, 97, 1};
 constexpr PlotColour kTrajectoryColour{20, 20, 20};
 constexpr PlotColour kStartColour{26, 152, 80};
 constexpr PlotColour kGoalColour{123, 50, 148};
+constexpr PlotColour kUnseenRegionColour{200, 0, 110};
+/// Pixels: the unseen region's outline stands this far outside it, and a region smaller
+/// than kUnseenRegionMinPixels across is circled as well.
+constexpr double kUnseenRegionMarginPixels = 4.0;
+constexpr double kUnseenRegionMinPixels = 16.0;
 constexpr PlotColour kTextColour{25, 25, 25};
 constexpr PlotColour kSubtitleColour{70, 70, 70};
 /// The "plasma" colour map at 0, 1/4, 1/2, 3/4 and 1, for the tracking error.
@@ -515,6 +520,32 @@ void fillMarker(cairo_t* cr, const PlotColour& colour, const Scale& scale) {
 }
 
 /// Start (green disc, labelled above) and goal (purple square, labelled below).
+/// The largest unseen region's outline (its bounding box, a few pixels outside it so that
+/// the walls it lies along do not hide it), circled too where it is only a few pixels
+/// across.
+void drawUnseenRegion(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
+                      const Scale& scale) {
+  if (!data.unseen_region || data.unseen_region->empty()) return;
+  Point2 low = layout.toPixel(data.unseen_region->front());
+  Point2 high = low;
+  for (const Point2& p : *data.unseen_region) {
+    low = low.cwiseMin(layout.toPixel(p));
+    high = high.cwiseMax(layout.toPixel(p));
+  }
+  const double margin = kUnseenRegionMarginPixels * scale.factor;
+  setColour(cr, kUnseenRegionColour);
+  cairo_set_line_width(cr, 2.2 * scale.factor);
+  cairo_rectangle(cr, low.x() - margin, low.y() - margin, high.x() - low.x() + 2.0 * margin,
+                  high.y() - low.y() + 2.0 * margin);
+  cairo_stroke(cr);
+  if ((high - low).norm() < kUnseenRegionMinPixels * scale.factor) {
+    const Point2 centre = 0.5 * (low + high);
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, centre.x(), centre.y(), kUnseenRegionMinPixels * scale.factor, 0.0, 2.0 * M_PI);
+    cairo_stroke(cr);
+  }
+}
+
 void drawMarkers(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
                  const Scale& scale) {
   selectFont(cr, scale.legend, true);
@@ -716,6 +747,13 @@ void drawLegend(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlo
     cairo_set_dash(cr, nullptr, 0, 0.0);
     label("offset free area");
   }
+  if (data.unseen_region) {
+    cairo_rectangle(cr, x + 0.5 * (sample_width - 16.0 * f), y - 8.0 * f, 16.0 * f, 16.0 * f);
+    setColour(cr, kUnseenRegionColour);
+    cairo_set_line_width(cr, 2.2 * f);
+    cairo_stroke(cr);
+    label("largest unseen region");
+  }
   if (!data.free_area.holes.empty()) {
     cairo_rectangle(cr, x + 0.5 * (sample_width - 16.0 * f), y - 8.0 * f, 16.0 * f, 16.0 * f);
     setColour(cr, kObstacleColour);
@@ -812,6 +850,7 @@ void CoveragePlot::writePng(const CoveragePlotData& data, const std::string& pat
   drawWaypointPath(cr, layout, data.waypoints, scale);
   drawTrajectory(cr, layout, data.trajectory, options_.arrow_spacing, scale);
   drawActualPath(cr, layout, data, scale);
+  drawUnseenRegion(cr, layout, data, scale);
   drawMarkers(cr, layout, data, scale);
   cairo_restore(cr);
 

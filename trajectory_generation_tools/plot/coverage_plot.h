@@ -34,6 +34,9 @@ struct CoveragePlotData {
   std::vector<Pose2> actual_path;
   /// The tracking error at each pose of `actual_path`, metres, >= 0: one per pose.
   std::vector<double> actual_errors;
+  /// The largest piece of the reachable area left unseen (its bounding box), outlined in
+  /// red; none drawn when unset.
+  std::optional<Ring> unseen_region;
   /// Lines above the plot: the first is the title (bold), the others key metrics.
   std::vector<std::string> title_lines;
 };

@@ -14,6 +14,7 @@
 #include "trajectory_generation_tools/smoothing/inner_smoothing.h"
 #include "trajectory_generation_tools/smoothing/outer_smoothing_bisector.h"
 #include "trajectory_generation_tools/smoothing/outer_smoothing_tangent.h"
+#include "trajectory_generation_tools/smoothing/path_coverage_check.h"
 #include "trajectory_generation_tools/smoothing/reverse_curve_smoothing.h"
 #include "trajectory_generation_tools/smoothing/smoothed_path_assembler.h"
 
@@ -73,7 +74,7 @@ void requirePositive(const char* name, double value) {
 
 GlobalPathSmoother::GlobalPathSmoother(const PolygonWithHoles& free_area,
                                        const GlobalSmoothingOptions& options)
-    : index_(free_area), options_(options) {
+    : free_area_(free_area), index_(free_area), options_(options) {
   requirePositive("turning_radius", options.turning_radius);
   requirePositive("min_turning_radius", options.min_turning_radius);
   requirePositive("v_max", options.v_max);
@@ -116,6 +117,8 @@ GlobalSmoothingProgramme::GlobalSmoothingProgramme(const GlobalPathSmoother& smo
     : smoother_(smoother), points_(points) {
   if (smoother_.options_.preserved_sensor) {
     coverage_.emplace(smoother_.index_, *smoother_.options_.preserved_sensor);
+  } else if (smoother_.options_.safe_sensor) {
+    coverage_.emplace(smoother_.index_, *smoother_.options_.safe_sensor);
   }
   const std::size_t legs = points_.size() < 2 ? 0 : points_.size() - 1;
   leg_length_.resize(legs);
@@ -278,7 +281,9 @@ GlobalSmoothingEvaluation GlobalSmoothingProgramme::evaluate(const GlobalSmoothi
     if (choice[i] == kNoCandidate) continue;
     const std::size_t j = static_cast<std::size_t>(choice[i]);
     const GlobalSmoothingCandidate& current = candidates_[i][j];
-    if (!preservesCoverage(i, j, verdict_)) return infeasible;
+    if (smoother_.options_.preserved_sensor && !preservesCoverage(i, j, verdict_)) {
+      return infeasible;
+    }
     const std::optional<double> piece = legPiece(i + 1 - current.corners(), previous, &current);
     if (!piece) return infeasible;
     time += *piece;
@@ -352,6 +357,53 @@ GlobalSmoothingChoice GlobalSmoothingProgramme::solve(
   return chosen;
 }
 
+bool GlobalSmoothingProgramme::refuseUnpreserved(const GlobalSmoothingChoice& choice,
+                                                 const std::vector<bool>& guarded,
+                                                 std::vector<std::vector<CoverageVerdict>>& verdict,
+                                                 std::vector<bool>& refused_at) const {
+  bool refused = false;
+  for (std::size_t i = 0; i < choice.size(); ++i) {
+    if (choice[i] == kNoCandidate || !guarded[i]) continue;
+    const std::size_t j = static_cast<std::size_t>(choice[i]);
+    const GlobalSmoothingCandidate& candidate = candidates_[i][j];
+    if (!candidate.smoothing || verdict[i][j] != CoverageVerdict::kUnchecked) continue;
+    if (!preservesCoverage(i, j, verdict)) {
+      refused_at[i] = true;
+      if (candidate.corners() == 2) refused_at[i - 1] = true;
+      refused = true;
+    }
+  }
+  return refused;
+}
+
+GlobalSmoothingChoice GlobalSmoothingProgramme::solveGuarded(
+    const std::vector<bool>& guarded, std::vector<std::vector<CoverageVerdict>>& verdict,
+    std::vector<bool>& refused_at, double* least) const {
+  // Only the smoothings the programme chooses are checked (each check rasterizes the
+  // corner): a refused one is dropped and the programme runs again, until every chosen
+  // smoothing of a guarded corner preserves coverage. Every round drops a candidate, and
+  // the result is the fastest choice among the candidates that preserve coverage, as if
+  // all had been checked first.
+  GlobalSmoothingChoice choice = solve(verdict, least);
+  while (coverage_ && refuseUnpreserved(choice, guarded, verdict, refused_at)) {
+    choice = solve(verdict, least);
+  }
+  return choice;
+}
+
+std::vector<std::optional<CornerSmoothing>> GlobalSmoothingProgramme::smoothingsOf(
+    const GlobalSmoothingChoice& choice) const {
+  // A reverse curve chosen at corner i is assembled at corner i - 1.
+  std::vector<std::optional<CornerSmoothing>> smoothings(choice.size());
+  for (std::size_t i = 0; i < choice.size(); ++i) {
+    if (choice[i] == kNoCandidate) continue;
+    const std::optional<CornerSmoothing>& smoothing =
+        candidates_[i][static_cast<std::size_t>(choice[i])].smoothing;
+    smoothings[smoothing && smoothing->corners == 2 ? i - 1 : i] = smoothing;
+  }
+  return smoothings;
+}
+
 GlobalSmoothingPlan GlobalSmoothingProgramme::plan() const {
   GlobalSmoothingPlan plan;
   plan.waypoints = points_;
@@ -363,46 +415,58 @@ GlobalSmoothingPlan GlobalSmoothingProgramme::plan() const {
     return plan;
   }
 
-  // Coverage-preserving smoothing checks only the smoothings the programme chooses (each
-  // check rasterizes the corner): a refused one is dropped and the programme runs again,
-  // until every chosen smoothing preserves coverage. Every round drops a candidate, and
-  // the result is the fastest choice among the candidates that preserve coverage, as if
-  // all had been checked first. A corner left sharp whose fastest choice was refused
-  // counts as kept for coverage.
   std::vector<std::vector<CoverageVerdict>> verdict(corners);
   for (std::size_t i = 0; i < corners; ++i) {
     verdict[i].assign(candidates_[i].size(), CoverageVerdict::kUnchecked);
   }
+  // Coverage-preserving smoothing guards every corner; coverage-safe smoothing guards the
+  // corners whose smoothing the whole-path check finds losing area.
+  std::vector<bool> guarded(corners, smoother_.options_.preserved_sensor.has_value());
   std::vector<bool> coverage_refused(corners, false);
-  plan.choice = solve(verdict, &plan.time);
-  while (coverage_) {
-    bool refused = false;
-    for (std::size_t i = 0; i < corners; ++i) {
-      if (plan.choice[i] == kNoCandidate) continue;
-      const std::size_t j = static_cast<std::size_t>(plan.choice[i]);
-      const GlobalSmoothingCandidate& candidate = candidates_[i][j];
-      if (!candidate.smoothing || verdict[i][j] != CoverageVerdict::kUnchecked) continue;
-      if (!preservesCoverage(i, j, verdict)) {
-        coverage_refused[i] = true;
-        if (candidate.corners() == 2) coverage_refused[i - 1] = true;
-        refused = true;
+  plan.choice = solveGuarded(guarded, verdict, coverage_refused, &plan.time);
+  if (smoother_.options_.safe_sensor && !smoother_.options_.preserved_sensor) {
+    const PathCoverageCheck check(smoother_.free_area_, smoother_.options_.wall_distance,
+                                  *smoother_.options_.safe_sensor, points_);
+    // Every round guards a corner or refuses a candidate, so the rounds end; the all-sharp
+    // choice loses nothing.
+    for (;;) {
+      const std::vector<std::optional<CornerSmoothing>> smoothings = smoothingsOf(plan.choice);
+      std::vector<ReplacedStretch> stretches;
+      std::vector<std::size_t> stretch_corner;  // the corner whose candidate it is
+      for (std::size_t i = 0; i < corners; ++i) {
+        if (plan.choice[i] == kNoCandidate) continue;
+        const GlobalSmoothingCandidate& candidate =
+            candidates_[i][static_cast<std::size_t>(plan.choice[i])];
+        if (!candidate.smoothing) continue;
+        const std::vector<Point2>& path = candidate.corner_path;
+        const std::size_t first_leg = i + 1 - candidate.corners();
+        ReplacedStretch stretch{path[1] - candidate.entry * leg_direction_[first_leg]};
+        stretch.insert(stretch.end(), path.begin() + 1, path.end() - 1);
+        stretch.push_back(path[path.size() - 2] + candidate.exit * leg_direction_[i + 1]);
+        stretches.push_back(std::move(stretch));
+        stretch_corner.push_back(i);
       }
+      if (stretches.empty()) break;
+      const std::vector<std::size_t> lost = check.lostCells(
+          SmoothedPathAssembler::assemble(points_, smoothings).primitives, stretches);
+      bool changed = false;
+      for (std::size_t s = 0; s < stretches.size(); ++s) {
+        if (lost[s] <= kToleratedLostCells) continue;
+        const std::size_t i = stretch_corner[s];
+        if (!guarded[i]) {
+          guarded[i] = true;
+        } else {
+          verdict[i][static_cast<std::size_t>(plan.choice[i])] = CoverageVerdict::kRefused;
+        }
+        coverage_refused[i] = true;
+        changed = true;
+      }
+      if (!changed) break;
+      plan.choice = solveGuarded(guarded, verdict, coverage_refused, &plan.time);
     }
-    if (!refused) break;
-    plan.choice = solve(verdict, &plan.time);
   }
 
-  // A reverse curve chosen at corner i is assembled at corner i - 1.
-  for (std::size_t i = 0; i < corners; ++i) {
-    if (plan.choice[i] == kNoCandidate) continue;
-    const std::optional<CornerSmoothing>& smoothing =
-        candidates_[i][static_cast<std::size_t>(plan.choice[i])].smoothing;
-    if (smoothing && smoothing->corners == 2) {
-      plan.smoothings[i - 1] = smoothing;
-    } else {
-      plan.smoothings[i] = smoothing;
-    }
-  }
+  plan.smoothings = smoothingsOf(plan.choice);
   for (std::size_t i = 0; i < corners; ++i) {
     if (!plan.smoothings[i] && coverage_refused[i] &&
         !(i > 0 && plan.smoothings[i - 1] && plan.smoothings[i - 1]->corners == 2)) {

@@ -73,7 +73,10 @@ class GlobalPathSmoother;
 /// the previous corner's smoothing ends; the leg pieces between them are clear and in the
 /// free area (a whole leg between two sharp turns or the path's ends always is, so the
 /// all-sharp choice is always feasible). With a preserved sensor, every chosen smoothing
-/// must also preserve coverage (CornerCoverageCheck).
+/// must also preserve coverage (CornerCoverageCheck). With a safe sensor, the chosen
+/// smoothings together must see what the sharp path sees (PathCoverageCheck): a corner
+/// whose smoothing loses reachable area is guarded (its smoothings must then preserve
+/// coverage), and a guarded corner's smoothing that still loses area is refused.
 ///
 /// The objective is the sum of the pieces' times under the velocity model: each arc chain
 /// driven at its speed limit min(v_max, yaw_rate_max * radius), a sharp corner as stop,
@@ -109,8 +112,14 @@ class GlobalSmoothingProgramme {
 
   /// The fastest feasible choice, by dynamic programme over the corner sequence; with a
   /// preserved sensor, checking the coverage of only the smoothings it chooses and choosing
-  /// again without those refused, until every chosen smoothing preserves coverage.
+  /// again without those refused, until every chosen smoothing preserves coverage; with a
+  /// safe sensor, checking the whole path's coverage after each choice and guarding or
+  /// refusing the smoothings that lose area, until none does.
   GlobalSmoothingPlan plan() const;
+
+  /// Lost cells (PathCoverageCheck) at most this many per smoothing count as none: the
+  /// sharp and smoothed paths are sampled differently.
+  static constexpr std::size_t kToleratedLostCells = 2;
 
  private:
   friend class GlobalPathSmoother;
@@ -131,6 +140,18 @@ class GlobalSmoothingProgramme {
   /// `verdicts`).
   bool preservesCoverage(std::size_t i, std::size_t j,
                          std::vector<std::vector<CoverageVerdict>>& verdicts) const;
+  /// Checks the chosen smoothings of the `guarded` corners not checked before; marks a
+  /// corner whose choice is refused in `refused_at`. True when any was refused.
+  bool refuseUnpreserved(const GlobalSmoothingChoice& choice, const std::vector<bool>& guarded,
+                         std::vector<std::vector<CoverageVerdict>>& verdict,
+                         std::vector<bool>& refused_at) const;
+  /// The fastest choice whose guarded corners' smoothings preserve coverage.
+  GlobalSmoothingChoice solveGuarded(const std::vector<bool>& guarded,
+                                     std::vector<std::vector<CoverageVerdict>>& verdict,
+                                     std::vector<bool>& refused_at, double* least) const;
+  /// The smoothing per corner of `choice`, as SmoothedPathAssembler takes them.
+  std::vector<std::optional<CornerSmoothing>> smoothingsOf(
+      const GlobalSmoothingChoice& choice) const;
   /// The dynamic programme over the candidates not refused in `verdict`: the fastest
   /// feasible choice, and its time in `least`.
   GlobalSmoothingChoice solve(const std::vector<std::vector<CoverageVerdict>>& verdict,
@@ -183,6 +204,7 @@ class GlobalPathSmoother {
  private:
   friend class GlobalSmoothingProgramme;
 
+  PolygonWithHoles free_area_;  ///< for the coverage-safe check's reachable area
   BoundaryEdgeIndex index_;
   GlobalSmoothingOptions options_;
   std::vector<double> radii_;

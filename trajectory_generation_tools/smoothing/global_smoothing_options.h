@@ -21,9 +21,18 @@ struct GlobalSmoothingOptions {
   /// Set: coverage-preserving smoothing; a corner is smoothed only where this sensor still
   /// sees what it saw from the sharp corner (CornerCoverageCheck).
   std::optional<FrustumSensor> preserved_sensor;
+  /// Set: coverage-safe smoothing (`smoothing_strategy: coverage_safe`); the path as a
+  /// whole must see what its sharp version sees with this sensor (PathCoverageCheck), and
+  /// a corner whose smoothing loses area nothing else sees is smoothed only in ways that
+  /// keep it (CornerCoverageCheck) or left sharp.
+  std::optional<FrustumSensor> safe_sensor;
+  /// Coverage-safe only: the planner's wall distance (m, >= 0), which shapes the reachable
+  /// area whose coverage is kept.
+  double wall_distance = 0.0;
 
   /// The options that `parameters` give: `min_turning_radius` 0 means equal to
-  /// `turning_radius`; `coverage_preserving` sets the sensor of `parameters`.
+  /// `turning_radius`; `coverage_preserving` sets the preserved sensor, the strategy
+  /// `coverage_safe` the safe sensor, of `parameters`.
   static GlobalSmoothingOptions fromParameters(const PlannerParameters& parameters) {
     GlobalSmoothingOptions options;
     options.turning_radius = parameters.turning_radius;
@@ -34,6 +43,10 @@ struct GlobalSmoothingOptions {
     options.yaw_rate_max = parameters.yaw_rate_max;
     if (parameters.coverage_preserving) {
       options.preserved_sensor = FrustumSensor::fromParameters(parameters);
+    }
+    if (parameters.smoothing_strategy == "coverage_safe") {
+      options.safe_sensor = FrustumSensor::fromParameters(parameters);
+      options.wall_distance = parameters.wall_distance;
     }
     return options;
   }

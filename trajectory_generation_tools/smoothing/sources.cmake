@@ -10,6 +10,7 @@ kc_add_stage_library(kc_smoothing
     trajectory_generation_tools/smoothing/outer_arc_chain.cpp
     trajectory_generation_tools/smoothing/outer_smoothing_bisector.cpp
     trajectory_generation_tools/smoothing/outer_smoothing_tangent.cpp
+    trajectory_generation_tools/smoothing/path_coverage_check.cpp
     trajectory_generation_tools/smoothing/path_smoother.cpp
     trajectory_generation_tools/smoothing/reverse_curve_smoothing.cpp
     trajectory_generation_tools/smoothing/smoothed_path_assembler.cpp

@@ -32,8 +32,15 @@ SmoothingStatistics segmentPathStatistics(const std::vector<PathPrimitive>& path
 
 SmoothedPath TrajectoryGenerator::smoothedPath(const std::vector<Pose2>& waypoints,
                                                const PolygonWithHoles& free_area) const {
+  const bool local_only = parameters_.smoothing_strategy == "local";
+  if (!local_only && parameters_.smoothing_strategy != "global") {
+    // coverage_safe: the global programme keeping the sharp path's coverage; Algorithm 1's
+    // result, which may lose coverage, is no alternative.
+    return GlobalPathSmoother(free_area, GlobalSmoothingOptions::fromParameters(parameters_))
+        .smooth(waypoints);
+  }
   SmoothedPath local = PathSmoother(free_area, parameters_.turning_radius).smooth(waypoints);
-  if (parameters_.smoothing_strategy == "local") return local;
+  if (local_only) return local;
   SmoothedPath global =
       GlobalPathSmoother(free_area, GlobalSmoothingOptions::fromParameters(parameters_))
           .smooth(waypoints);

@@ -25,7 +25,8 @@ struct GeneratedTrajectory {
 
 /// Turns a waypoint path into a trajectory (Thesis sections 3.2 and 3.3): smoothing against
 /// the raw hull and holes by `smoothing_strategy` (Algorithm 1, PathSmoother, or the
-/// global GlobalPathSmoother; with `smoothing: false`, segments with in-place rotations),
+/// global GlobalPathSmoother, coverage-safe or not; with `smoothing: false`, segments with
+/// in-place rotations),
 /// sampling, and timing with v_max, a_max and yaw_rate_max.
 class TrajectoryGenerator {
  public:
@@ -42,7 +43,8 @@ class TrajectoryGenerator {
   /// The smoothed path by the strategy of the parameters. Global without coverage
   /// preservation is never slower than local: where local's exact time is lower (the
   /// global programme's cost is approximate on legs too short for a speed change), local's
-  /// path is kept.
+  /// path is kept. Coverage-safe smoothing has no such fallback: Algorithm 1 may lose
+  /// coverage.
   SmoothedPath smoothedPath(const std::vector<Pose2>& waypoints,
                             const PolygonWithHoles& free_area) const;
 

@@ -1,0 +1,355 @@
+// Smoothing strategies per map family: what each sees and what it costs, end to end as
+// `coverage_tool plan` runs (validate, clean, plan, trajectory, coverage evaluation).
+// Each map of HardMapGenerator's families (test/support/hard_map_generator.h) is planned
+// once with its parameters; each strategy turns the waypoints into a trajectory whose
+// coverage is measured as plan's metrics.json reports it:
+//  - local: the thesis's Algorithm 1 (`smoothing_strategy: local`);
+//  - global: every corner's smoothing chosen jointly (`smoothing_strategy: global`);
+//  - global+coverage: global with `coverage_preserving: true`;
+//  - coverage_safe: the global programme keeping the sharp path's coverage
+//    (`smoothing_strategy: coverage_safe`);
+//  - default: the parameters' defaults, named after the strategy they select;
+//  - unsmoothed: `smoothing: false`, the reference for coverage and traversal time.
+// Table 1, per family, batch and strategy: the median and worst share of the reachable area
+// seen, the maps under 99.9 %, the largest drop below the unsmoothed trajectory's share
+// (points), the median ratio of traversal time to the unsmoothed trajectory's, and the
+// summed end-to-end wall time (planning + trajectory + coverage) with its ratio to the
+// unsmoothed runs' and the maps over 1.3 times the unsmoothed run plus 0.5 s.
+// Table 2, the unsmoothed plan per family and batch: the median time cost and traversal time.
+// Table 3, turns smoothed per strategy on lake_30x30 and on LakeMapGenerator's lakes
+// (test/support/lake_map_generator.h): 30 m squares with two obstacles of other shapes and
+// places.
+//
+// Usage: strategy_benchmark [--maps N[,N...]] [--families comb,spiral,...] [--lakes 10]
+// Each N is a batch of maps per family, seeds from 0: the first batch has rows of its own
+// ("comb, maps 1-5"), so that a short run prints the first rows of a long one, and with
+// several batches the family's rows over all of them follow ("comb, all 50 maps"; default
+// --maps 5,45).
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "test/support/hard_map_generator.h"
+#include "test/support/lake_map_generator.h"
+#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// The reachable-coverage bar of a searched map (percent) and the wall-time allowance of a
+/// smoothed run over the unsmoothed one: kWallFactor times it plus kWallSlack seconds.
+constexpr double kCoverageBarPercent = 99.9;
+constexpr double kWallFactor = 1.3;
+constexpr double kWallSlack = 0.5;
+
+/// The strategies in column order; the last is the unsmoothed reference.
+enum Strategy {
+  kLocal,
+  kGlobal,
+  kGlobalCoverage,
+  kCoverageSafe,
+  kDefault,
+  kUnsmoothed,
+  kStrategies
+};
+
+struct Options {
+  std::vector<int> batches = {5, 45};
+  std::vector<testing::MapFamily> families = testing::HardMapGenerator::families();
+  int lakes = 10;
+};
+
+[[noreturn]] void usage() {
+  std::cerr << "usage: strategy_benchmark [--maps N[,N...]] [--families comb,spiral,...] "
+               "[--lakes 10]\n";
+  std::exit(2);
+}
+
+Options parseOptions(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (i + 1 >= argc) usage();
+    const std::string value = argv[++i];
+    if (flag == "--maps") {
+      options.batches.clear();
+      std::istringstream sizes(value);
+      std::string size;
+      while (std::getline(sizes, size, ',')) {
+        options.batches.push_back(std::atoi(size.c_str()));
+        if (options.batches.back() <= 0) usage();
+      }
+    } else if (flag == "--families") {
+      options.families.clear();
+      std::istringstream names(value);
+      std::string name;
+      while (std::getline(names, name, ',')) {
+        const auto family = testing::HardMapGenerator::fromName(name);
+        if (!family) usage();
+        options.families.push_back(*family);
+      }
+    } else if (flag == "--lakes") {
+      options.lakes = std::atoi(value.c_str());
+      if (options.lakes < 0) usage();
+    } else {
+      usage();
+    }
+  }
+  if (options.batches.empty() || options.families.empty()) usage();
+  return options;
+}
+
+/// The parameters of a strategy, from a map's.
+PlannerParameters withStrategy(PlannerParameters parameters, Strategy strategy) {
+  switch (strategy) {
+    case kLocal:
+      parameters.smoothing_strategy = "local";
+      parameters.coverage_preserving = false;
+      break;
+    case kGlobal:
+    case kGlobalCoverage:
+      parameters.smoothing_strategy = "global";
+      parameters.coverage_preserving = strategy == kGlobalCoverage;
+      break;
+    case kCoverageSafe:
+      parameters.smoothing_strategy = "coverage_safe";
+      parameters.coverage_preserving = false;
+      break;
+    case kUnsmoothed:
+      parameters.smoothing = false;
+      break;
+    default:
+      break;
+  }
+  return parameters;
+}
+
+/// The strategy's name in the tables; the default's names what it selects.
+std::string strategyName(Strategy strategy) {
+  switch (strategy) {
+    case kLocal:
+      return "local";
+    case kGlobal:
+      return "global";
+    case kGlobalCoverage:
+      return "global+coverage";
+    case kCoverageSafe:
+      return "coverage_safe";
+    case kDefault: {
+      const PlannerParameters defaults;
+      return "default (" + defaults.smoothing_strategy +
+             (defaults.coverage_preserving ? "+coverage)" : ")");
+    }
+    default:
+      return "unsmoothed";
+  }
+}
+
+/// One strategy's figures on one map.
+struct Run {
+  double reachable_percent = 0.0;
+  double traversal_time_s = 0.0;
+  double wall_s = 0.0;  ///< planning + trajectory + coverage
+  int turns_smoothed = 0;
+  int turns_total = 0;
+};
+
+/// Every strategy's run on one mission, planned once.
+struct MapRuns {
+  Run runs[kStrategies];
+  double time_cost_s = 0.0;  ///< the plan's
+};
+
+MapRuns runMap(const Mission& mission) {
+  MapRuns result;
+  const auto planning_started = Clock::now();
+  const PlannedMission planned = planMission(mission);
+  const double planning_s = std::chrono::duration<double>(Clock::now() - planning_started).count();
+  result.time_cost_s = planned.plan.time_cost_s;
+  for (int s = 0; s < kStrategies; ++s) {
+    const PlannerParameters parameters = withStrategy(mission.parameters, Strategy(s));
+    // The default selects one of the strategies before it: the same run.
+    if (s == kDefault) {
+      const int same = parameters.smoothing_strategy == "local"           ? kLocal
+                       : parameters.smoothing_strategy == "coverage_safe" ? kCoverageSafe
+                       : parameters.coverage_preserving                   ? kGlobalCoverage
+                                                                          : kGlobal;
+      result.runs[s] = result.runs[same];
+      continue;
+    }
+    const auto started = Clock::now();
+    const GeneratedTrajectory trajectory =
+        TrajectoryGenerator(parameters).generate(planned.plan.waypoints, planned.free_area);
+    std::vector<Pose2> poses;
+    poses.reserve(trajectory.poses.size());
+    for (const TrajectoryPose& pose : trajectory.poses) {
+      poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
+    }
+    const TrajectoryCoverage coverage =
+        measureTrajectoryCoverage(planned.free_area, planned.plan.offset_parts, parameters, poses);
+    Run& run = result.runs[s];
+    run.reachable_percent = coverage.report.reachable_coverage_percent;
+    run.traversal_time_s = trajectory.traversal_time_s;
+    run.wall_s = planning_s + std::chrono::duration<double>(Clock::now() - started).count();
+    run.turns_smoothed = trajectory.statistics.turns_smoothed;
+    run.turns_total = trajectory.statistics.turns_total;
+  }
+  return result;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+/// Table 1's row of one strategy over a batch of maps.
+void printStrategyRow(const std::string& label, Strategy strategy,
+                      const std::vector<MapRuns>& maps) {
+  std::vector<double> reachable;
+  std::vector<double> ratios;
+  double worst_drop = 0.0;
+  double wall = 0.0;
+  double unsmoothed_wall = 0.0;
+  int under_bar = 0;
+  int over_wall = 0;
+  for (const MapRuns& map : maps) {
+    const Run& run = map.runs[strategy];
+    const Run& reference = map.runs[kUnsmoothed];
+    reachable.push_back(run.reachable_percent);
+    ratios.push_back(run.traversal_time_s / reference.traversal_time_s);
+    worst_drop = std::max(worst_drop, reference.reachable_percent - run.reachable_percent);
+    under_bar += run.reachable_percent < kCoverageBarPercent ? 1 : 0;
+    wall += run.wall_s;
+    unsmoothed_wall += reference.wall_s;
+    over_wall += run.wall_s > kWallFactor * reference.wall_s + kWallSlack ? 1 : 0;
+  }
+  std::printf("| %s | %s | %zu | %.3f | %.3f | %d | %.3f | %.3f | %.2f | %.3f | %d |\n",
+              label.c_str(), strategyName(strategy).c_str(), maps.size(), median(reachable),
+              *std::min_element(reachable.begin(), reachable.end()), under_bar, worst_drop,
+              median(ratios), wall, wall / unsmoothed_wall, over_wall);
+}
+
+/// Turns smoothed and coverage over a set of lake maps, per strategy (table 3).
+void printLakeRows(const std::string& label, const std::vector<MapRuns>& maps) {
+  for (int s = 0; s < kStrategies; ++s) {
+    int smoothed = 0;
+    int total = 0;
+    double worst = 100.0;
+    for (const MapRuns& map : maps) {
+      smoothed += map.runs[s].turns_smoothed;
+      total += map.runs[s].turns_total;
+      worst = std::min(worst, map.runs[s].reachable_percent);
+    }
+    std::printf("| %s | %s | %d | %d | %.1f | %.3f |\n", label.c_str(),
+                strategyName(Strategy(s)).c_str(), smoothed, total,
+                total > 0 ? 100.0 * smoothed / total : 100.0, worst);
+  }
+}
+
+int run(const Options& options) {
+  // Table 1 and the figures of table 2, family by family.
+  struct BaselineRow {
+    std::string label;
+    std::size_t maps;
+    double time_cost_s;
+    double traversal_time_s;
+  };
+  std::vector<BaselineRow> baseline;
+  std::printf(
+      "| family, maps | strategy | maps | reachable coverage %%, median | reachable coverage %%, "
+      "worst | maps under 99.9 %% | largest drop below unsmoothed, points | traversal time "
+      "ratio to unsmoothed, median | summed wall s (timing) | summed wall ratio to unsmoothed "
+      "(timing) | maps over 1.3 x unsmoothed + 0.5 s (timing) |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  int failed = 0;
+  for (const testing::MapFamily family : options.families) {
+    const testing::HardMapGenerator generator(family);
+    const std::string name = testing::HardMapGenerator::name(family);
+    std::uint64_t seed = 0;
+    int done = 0;
+    std::vector<MapRuns> all;
+    // The rows of a set of maps: one per strategy, and the unsmoothed plan's figures.
+    const auto report = [&](const std::string& label, const std::vector<MapRuns>& maps) {
+      for (int s = 0; s < kStrategies; ++s) printStrategyRow(label, Strategy(s), maps);
+      std::vector<double> costs;
+      std::vector<double> times;
+      for (const MapRuns& map : maps) {
+        costs.push_back(map.time_cost_s);
+        times.push_back(map.runs[kUnsmoothed].traversal_time_s);
+      }
+      baseline.push_back({label, maps.size(), median(costs), median(times)});
+    };
+    for (const int batch : options.batches) {
+      std::vector<MapRuns> maps;
+      for (int i = 0; i < batch; ++i, ++seed) {
+        try {
+          maps.push_back(runMap(generator.generate(seed).mission));
+        } catch (const std::exception& error) {
+          std::fprintf(stderr, "FAIL %s seed %llu: %s\n", name.c_str(),
+                       static_cast<unsigned long long>(seed), error.what());
+          ++failed;
+        }
+      }
+      if (maps.empty()) continue;
+      if (done == 0) {
+        report(name + ", maps " + std::to_string(done + 1) + "-" + std::to_string(done + batch),
+               maps);
+      }
+      done += batch;
+      all.insert(all.end(), maps.begin(), maps.end());
+      std::fprintf(stderr, "progress: %s, %d maps\n", name.c_str(), done);
+      std::fflush(stdout);
+    }
+    // Several batches: the family's figures over all of them too.
+    if (options.batches.size() > 1 && !all.empty()) {
+      report(name + ", all " + std::to_string(done) + " maps", all);
+    }
+  }
+
+  std::printf(
+      "\n| family, maps | maps | unsmoothed plan: time cost s, median | unsmoothed trajectory: "
+      "traversal time s, median |\n|---|---:|---:|---:|\n");
+  for (const BaselineRow& row : baseline) {
+    std::printf("| %s | %zu | %.2f | %.2f |\n", row.label.c_str(), row.maps, row.time_cost_s,
+                row.traversal_time_s);
+  }
+
+  std::printf(
+      "\n| maps | strategy | turns smoothed | turns | turns smoothed %% | reachable coverage %%, "
+      "worst |\n|---|---|---:|---:|---:|---:|\n");
+  const Mission lake =
+      MissionFileReader().read(std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml");
+  printLakeRows("lake_30x30", {runMap(lake)});
+  if (options.lakes > 0) {
+    std::vector<MapRuns> lakes;
+    for (int seed = 1; seed <= options.lakes; ++seed) {
+      lakes.push_back(runMap(testing::LakeMapGenerator().generate(seed)));
+    }
+    printLakeRows("lakes 1-" + std::to_string(options.lakes), lakes);
+  }
+  return failed == 0 ? 0 : 1;
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core
+
+int main(int argc, char** argv) {
+  return kinematic_coverage::core::run(kinematic_coverage::core::parseOptions(argc, argv));
+}

@@ -1,0 +1,88 @@
+#include "trajectory_generation_tools/smoothing/path_coverage_check.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "trajectory_generation_tools/smoothing/global_path_smoother.h"
+#include "trajectory_generation_tools/smoothing/inner_smoothing.h"
+#include "trajectory_generation_tools/smoothing/smoothed_path_assembler.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+const FrustumSensor kSensor(4.0, 3.0, 0.0);
+
+/// The primitives of `waypoints` with the inner smoothing of radius r at interior corner
+/// `corner` (a waypoint index) and every other corner sharp.
+std::vector<PathPrimitive> withInnerArc(const std::vector<Point2>& waypoints, std::size_t corner,
+                                        double r, ReplacedStretch* stretch) {
+  const Point2& a = waypoints[corner - 1];
+  const Point2& b = waypoints[corner];
+  const Point2& c = waypoints[corner + 1];
+  const std::optional<CornerSmoothing> arc =
+      InnerSmoothing::compute({a, b, c, r, (b - a).normalized()});
+  EXPECT_TRUE(arc.has_value());
+  std::vector<std::optional<CornerSmoothing>> smoothings(waypoints.size() - 2);
+  smoothings[corner - 1] = arc;
+  *stretch = {b - arc->entry_distance * (b - a).normalized(), b,
+              b + arc->exit_distance * (c - b).normalized()};
+  return SmoothedPathAssembler::assemble(waypoints, smoothings).primitives;
+}
+
+TEST(PathCoverageCheck, TheSharpPathLosesNothingOfItself) {
+  const std::vector<Point2> path{{0, 0}, {30, 0}, {30, 3}, {0, 3}, {0, 6}};
+  const PathCoverageCheck check({}, 0.0, kSensor, path);
+  const std::vector<std::optional<CornerSmoothing>> sharp(path.size() - 2);
+  const std::vector<ReplacedStretch> everywhere{path};
+  EXPECT_EQ(check.lostCells(SmoothedPathAssembler::assemble(path, sharp).primitives, everywhere),
+            std::vector<std::size_t>{0});
+}
+
+TEST(PathCoverageCheck, AReversalAtADeadEndLosesItsTipUnlessAnotherLegSeesIt) {
+  // Up a lane and back down a lane 3 m beside it: inner smoothing of the near-reversal
+  // starts its arc 32 m before the far end, and the end of the bay goes unseen.
+  const std::vector<Point2> dead_end{{0, 0}, {0, 40}, {3, 0}};
+  ReplacedStretch stretch;
+  const std::vector<PathPrimitive> cut = withInnerArc(dead_end, 1, 1.0, &stretch);
+  const PathCoverageCheck check({}, 0.0, kSensor, dead_end);
+  EXPECT_GT(check.lostCells(cut, {stretch}).front() * check.cellArea(), 10.0);  // m^2
+
+  // The same cut, where the path later sweeps both lanes and the end again: nothing is
+  // lost.
+  std::vector<Point2> revisited = dead_end;
+  for (const Point2& p : {Point2(-0.5, 0), Point2(-0.5, 41), Point2(3.5, 41), Point2(3.5, 0)}) {
+    revisited.push_back(p);
+  }
+  const std::vector<PathPrimitive> cut_revisited = withInnerArc(revisited, 1, 1.0, &stretch);
+  const PathCoverageCheck revisited_check({}, 0.0, kSensor, revisited);
+  EXPECT_LE(revisited_check.lostCells(cut_revisited, {stretch}).front(),
+            GlobalSmoothingProgramme::kToleratedLostCells);
+}
+
+TEST(PathCoverageCheck, ARightAngleAtTheWallsLosesNothingReachable) {
+  // A right-angle turn at a corner of the area, 1 m from both walls, cut by a 1 m arc:
+  // what the in-place rotation's footprint corners sweep beyond the arc's footprints lies
+  // farther than half a footprint length from the offset free area, which is not reachable.
+  PolygonWithHoles area;
+  area.hull = {{-1, -1}, {21, -1}, {21, 21}, {-1, 21}};
+  const std::vector<Point2> corner{{0, 0}, {20, 0}, {20, 20}};
+  ReplacedStretch stretch;
+  const std::vector<PathPrimitive> cut = withInnerArc(corner, 1, 1.0, &stretch);
+  EXPECT_LE(PathCoverageCheck(area, 1.0, kSensor, corner).lostCells(cut, {stretch}).front(),
+            GlobalSmoothingProgramme::kToleratedLostCells);
+  // In the open, with nothing to stop a footprint, the same cut loses area.
+  EXPECT_GT(PathCoverageCheck({}, 0.0, kSensor, corner).lostCells(cut, {stretch}).front(),
+            GlobalSmoothingProgramme::kToleratedLostCells);
+}
+
+TEST(PathCoverageCheck, RejectsAnInvalidWallDistance) {
+  EXPECT_THROW(PathCoverageCheck({}, -1.0, kSensor, {{0, 0}, {1, 0}}), InvalidInputError);
+  EXPECT_THROW(PathCoverageCheck({}, std::nan(""), kSensor, {{0, 0}, {1, 0}}), InvalidInputError);
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core

@@ -1,0 +1,135 @@
+#include "trajectory_generation_tools/smoothing/path_coverage_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "trajectory_generation_tools/coverage/reachable_area.h"
+#include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// Largest angle (rad) between the sampled poses of an arc (also bounded by the raster's
+/// cells below) and of an in-place rotation, whose sectors are swept exactly in between.
+constexpr double kArcStep = 0.05;
+constexpr double kRotationStep = kDefaultRotationStep;
+
+/// The poses along `primitives` that SeenArea::addSweptPath measures: a segment's ends (a
+/// translated footprint sweeps the hull of its end footprints), an arc's samples at most
+/// 2 sqrt(cell / rho) apart in angle (rho: the farthest a footprint point is from the arc's
+/// centre; the hull of two footprints so far apart misses at most the sagitta
+/// rho dtheta^2 / 8 of the circles they turn on, half a cell), a rotation's steps.
+std::vector<Pose2> sweptPoses(const std::vector<PathPrimitive>& primitives, double cell,
+                              double reach) {
+  std::vector<Pose2> poses;
+  for (const PathPrimitive& primitive : primitives) {
+    int pieces = 1;
+    if (primitive.kind() == PrimitiveKind::kArc) {
+      const double step = std::min(kArcStep, 2.0 * std::sqrt(cell / (primitive.radius() + reach)));
+      pieces = std::max(1, static_cast<int>(std::ceil(std::abs(primitive.sweep()) / step)));
+    } else if (primitive.kind() == PrimitiveKind::kRotation) {
+      pieces =
+          std::max(1, static_cast<int>(std::ceil(std::abs(primitive.turnAngle()) / kRotationStep)));
+    }
+    for (int k = poses.empty() ? 0 : 1; k <= pieces; ++k) {
+      poses.push_back(primitive.poseAt(static_cast<double>(k) / pieces));
+    }
+  }
+  return poses;
+}
+
+}  // namespace
+
+PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
+                                     const FrustumSensor& sensor,
+                                     const std::vector<Point2>& waypoints)
+    : sensor_(sensor) {
+  if (!(wall_distance >= 0.0) || !std::isfinite(wall_distance)) {
+    throw InvalidInputError("coverage-safe smoothing: wall distance " +
+                            std::to_string(wall_distance) + " must be finite and >= 0");
+  }
+  reach_ = 0.5 * std::hypot(sensor.width(), sensor.length());
+  if (waypoints.empty()) return;
+  const double shorter =
+      sensor.length() > 0.0 ? std::min(sensor.width(), sensor.length()) : sensor.width();
+  Point2 low = waypoints.front();
+  Point2 high = low;
+  for (const Point2& p : waypoints) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  // Room for what the path sees and for the walls that shape the reachable area there.
+  const Point2 margin = Point2::Constant(reach_ + wall_distance + 0.5 * sensor.length() + shorter);
+  low -= margin;
+  const Point2 size = high + margin - low;
+  const double cell = std::max(shorter / kCellsPerFootprint,
+                               std::sqrt(size.x() * size.y() / static_cast<double>(kMaxCells)));
+  raster_.emplace(low, cell, std::max(1, static_cast<int>(std::ceil(size.x() / cell))),
+                  std::max(1, static_cast<int>(std::ceil(size.y() / cell))));
+
+  if (free_area.hull.empty()) {
+    reachable_.assign(raster_->cellCount(), 1);
+  } else {
+    const CellMask free = raster_->rasterize(free_area);
+    CellMask walls(free.size());
+    for (std::size_t i = 0; i < free.size(); ++i) walls[i] = free[i] != 0 ? 0 : 1;
+    const CellMask near_walls = dilateMask(*raster_, walls, wall_distance);
+    CellMask offset(free.size());
+    for (std::size_t i = 0; i < free.size(); ++i) {
+      offset[i] = free[i] != 0 && near_walls[i] == 0 ? 1 : 0;
+    }
+    reachable_ = reachableArea(*raster_, free, offset, sensor.length());
+  }
+
+  // waypointPathPoses takes each leg's heading from the positions; a yaw is used only
+  // for a path at a single position.
+  std::vector<Pose2> path;
+  for (const Point2& p : waypoints) path.push_back({p.x(), p.y(), 0.0});
+  sharp_.emplace(*raster_);
+  sharp_->addWaypointPath(path, sensor_);
+}
+
+std::vector<std::size_t> PathCoverageCheck::lostCells(
+    const std::vector<PathPrimitive>& primitives,
+    const std::vector<ReplacedStretch>& stretches) const {
+  std::vector<std::size_t> lost(stretches.size(), 0);
+  if (!raster_) return lost;
+  // Lost cells lie within reach of the stretches, the only places where the two paths
+  // differ; each stretch's bounding box, grown by the reach, passes over most fast.
+  const double near = reach_ + raster_->cellSize();
+  std::vector<std::pair<Point2, Point2>> boxes;
+  for (const ReplacedStretch& stretch : stretches) {
+    Point2 low = Point2::Constant(std::numeric_limits<double>::infinity());
+    Point2 high = -low;
+    for (const Point2& p : stretch) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    boxes.emplace_back(low.array() - near, high.array() + near);
+  }
+  SeenArea smoothed(*raster_);
+  smoothed.addSweptPath(sweptPoses(primitives, raster_->cellSize(), reach_), sensor_);
+  for (std::size_t i = 0; i < raster_->cellCount(); ++i) {
+    if (reachable_[i] == 0 || !sharp_->seen(i) || smoothed.seen(i)) continue;
+    const Point2 centre = raster_->cellCentre(i);
+    for (std::size_t s = 0; s < stretches.size(); ++s) {
+      const auto& [low, high] = boxes[s];
+      if ((centre.array() < low.array()).any() || (centre.array() > high.array()).any()) continue;
+      const ReplacedStretch& stretch = stretches[s];
+      for (std::size_t k = 0; k + 1 < stretch.size(); ++k) {
+        if (distanceToSegment(centre, stretch[k], stretch[k + 1]) <= near) {
+          ++lost[s];
+          break;
+        }
+      }
+    }
+  }
+  return lost;
+}
+
+}  // namespace kinematic_coverage::core

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "trajectory_generation_tools/coverage/coverage_raster.h"
+#include "trajectory_generation_tools/coverage/seen_area.h"
+#include "trajectory_generation_tools/path/path_primitive.h"
+
+namespace kinematic_coverage::core {
+
+/// The stretch of the sharp path that one smoothing replaces: from where its first arc
+/// leaves the path, through the corners it cuts, to where its last arc rejoins the path.
+using ReplacedStretch = std::vector<Point2>;
+
+/// The test behind coverage-safe smoothing: the reachable area that a smoothed path fails
+/// to see of what the sharp waypoint path it smooths sees, counted over the whole path, so
+/// that a corner cut whose area another lane sees again loses nothing, while one whose
+/// area nothing else sees (the far end of a dead-end bay swept up and back) does. Both
+/// paths are measured alike (SeenArea::addWaypointPath and addSweptPath) on one raster of
+/// cells a small fraction of the footprint. The reachable area is the coverage report's
+/// (docs/REFERENCE.md, Metrics) with the offset free area eroded from the free area on the
+/// raster: free cells within half a footprint length of the free cells at least the wall
+/// distance from every wall (the offset free area itself for a line sensor).
+class PathCoverageCheck {
+ public:
+  /// Cells of the raster per footprint length (or width, if shorter; the width for a line
+  /// sensor), coarsened to at most kMaxCells over the path.
+  static constexpr double kCellsPerFootprint = 16.0;
+  static constexpr std::size_t kMaxCells = 2'000'000;
+
+  /// Measures what the sharp path through `waypoints` (straight legs, in-place rotations)
+  /// sees of the reachable area of `free_area` (an empty hull: the unbounded plane, all of
+  /// it reachable) with walls kept `wall_distance` away. Throws InvalidInputError for a
+  /// non-finite coordinate or a negative or non-finite wall distance.
+  PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
+                    const FrustumSensor& sensor, const std::vector<Point2>& waypoints);
+
+  /// Per stretch, the reachable cells within the sensor's reach of it (half the
+  /// footprint's diagonal) that the sharp path sees and the path of `primitives`
+  /// (segments, arcs, rotations) does not.
+  std::vector<std::size_t> lostCells(const std::vector<PathPrimitive>& primitives,
+                                     const std::vector<ReplacedStretch>& stretches) const;
+
+  /// Area (m^2) of one cell of the raster.
+  double cellArea() const { return raster_ ? raster_->cellArea() : 0.0; }
+
+ private:
+  FrustumSensor sensor_;
+  double reach_ = 0.0;  ///< half the footprint's diagonal
+  std::optional<CoverageRaster> raster_;
+  CellMask reachable_;
+  std::optional<SeenArea> sharp_;
+};
+
+}  // namespace kinematic_coverage::core
