@@ -1,11 +1,13 @@
-// libFuzzer target: coverage-preserving smoothing (the global strategy: GlobalPathSmoother with a
-// preserved sensor) on fuzzed waypoint paths, obstacles and sensors. Decodes a turning
-// radius, 3 to 5 waypoints, obstacles and the global strategy's options as
-// corner_smoothing_fuzzer does (fuzzed_smoothing.h), and a footprint of any proportions.
-// Every smoothing the programme chooses is rasterized (CornerCoverageCheck, up to 512 x 512
-// cells), so one execution takes from microseconds to about a second: a target of its
-// own, so that corner_smoothing_fuzzer keeps its rate. Properties: those of
-// fuzzed_smoothing.h, and kept_for_coverage counts only corners left sharp.
+// libFuzzer target: coverage-preserving and coverage-safe smoothing (the global strategy:
+// GlobalPathSmoother with a preserved or a safe sensor) on fuzzed waypoint paths, obstacles
+// and sensors. Decodes a turning radius, 3 to 5 waypoints, obstacles and the global
+// strategy's options as corner_smoothing_fuzzer does (fuzzed_smoothing.h), a footprint of
+// any proportions, and for coverage-safe smoothing a wall distance. Every smoothing the
+// programme chooses is rasterized (CornerCoverageCheck, up to 512 x 512 cells; the whole
+// path for coverage-safe smoothing, PathCoverageCheck), so one execution takes from
+// microseconds to about a second: a target of its own, so that corner_smoothing_fuzzer
+// keeps its rate. Properties: those of fuzzed_smoothing.h, and kept_for_coverage counts
+// only corners left sharp.
 
 #include <fuzzer/FuzzedDataProvider.h>
 
@@ -32,6 +34,8 @@ constexpr int kMaxWaypoints = 5;
 /// Footprint sides (m): from a hundredth of the smallest turning radius to past the largest.
 constexpr double kMinFootprintWidth = 1e-4;
 constexpr double kMaxFootprintSide = 40.0;
+/// Wall distances (m) of coverage-safe smoothing, which shape its reachable area.
+constexpr double kMaxWallDistance = 5.0;
 
 }  // namespace
 
@@ -44,10 +48,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int i = 0; i < count; ++i) waypoints.push_back(kinematic_coverage::fuzz::point(input, snap));
   const PolygonWithHoles area = kinematic_coverage::fuzz::obstacles(input);
   GlobalSmoothingOptions options = kinematic_coverage::fuzz::globalOptions(input, radius);
-  options.preserved_sensor =
-      FrustumSensor(input.ConsumeFloatingPointInRange(kMinFootprintWidth, kMaxFootprintSide),
-                    input.ConsumeFloatingPointInRange(0.0, kMaxFootprintSide),
-                    input.ConsumeFloatingPointInRange(0.0, 0.9));
+  const FrustumSensor sensor(
+      input.ConsumeFloatingPointInRange(kMinFootprintWidth, kMaxFootprintSide),
+      input.ConsumeFloatingPointInRange(0.0, kMaxFootprintSide),
+      input.ConsumeFloatingPointInRange(0.0, 0.9));
+  if (input.ConsumeBool()) {
+    options.safe_sensor = sensor;
+    options.wall_distance = input.ConsumeFloatingPointInRange(0.0, kMaxWallDistance);
+  } else {
+    options.preserved_sensor = sensor;
+  }
 
   kinematic_coverage::fuzz::runExpectingOnlyInvalidInput([&] {
     const SmoothedPath path = GlobalPathSmoother(area, options).smooth(waypoints);

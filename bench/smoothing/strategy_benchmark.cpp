@@ -21,10 +21,11 @@
 // places.
 //
 // Usage: strategy_benchmark [--maps N[,N...]] [--families comb,spiral,...] [--lakes 10]
+//                           [--per-map]
 // Each N is a batch of maps per family, seeds from 0: the first batch has rows of its own
 // ("comb, maps 1-5"), so that a short run prints the first rows of a long one, and with
 // several batches the family's rows over all of them follow ("comb, all 50 maps"; default
-// --maps 5,45).
+// --maps 5,45). --per-map prints each map's figures on stderr.
 
 #include <algorithm>
 #include <chrono>
@@ -72,11 +73,12 @@ struct Options {
   std::vector<int> batches = {5, 45};
   std::vector<testing::MapFamily> families = testing::HardMapGenerator::families();
   int lakes = 10;
+  bool per_map = false;
 };
 
 [[noreturn]] void usage() {
   std::cerr << "usage: strategy_benchmark [--maps N[,N...]] [--families comb,spiral,...] "
-               "[--lakes 10]\n";
+               "[--lakes 10] [--per-map]\n";
   std::exit(2);
 }
 
@@ -84,6 +86,10 @@ Options parseOptions(int argc, char** argv) {
   Options options;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
+    if (flag == "--per-map") {
+      options.per_map = true;
+      continue;
+    }
     if (i + 1 >= argc) usage();
     const std::string value = argv[++i];
     if (flag == "--maps") {
@@ -212,6 +218,19 @@ MapRuns runMap(const Mission& mission) {
   return result;
 }
 
+/// One map's figures per strategy, on stderr: reachable coverage, traversal time ratio to
+/// the unsmoothed trajectory, wall time.
+void printMap(const std::string& family, std::uint64_t seed, const MapRuns& map) {
+  std::fprintf(stderr, "%s seed %llu:", family.c_str(), static_cast<unsigned long long>(seed));
+  for (int s = 0; s < kStrategies; ++s) {
+    const Run& run = map.runs[s];
+    std::fprintf(stderr, " %s %.3f %% %.3f %.2f s;", strategyName(Strategy(s)).c_str(),
+                 run.reachable_percent,
+                 run.traversal_time_s / map.runs[kUnsmoothed].traversal_time_s, run.wall_s);
+  }
+  std::fprintf(stderr, "\n");
+}
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());
@@ -301,6 +320,7 @@ int run(const Options& options) {
       for (int i = 0; i < batch; ++i, ++seed) {
         try {
           maps.push_back(runMap(generator.generate(seed).mission));
+          if (options.per_map) printMap(name, seed, maps.back());
         } catch (const std::exception& error) {
           std::fprintf(stderr, "FAIL %s seed %llu: %s\n", name.c_str(),
                        static_cast<unsigned long long>(seed), error.what());

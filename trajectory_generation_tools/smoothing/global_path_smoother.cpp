@@ -449,9 +449,17 @@ GlobalSmoothingPlan GlobalSmoothingProgramme::plan() const {
       if (stretches.empty()) break;
       const std::vector<std::size_t> lost = check.lostCells(
           SmoothedPathAssembler::assemble(points_, smoothings).primitives, stretches);
+      // The largest losses first, until what the others lose together is tolerated.
+      std::vector<std::size_t> order(stretches.size());
+      for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
+      std::sort(order.begin(), order.end(),
+                [&](std::size_t a, std::size_t b) { return lost[a] > lost[b]; });
+      std::size_t remaining = 0;
+      for (const std::size_t cells : lost) remaining += cells;
       bool changed = false;
-      for (std::size_t s = 0; s < stretches.size(); ++s) {
-        if (lost[s] <= kToleratedLostCells) continue;
+      for (const std::size_t s : order) {
+        if (remaining <= check.toleratedLostCells() || lost[s] == 0) break;
+        remaining -= lost[s];
         const std::size_t i = stretch_corner[s];
         if (!guarded[i]) {
           guarded[i] = true;

@@ -74,9 +74,10 @@ class GlobalPathSmoother;
 /// free area (a whole leg between two sharp turns or the path's ends always is, so the
 /// all-sharp choice is always feasible). With a preserved sensor, every chosen smoothing
 /// must also preserve coverage (CornerCoverageCheck). With a safe sensor, the chosen
-/// smoothings together must see what the sharp path sees (PathCoverageCheck): a corner
-/// whose smoothing loses reachable area is guarded (its smoothings must then preserve
-/// coverage), and a guarded corner's smoothing that still loses area is refused.
+/// smoothings together must see what the sharp path sees (PathCoverageCheck), up to its
+/// tolerated loss: the corners whose smoothings lose the most reachable area are guarded
+/// (their smoothings must then preserve coverage) until the rest lose no more than that,
+/// and a guarded corner's smoothing that still loses area is refused.
 ///
 /// The objective is the sum of the pieces' times under the velocity model: each arc chain
 /// driven at its speed limit min(v_max, yaw_rate_max * radius), a sharp corner as stop,
@@ -116,10 +117,6 @@ class GlobalSmoothingProgramme {
   /// safe sensor, checking the whole path's coverage after each choice and guarding or
   /// refusing the smoothings that lose area, until none does.
   GlobalSmoothingPlan plan() const;
-
-  /// Lost cells (PathCoverageCheck) at most this many per smoothing count as none: the
-  /// sharp and smoothed paths are sampled differently.
-  static constexpr std::size_t kToleratedLostCells = 2;
 
  private:
   friend class GlobalPathSmoother;

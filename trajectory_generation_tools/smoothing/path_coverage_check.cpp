@@ -67,8 +67,10 @@ PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double w
   const Point2 margin = Point2::Constant(reach_ + wall_distance + 0.5 * sensor.length() + shorter);
   low -= margin;
   const Point2 size = high + margin - low;
-  const double cell = std::max(shorter / kCellsPerFootprint,
-                               std::sqrt(size.x() * size.y() / static_cast<double>(kMaxCells)));
+  const double cell =
+      std::max(std::min(shorter / kCellsPerFootprint,
+                        std::sqrt(size.x() * size.y() / static_cast<double>(kFloorCells))),
+               std::sqrt(size.x() * size.y() / static_cast<double>(kMaxCells)));
   raster_.emplace(low, cell, std::max(1, static_cast<int>(std::ceil(size.x() / cell))),
                   std::max(1, static_cast<int>(std::ceil(size.y() / cell))));
 
@@ -92,6 +94,12 @@ PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double w
   for (const Point2& p : waypoints) path.push_back({p.x(), p.y(), 0.0});
   sharp_.emplace(*raster_);
   sharp_->addWaypointPath(path, sensor_);
+  std::size_t seen_reachable = 0;
+  for (std::size_t i = 0; i < reachable_.size(); ++i) {
+    if (reachable_[i] != 0 && sharp_->seen(i)) ++seen_reachable;
+  }
+  tolerated_lost_cells_ =
+      static_cast<std::size_t>(kToleratedLostShare * static_cast<double>(seen_reachable));
 }
 
 std::vector<std::size_t> PathCoverageCheck::lostCells(

@@ -28,8 +28,11 @@ using ReplacedStretch = std::vector<Point2>;
 class PathCoverageCheck {
  public:
   /// Cells of the raster per footprint length (or width, if shorter; the width for a line
-  /// sensor), coarsened to at most kMaxCells over the path.
+  /// sensor), finer while the raster has fewer than kFloorCells cells (a small map, where
+  /// each corner's tolerated cells would be a large share of it), coarsened to at most
+  /// kMaxCells over the path.
   static constexpr double kCellsPerFootprint = 16.0;
+  static constexpr std::size_t kFloorCells = 250'000;
   static constexpr std::size_t kMaxCells = 2'000'000;
 
   /// Measures what the sharp path through `waypoints` (straight legs, in-place rotations)
@@ -48,12 +51,20 @@ class PathCoverageCheck {
   /// Area (m^2) of one cell of the raster.
   double cellArea() const { return raster_ ? raster_->cellArea() : 0.0; }
 
+  /// Share of the reachable area the sharp path sees that its smoothing may lose in all:
+  /// the sharp and smoothed paths are sampled differently, and a corner cut by a few
+  /// cells is not worth a sharp turn, but the losses of many corners add up.
+  static constexpr double kToleratedLostShare = 2e-4;
+  /// kToleratedLostShare of the reachable cells the sharp path sees.
+  std::size_t toleratedLostCells() const { return tolerated_lost_cells_; }
+
  private:
   FrustumSensor sensor_;
   double reach_ = 0.0;  ///< half the footprint's diagonal
   std::optional<CoverageRaster> raster_;
   CellMask reachable_;
   std::optional<SeenArea> sharp_;
+  std::size_t tolerated_lost_cells_ = 0;
 };
 
 }  // namespace kinematic_coverage::core
