@@ -101,14 +101,9 @@ Options parseOptions(int argc, char** argv) {
         if (options.batches.back() <= 0) usage();
       }
     } else if (flag == "--families") {
-      options.families.clear();
-      std::istringstream names(value);
-      std::string name;
-      while (std::getline(names, name, ',')) {
-        const auto family = testing::HardMapGenerator::fromName(name);
-        if (!family) usage();
-        options.families.push_back(*family);
-      }
+      const auto named = testing::HardMapGenerator::fromNames(value);
+      if (!named) usage();
+      options.families = *named;
     } else if (flag == "--lakes") {
       options.lakes = std::atoi(value.c_str());
       if (options.lakes < 0) usage();

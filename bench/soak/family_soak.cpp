@@ -98,14 +98,9 @@ Options parseOptions(int argc, char** argv) {
     } else if (flag == "--first-seed") {
       options.first_seed = std::stoull(value);
     } else if (flag == "--families") {
-      options.families.clear();
-      std::istringstream names(value);
-      std::string name;
-      while (std::getline(names, name, ',')) {
-        const auto family = testing::HardMapGenerator::fromName(name);
-        if (!family) usage();
-        options.families.push_back(*family);
-      }
+      const auto named = testing::HardMapGenerator::fromNames(value);
+      if (!named) usage();
+      options.families = *named;
     } else if (flag == "--max-vertices") {
       options.max_vertices = std::stoull(value);
     } else if (flag == "--oracle-max-vertices") {

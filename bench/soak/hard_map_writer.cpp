@@ -162,14 +162,9 @@ int main(int argc, char** argv) {
     if (flag == "--out") {
       out = value;
     } else if (flag == "--families") {
-      families.clear();
-      std::istringstream names(value);
-      std::string name;
-      while (std::getline(names, name, ',')) {
-        const auto family = HardMapGenerator::fromName(name);
-        if (!family) usage();
-        families.push_back(*family);
-      }
+      const auto named = HardMapGenerator::fromNames(value);
+      if (!named) usage();
+      families = *named;
     } else if (flag == "--seeds") {
       const std::size_t colon = value.find(':');
       if (colon == std::string::npos) usage();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <sstream>
 #include <utility>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -521,6 +522,19 @@ std::optional<MapFamily> HardMapGenerator::fromName(const std::string& name) {
     if (HardMapGenerator::name(family) == name) return family;
   }
   return std::nullopt;
+}
+
+std::optional<std::vector<MapFamily>> HardMapGenerator::fromNames(const std::string& names) {
+  std::vector<MapFamily> result;
+  std::istringstream list(names);
+  std::string name;
+  while (std::getline(list, name, ',')) {
+    const std::optional<MapFamily> family = fromName(name);
+    if (!family) return std::nullopt;
+    result.push_back(*family);
+  }
+  if (result.empty()) return std::nullopt;
+  return result;
 }
 
 }  // namespace testing

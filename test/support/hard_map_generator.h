@@ -69,6 +69,9 @@ class HardMapGenerator {
   static std::string name(MapFamily family);
   /// The family of `name`, if any.
   static std::optional<MapFamily> fromName(const std::string& name);
+  /// The families of a comma-separated list of names ("comb,spiral"), as the benchmark
+  /// programs' --families option takes them; none if a name is unknown or the list empty.
+  static std::optional<std::vector<MapFamily>> fromNames(const std::string& names);
 
  private:
   MapFamily family_;

@@ -169,5 +169,12 @@ TEST(HardMapGenerator, FamiliesHaveNames) {
   EXPECT_FALSE(HardMapGenerator::fromName("lake"));
 }
 
+TEST(HardMapGenerator, ReadsListsOfFamilyNames) {
+  EXPECT_EQ(HardMapGenerator::fromNames("comb,shoreline"),
+            (std::vector<MapFamily>{MapFamily::kComb, MapFamily::kShoreline}));
+  EXPECT_FALSE(HardMapGenerator::fromNames("comb,lake").has_value());
+  EXPECT_FALSE(HardMapGenerator::fromNames("").has_value());
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core::testing
