@@ -70,6 +70,11 @@ void requireRegionSize(const CoverageRaster& raster, const CellMask& region) {
 
 }  // namespace
 
+int sweptArcPieces(double sweep, double farthest, double cell_size, double max_step) {
+  const double step = std::min(max_step, 2.0 * std::sqrt(cell_size / farthest));
+  return std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / step)));
+}
+
 SeenArea::SeenArea(const CoverageRaster& raster)
     : raster_(raster), recent_steps_(raster.cellCount(), 0), visits_(raster.cellCount(), 0) {}
 

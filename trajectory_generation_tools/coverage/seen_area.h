@@ -23,6 +23,13 @@ struct Heatmap {
   std::vector<std::uint16_t> visits;
 };
 
+/// Pieces into which to cut an arc of `sweep` radians whose footprints reach at most
+/// `farthest` metres from its centre, so that the hull of each two consecutive footprints
+/// (SeenArea's step) misses at most half a `cell_size` of what the arc sweeps (the sagitta
+/// farthest * dtheta^2 / 8 of a step of dtheta = 2 sqrt(cell_size / farthest)), with steps
+/// of at most `max_step` radians. At least 1.
+int sweptArcPieces(double sweep, double farthest, double cell_size, double max_step);
+
 /// The seen area (docs/REFERENCE.md, Sensor footprint and coverage) on a CoverageRaster
 /// (the thesis's coverage and heatmaps, Fig. 4.2 and 4.6): the union of the
 /// footprints at the poses and, for each two consecutive poses at different positions

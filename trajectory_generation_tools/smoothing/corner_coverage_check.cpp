@@ -113,8 +113,7 @@ CornerCoverageCheck::Loss CornerCoverageCheck::measure(const std::vector<Point2>
   // an arc of a radius within the raster, fewer for a flatter one.
   std::vector<Pose2> smoothed{poseAt(before, in)};
   for (const PathPrimitive& arc : smoothing.arcs) {
-    const double step = std::min(kRotationStep, 2.0 * std::sqrt(cell / (arc.radius() + reach)));
-    const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(arc.sweep()) / step)));
+    const int pieces = sweptArcPieces(arc.sweep(), arc.radius() + reach, cell, kRotationStep);
     for (int k = 0; k <= pieces; ++k) smoothed.push_back(arc.poseAt(double(k) / pieces));
   }
   smoothed.push_back(poseAt(after, out));

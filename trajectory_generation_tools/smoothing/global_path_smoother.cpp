@@ -404,6 +404,65 @@ std::vector<std::optional<CornerSmoothing>> GlobalSmoothingProgramme::smoothings
   return smoothings;
 }
 
+std::vector<Point2> GlobalSmoothingProgramme::replacedStretch(
+    std::size_t i, const GlobalSmoothingCandidate& candidate) const {
+  // From where the first arc leaves its leg (measured from the first corner), through the
+  // corners, to where the last arc joins leg i + 1 (measured from the last corner).
+  const std::vector<Point2>& path = candidate.corner_path;
+  const std::size_t first_leg = i + 1 - candidate.corners();
+  std::vector<Point2> stretch{path[1] - candidate.entry * leg_direction_[first_leg]};
+  stretch.insert(stretch.end(), path.begin() + 1, path.end() - 1);
+  stretch.push_back(path[path.size() - 2] + candidate.exit * leg_direction_[i + 1]);
+  return stretch;
+}
+
+void GlobalSmoothingProgramme::keepCoverageSafe(GlobalSmoothingPlan& plan,
+                                                std::vector<bool>& guarded,
+                                                std::vector<std::vector<CoverageVerdict>>& verdict,
+                                                std::vector<bool>& refused_at) const {
+  const PathCoverageCheck check(smoother_.free_area_, smoother_.options_.wall_distance,
+                                *smoother_.options_.safe_sensor, points_);
+  // Every round guards a corner or refuses a candidate, so the rounds end; the all-sharp
+  // choice loses nothing.
+  for (;;) {
+    std::vector<ReplacedStretch> stretches;
+    std::vector<std::size_t> stretch_corner;  // the corner whose candidate it is
+    for (std::size_t i = 0; i < plan.choice.size(); ++i) {
+      if (plan.choice[i] == kNoCandidate) continue;
+      const GlobalSmoothingCandidate& candidate =
+          candidates_[i][static_cast<std::size_t>(plan.choice[i])];
+      if (!candidate.smoothing) continue;
+      stretches.push_back(replacedStretch(i, candidate));
+      stretch_corner.push_back(i);
+    }
+    if (stretches.empty()) return;
+    const std::vector<std::size_t> lost = check.lostCells(
+        SmoothedPathAssembler::assemble(points_, smoothingsOf(plan.choice)).primitives, stretches);
+    // The largest losses first, until what the others lose together is tolerated.
+    std::vector<std::size_t> order(stretches.size());
+    for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return lost[a] > lost[b]; });
+    std::size_t remaining = 0;
+    for (const std::size_t cells : lost) remaining += cells;
+    bool changed = false;
+    for (const std::size_t s : order) {
+      if (remaining <= check.toleratedLostCells() || lost[s] == 0) break;
+      remaining -= lost[s];
+      const std::size_t i = stretch_corner[s];
+      if (!guarded[i]) {
+        guarded[i] = true;
+      } else {
+        verdict[i][static_cast<std::size_t>(plan.choice[i])] = CoverageVerdict::kRefused;
+      }
+      refused_at[i] = true;
+      changed = true;
+    }
+    if (!changed) return;
+    plan.choice = solveGuarded(guarded, verdict, refused_at, &plan.time);
+  }
+}
+
 GlobalSmoothingPlan GlobalSmoothingProgramme::plan() const {
   GlobalSmoothingPlan plan;
   plan.waypoints = points_;
@@ -425,53 +484,7 @@ GlobalSmoothingPlan GlobalSmoothingProgramme::plan() const {
   std::vector<bool> coverage_refused(corners, false);
   plan.choice = solveGuarded(guarded, verdict, coverage_refused, &plan.time);
   if (smoother_.options_.safe_sensor && !smoother_.options_.preserved_sensor) {
-    const PathCoverageCheck check(smoother_.free_area_, smoother_.options_.wall_distance,
-                                  *smoother_.options_.safe_sensor, points_);
-    // Every round guards a corner or refuses a candidate, so the rounds end; the all-sharp
-    // choice loses nothing.
-    for (;;) {
-      const std::vector<std::optional<CornerSmoothing>> smoothings = smoothingsOf(plan.choice);
-      std::vector<ReplacedStretch> stretches;
-      std::vector<std::size_t> stretch_corner;  // the corner whose candidate it is
-      for (std::size_t i = 0; i < corners; ++i) {
-        if (plan.choice[i] == kNoCandidate) continue;
-        const GlobalSmoothingCandidate& candidate =
-            candidates_[i][static_cast<std::size_t>(plan.choice[i])];
-        if (!candidate.smoothing) continue;
-        const std::vector<Point2>& path = candidate.corner_path;
-        const std::size_t first_leg = i + 1 - candidate.corners();
-        ReplacedStretch stretch{path[1] - candidate.entry * leg_direction_[first_leg]};
-        stretch.insert(stretch.end(), path.begin() + 1, path.end() - 1);
-        stretch.push_back(path[path.size() - 2] + candidate.exit * leg_direction_[i + 1]);
-        stretches.push_back(std::move(stretch));
-        stretch_corner.push_back(i);
-      }
-      if (stretches.empty()) break;
-      const std::vector<std::size_t> lost = check.lostCells(
-          SmoothedPathAssembler::assemble(points_, smoothings).primitives, stretches);
-      // The largest losses first, until what the others lose together is tolerated.
-      std::vector<std::size_t> order(stretches.size());
-      for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
-      std::sort(order.begin(), order.end(),
-                [&](std::size_t a, std::size_t b) { return lost[a] > lost[b]; });
-      std::size_t remaining = 0;
-      for (const std::size_t cells : lost) remaining += cells;
-      bool changed = false;
-      for (const std::size_t s : order) {
-        if (remaining <= check.toleratedLostCells() || lost[s] == 0) break;
-        remaining -= lost[s];
-        const std::size_t i = stretch_corner[s];
-        if (!guarded[i]) {
-          guarded[i] = true;
-        } else {
-          verdict[i][static_cast<std::size_t>(plan.choice[i])] = CoverageVerdict::kRefused;
-        }
-        coverage_refused[i] = true;
-        changed = true;
-      }
-      if (!changed) break;
-      plan.choice = solveGuarded(guarded, verdict, coverage_refused, &plan.time);
-    }
+    keepCoverageSafe(plan, guarded, verdict, coverage_refused);
   }
 
   plan.smoothings = smoothingsOf(plan.choice);

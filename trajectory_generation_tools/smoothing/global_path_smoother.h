@@ -146,6 +146,16 @@ class GlobalSmoothingProgramme {
   GlobalSmoothingChoice solveGuarded(const std::vector<bool>& guarded,
                                      std::vector<std::vector<CoverageVerdict>>& verdict,
                                      std::vector<bool>& refused_at, double* least) const;
+  /// Coverage-safe smoothing's rounds after the first choice in `plan`: the whole-path
+  /// check's largest losers are guarded (or, if guarded already, their choice refused)
+  /// and the programme chooses again, until the rest lose no more than it tolerates.
+  void keepCoverageSafe(GlobalSmoothingPlan& plan, std::vector<bool>& guarded,
+                        std::vector<std::vector<CoverageVerdict>>& verdict,
+                        std::vector<bool>& refused_at) const;
+  /// The stretch of the sharp path (a ReplacedStretch of PathCoverageCheck) that
+  /// `candidate`, a smoothing of corner i, replaces.
+  std::vector<Point2> replacedStretch(std::size_t i,
+                                      const GlobalSmoothingCandidate& candidate) const;
   /// The smoothing per corner of `choice`, as SmoothedPathAssembler takes them.
   std::vector<std::optional<CornerSmoothing>> smoothingsOf(
       const GlobalSmoothingChoice& choice) const;

@@ -20,18 +20,15 @@ constexpr double kArcStep = 0.05;
 constexpr double kRotationStep = kDefaultRotationStep;
 
 /// The poses along `primitives` that SeenArea::addSweptPath measures: a segment's ends (a
-/// translated footprint sweeps the hull of its end footprints), an arc's samples at most
-/// 2 sqrt(cell / rho) apart in angle (rho: the farthest a footprint point is from the arc's
-/// centre; the hull of two footprints so far apart misses at most the sagitta
-/// rho dtheta^2 / 8 of the circles they turn on, half a cell), a rotation's steps.
+/// translated footprint sweeps the hull of its end footprints), an arc's samples within
+/// half a cell of what it sweeps (sweptArcPieces), a rotation's steps.
 std::vector<Pose2> sweptPoses(const std::vector<PathPrimitive>& primitives, double cell,
                               double reach) {
   std::vector<Pose2> poses;
   for (const PathPrimitive& primitive : primitives) {
     int pieces = 1;
     if (primitive.kind() == PrimitiveKind::kArc) {
-      const double step = std::min(kArcStep, 2.0 * std::sqrt(cell / (primitive.radius() + reach)));
-      pieces = std::max(1, static_cast<int>(std::ceil(std::abs(primitive.sweep()) / step)));
+      pieces = sweptArcPieces(primitive.sweep(), primitive.radius() + reach, cell, kArcStep);
     } else if (primitive.kind() == PrimitiveKind::kRotation) {
       pieces =
           std::max(1, static_cast<int>(std::ceil(std::abs(primitive.turnAngle()) / kRotationStep)));
