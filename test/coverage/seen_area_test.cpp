@@ -4,9 +4,12 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
+#include <set>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
 
 namespace kinematic_coverage::core {
@@ -237,6 +240,59 @@ TEST(SeenArea, LawnmowerOverlapIsSeenTwice) {
   // Seen at the end of the first lane, not later in the turn, again on the short leg, not
   // early in the second turn, again from late in it on into the second lane.
   EXPECT_EQ(seen.visits(cellAt(raster, {30.01, 6.21})), 3u);
+}
+
+TEST(SeenArea, AVisitIsAStepThatSeesACellTheStepBeforeDidNot) {
+  // Random poses (moves and turns on the spot, back and forth over the same ground): each
+  // cell's visits against a cell-by-cell count of the steps, each the cells with centres in
+  // the convex hull of its two footprints, or in either footprint for a turn on the spot.
+  const FrustumSensor sensor(3.0, 1.2, 0.3);
+  const CoverageRaster raster({0.0, 0.0}, 0.1, 200, 200);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(6.0, 14.0);
+  std::uniform_real_distribution<double> heading(-M_PI, M_PI);
+  std::bernoulli_distribution turn_on_the_spot(0.3);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Pose2> poses{{coordinate(random), coordinate(random), heading(random)}};
+    for (int k = 0; k < 30; ++k) {
+      Pose2 next{coordinate(random), coordinate(random), heading(random)};
+      if (turn_on_the_spot(random)) next = {poses.back().x, poses.back().y, heading(random)};
+      poses.push_back(next);
+    }
+    SeenArea seen(raster);
+    seen.addTrajectory(poses, sensor);
+
+    std::vector<std::uint16_t> expected(raster.cellCount(), 0);
+    std::set<std::size_t> before;
+    for (std::size_t i = 1; i < poses.size(); ++i) {
+      const Ring a = sensor.footprint(poses[i - 1]);
+      const Ring b = sensor.footprint(poses[i]);
+      std::vector<CellSpan> spans;
+      if (poses[i].position() == poses[i - 1].position()) {
+        raster.appendConvexSpans(a, spans);
+        raster.appendConvexSpans(b, spans);
+      } else {
+        std::vector<Point2> corners(a.begin(), a.end());
+        corners.insert(corners.end(), b.begin(), b.end());
+        raster.appendConvexSpans(convexHull(corners), spans);
+      }
+      std::set<std::size_t> step;
+      for (const CellSpan& span : spans) {
+        for (int column = span.begin; column < span.end; ++column) {
+          step.insert(raster.index(span.row, column));
+        }
+      }
+      for (const std::size_t cell : step) {
+        if (before.count(cell) == 0) ++expected[cell];
+      }
+      before = std::move(step);
+    }
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < raster.cellCount(); ++i) {
+      if (seen.visits(i) != expected[i]) ++differing;
+    }
+    EXPECT_EQ(differing, 0u) << "trial " << trial;
+  }
 }
 
 TEST(SeenArea, HeatmapDoesNotDependOnSamplingDensity) {

@@ -1,7 +1,6 @@
 #include "trajectory_generation_tools/coverage/seen_area.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -19,29 +18,6 @@ constexpr std::uint16_t kMaxVisits = std::numeric_limits<std::uint16_t>::max();
 /// Longest arc (radians) replaced by a chord when sweeping a footprint corner's sector:
 /// the chord loses 1 - cos(0.025), about 3e-4, of the radius.
 constexpr double kSectorArcStep = 0.05;
-
-/// Convex hull (counter-clockwise, Andrew's monotone chain) of two footprints' corners;
-/// fewer than 3 vertices when they are collinear (a line sensor moving along its line).
-Ring convexHull(const Ring& a, const Ring& b) {
-  std::vector<Point2> points(a.begin(), a.end());
-  points.insert(points.end(), b.begin(), b.end());
-  std::sort(points.begin(), points.end(), [](const Point2& p, const Point2& q) {
-    return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
-  });
-  Ring hull(2 * points.size());
-  std::size_t k = 0;
-  for (const Point2& p : points) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0.0) --k;
-    hull[k++] = p;
-  }
-  const std::size_t lower = k + 1;
-  for (auto it = points.rbegin() + 1; it != points.rend(); ++it) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], *it) <= 0.0) --k;
-    hull[k++] = *it;
-  }
-  hull.resize(k > 1 ? k - 1 : k);
-  return hull;
-}
 
 /// The circular sector that `corner` sweeps turning by `turn` (|turn| <= pi) about
 /// `centre`, as a convex polygon with vertices on the arc at most kSectorArcStep apart.
@@ -76,7 +52,7 @@ int sweptArcPieces(double sweep, double farthest, double cell_size, double max_s
 }
 
 SeenArea::SeenArea(const CoverageRaster& raster)
-    : raster_(raster), recent_steps_(raster.cellCount(), 0), visits_(raster.cellCount(), 0) {}
+    : raster_(raster), visits_(raster.cellCount(), 0) {}
 
 void SeenArea::addTrajectory(const std::vector<Pose2>& poses, const FrustumSensor& sensor) {
   addPoses(poses, sensor, false);
@@ -103,17 +79,18 @@ void SeenArea::addPoses(const std::vector<Pose2>& poses, const FrustumSensor& se
   }
   if (poses.empty()) return;
   std::vector<CellSpan> spans;
-  std::size_t step = 0;
   Ring previous = sensor.footprint(poses.front());
   if (poses.size() == 1) {
     raster_.appendConvexSpans(previous, spans);
-    markStep(spans, step++ % 2);
+    markStep(spans);
   }
   for (std::size_t i = 1; i < poses.size(); ++i) {
     Ring current = sensor.footprint(poses[i]);
     spans.clear();
     if ((poses[i].position() - poses[i - 1].position()).norm() > kSamePositionTolerance) {
-      raster_.appendConvexSpans(convexHull(previous, current), spans);
+      std::vector<Point2> corners(previous.begin(), previous.end());
+      corners.insert(corners.end(), current.begin(), current.end());
+      raster_.appendConvexSpans(convexHull(std::move(corners)), spans);
     } else {
       raster_.appendConvexSpans(previous, spans);
       raster_.appendConvexSpans(current, spans);
@@ -124,34 +101,56 @@ void SeenArea::addPoses(const std::vector<Pose2>& poses, const FrustumSensor& se
         }
       }
     }
-    markStep(spans, step++ % 2);
+    markStep(spans);
     previous = std::move(current);
   }
   // The next pass starts afresh: what it sees again is a new visit.
-  for (std::size_t parity = 0; parity < 2; ++parity) {
-    for (const std::size_t i : recent_cells_[parity]) recent_steps_[i] = 0;
-    recent_cells_[parity].clear();
-  }
+  previous_step_cells_.clear();
 }
 
-void SeenArea::markStep(const std::vector<CellSpan>& spans, std::size_t parity) {
-  const std::uint8_t own = static_cast<std::uint8_t>(1u << parity);
-  const std::uint8_t before = static_cast<std::uint8_t>(1u << (1 - parity));
-  std::vector<std::size_t>& own_cells = recent_cells_[parity];
-  // Forget the step two before this one, which had the same parity.
-  for (const std::size_t i : own_cells) recent_steps_[i] &= static_cast<std::uint8_t>(~own);
-  own_cells.clear();
+void SeenArea::markStep(std::vector<CellSpan>& spans) {
+  // The step's cells as disjoint spans in row-major order.
+  std::sort(spans.begin(), spans.end(), [](const CellSpan& a, const CellSpan& b) {
+    return a.row < b.row || (a.row == b.row && a.begin < b.begin);
+  });
+  step_cells_.clear();
   for (const CellSpan& span : spans) {
-    const std::size_t begin = raster_.index(span.row, span.begin);
-    const std::size_t end = raster_.index(span.row, span.end);
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::uint8_t flags = recent_steps_[i];
-      if ((flags & own) != 0) continue;
-      if ((flags & before) == 0 && visits_[i] < kMaxVisits) ++visits_[i];
-      recent_steps_[i] = static_cast<std::uint8_t>(flags | own);
-      own_cells.push_back(i);
+    if (span.begin >= span.end) continue;
+    CellSpan* last = step_cells_.empty() ? nullptr : &step_cells_.back();
+    if (last != nullptr && last->row == span.row && span.begin <= last->end) {
+      last->end = std::max(last->end, span.end);
+    } else {
+      step_cells_.push_back(span);
     }
   }
+  // A new visit to the cells of this step outside the step before: per span, the gaps
+  // between the previous step's spans that overlap it.
+  const auto visit = [this](int row, int begin, int end) {
+    const std::size_t first = raster_.index(row, begin);
+    const std::size_t last = raster_.index(row, end);
+    for (std::size_t i = first; i < last; ++i) {
+      if (visits_[i] < kMaxVisits) ++visits_[i];
+    }
+  };
+  std::size_t next = 0;  // the first previous span not wholly before the current one
+  for (const CellSpan& span : step_cells_) {
+    while (next < previous_step_cells_.size() && (previous_step_cells_[next].row < span.row ||
+                                                  (previous_step_cells_[next].row == span.row &&
+                                                   previous_step_cells_[next].end <= span.begin))) {
+      ++next;
+    }
+    int from = span.begin;
+    for (std::size_t k = next;
+         k < previous_step_cells_.size() && previous_step_cells_[k].row == span.row &&
+         previous_step_cells_[k].begin < span.end;
+         ++k) {
+      if (previous_step_cells_[k].begin > from)
+        visit(span.row, from, previous_step_cells_[k].begin);
+      from = std::max(from, previous_step_cells_[k].end);
+    }
+    if (from < span.end) visit(span.row, from, span.end);
+  }
+  std::swap(previous_step_cells_, step_cells_);
 }
 
 CellMask SeenArea::seenMask() const {

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -91,15 +90,16 @@ class SeenArea {
   /// see the sectors swept by the footprint's corners turning between their headings.
   void addPoses(const std::vector<Pose2>& poses, const FrustumSensor& sensor, bool sweep_rotations);
 
-  /// Marks the cells of `spans` as seen in the current step, whose parity (0 or 1) is
-  /// `parity`: a cell not seen in the step before starts a new visit.
-  void markStep(const std::vector<CellSpan>& spans, std::size_t parity);
+  /// Marks the cells of `spans` (reordered) as seen in the current step: a cell not seen
+  /// in the step before starts a new visit. Costs the step's rows and its new cells, not
+  /// its area, so densely sampled poses are cheap.
+  void markStep(std::vector<CellSpan>& spans);
 
   CoverageRaster raster_;
-  /// Per cell, bit p is set when the pass's latest step of parity p saw it.
-  std::vector<std::uint8_t> recent_steps_;
-  /// The cells whose bit p is set, so that a step can clear the bits of the step two before.
-  std::array<std::vector<std::size_t>, 2> recent_cells_;
+  /// The cells of the pass's latest step and of the current one, as disjoint row spans in
+  /// row-major order.
+  std::vector<CellSpan> previous_step_cells_;
+  std::vector<CellSpan> step_cells_;
   std::vector<std::uint16_t> visits_;
 };
 
