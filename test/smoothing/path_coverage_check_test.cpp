@@ -36,7 +36,7 @@ std::vector<PathPrimitive> withInnerArc(const std::vector<Point2>& waypoints, st
 
 TEST(PathCoverageCheck, TheSharpPathLosesNothingOfItself) {
   const std::vector<Point2> path{{0, 0}, {30, 0}, {30, 3}, {0, 3}, {0, 6}};
-  const PathCoverageCheck check({}, 0.0, kSensor, path);
+  PathCoverageCheck check({}, 0.0, kSensor, path);
   const std::vector<std::optional<CornerSmoothing>> sharp(path.size() - 2);
   const std::vector<ReplacedStretch> everywhere{path};
   EXPECT_EQ(check.lostCells(SmoothedPathAssembler::assemble(path, sharp).primitives, everywhere),
@@ -49,7 +49,7 @@ TEST(PathCoverageCheck, AReversalAtADeadEndLosesItsTipUnlessAnotherLegSeesIt) {
   const std::vector<Point2> dead_end{{0, 0}, {0, 40}, {3, 0}};
   ReplacedStretch stretch;
   const std::vector<PathPrimitive> cut = withInnerArc(dead_end, 1, 1.0, &stretch);
-  const PathCoverageCheck check({}, 0.0, kSensor, dead_end);
+  PathCoverageCheck check({}, 0.0, kSensor, dead_end);
   EXPECT_GT(check.lostCells(cut, {stretch}).front() * check.cellArea(), 10.0);  // m^2
 
   // The same cut, where the path later sweeps both lanes and the end again: nothing is
@@ -59,7 +59,7 @@ TEST(PathCoverageCheck, AReversalAtADeadEndLosesItsTipUnlessAnotherLegSeesIt) {
     revisited.push_back(p);
   }
   const std::vector<PathPrimitive> cut_revisited = withInnerArc(revisited, 1, 1.0, &stretch);
-  const PathCoverageCheck revisited_check({}, 0.0, kSensor, revisited);
+  PathCoverageCheck revisited_check({}, 0.0, kSensor, revisited);
   EXPECT_LE(revisited_check.lostCells(cut_revisited, {stretch}).front(), kRoundingCells);
 }
 
@@ -79,11 +79,44 @@ TEST(PathCoverageCheck, ARightAngleAtTheWallsLosesNothingReachable) {
             kRoundingCells);
 }
 
+TEST(PathCoverageCheck, LaterCallsCountAsAFreshCheckDoes) {
+  // A lawnmower of five lanes; the rounds of coverage-safe smoothing ask about one choice
+  // of corner arcs after another. Each answer, from the remembered stretches and the
+  // re-measured ones, is a fresh check's.
+  PolygonWithHoles area;
+  area.hull = {{-2, -2}, {32, -2}, {32, 16}, {-2, 16}};
+  const std::vector<Point2> path{{0, 0},  {30, 0}, {30, 3}, {0, 3},  {0, 6},
+                                 {30, 6}, {30, 9}, {0, 9},  {0, 12}, {30, 12}};
+  const std::vector<std::vector<std::size_t>> rounds{{1, 3, 5, 7}, {1, 3, 5}, {3, 5}, {3, 5, 8}};
+  PathCoverageCheck check(area, 1.0, kSensor, path);
+  for (const std::vector<std::size_t>& corners : rounds) {
+    std::vector<std::optional<CornerSmoothing>> smoothings(path.size() - 2);
+    std::vector<ReplacedStretch> stretches;
+    for (const std::size_t corner : corners) {
+      const Point2& a = path[corner - 1];
+      const Point2& b = path[corner];
+      const Point2& c = path[corner + 1];
+      smoothings[corner - 1] = InnerSmoothing::compute({a, b, c, 1.2, (b - a).normalized()});
+      ASSERT_TRUE(smoothings[corner - 1].has_value());
+      stretches.push_back({b - smoothings[corner - 1]->entry_distance * (b - a).normalized(), b,
+                           b + smoothings[corner - 1]->exit_distance * (c - b).normalized()});
+    }
+    const std::vector<PathPrimitive> primitives =
+        SmoothedPathAssembler::assemble(path, smoothings).primitives;
+    const std::vector<std::size_t> remembered = check.lostCells(primitives, stretches);
+    EXPECT_EQ(remembered,
+              PathCoverageCheck(area, 1.0, kSensor, path).lostCells(primitives, stretches));
+    std::size_t total = 0;
+    for (const std::size_t cells : remembered) total += cells;
+    EXPECT_GT(total, 0u);  // the arcs at the walls cut area the sharp turns see
+  }
+}
+
 TEST(PathCoverageCheck, ToleratesAShareOfWhatTheSharpPathSees) {
   // One 40 m lane and back 3 m beside it under a 4 m x 3 m footprint, in the open: the
   // sharp path sees about 7 m x 43 m; 0.02 % of its cells may be lost in all.
   const std::vector<Point2> dead_end{{0, 0}, {0, 40}, {3, 0}};
-  const PathCoverageCheck check({}, 0.0, kSensor, dead_end);
+  PathCoverageCheck check({}, 0.0, kSensor, dead_end);
   const double seen_m2 = 7.0 * 43.0;
   EXPECT_NEAR(check.toleratedLostCells() * check.cellArea(),
               PathCoverageCheck::kToleratedLostShare * seen_m2, 0.05 * 0.0002 * seen_m2 + 0.01);

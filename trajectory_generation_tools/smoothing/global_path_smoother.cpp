@@ -420,7 +420,7 @@ void GlobalSmoothingProgramme::keepCoverageSafe(GlobalSmoothingPlan& plan,
                                                 std::vector<bool>& guarded,
                                                 std::vector<std::vector<CoverageVerdict>>& verdict,
                                                 std::vector<bool>& refused_at) const {
-  const PathCoverageCheck check(smoother_.free_area_, smoother_.options_.wall_distance,
+  PathCoverageCheck check(smoother_.free_area_, smoother_.options_.wall_distance,
                                 *smoother_.options_.safe_sensor, points_);
   // Every round guards a corner or refuses a candidate, so the rounds end; the all-sharp
   // choice loses nothing.

@@ -40,6 +40,44 @@ std::vector<Pose2> sweptPoses(const std::vector<PathPrimitive>& primitives, doub
   return poses;
 }
 
+/// An axis-aligned box, empty until extended.
+struct Box {
+  Point2 low = Point2::Constant(std::numeric_limits<double>::infinity());
+  Point2 high = Point2::Constant(-std::numeric_limits<double>::infinity());
+
+  void extend(const Point2& p) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  Box grown(double margin) const { return {low.array() - margin, high.array() + margin}; }
+  bool overlaps(const Box& other) const {
+    return (low.array() <= other.high.array()).all() && (other.low.array() <= high.array()).all();
+  }
+};
+
+/// A box holding the path of `primitive` (an arc's whole circle).
+Box extentOf(const PathPrimitive& primitive) {
+  Box box;
+  box.extend(primitive.start());
+  box.extend(primitive.end());
+  if (primitive.kind() == PrimitiveKind::kArc) {
+    box.extend(primitive.centre().array() - primitive.radius());
+    box.extend(primitive.centre().array() + primitive.radius());
+  }
+  return box;
+}
+
+/// True when the two lists hold the same primitives, exactly.
+bool samePrimitives(const std::vector<PathPrimitive>& a, const std::vector<PathPrimitive>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const PathPrimitive& p, const PathPrimitive& q) {
+                      return p.kind() == q.kind() && p.start() == q.start() && p.end() == q.end() &&
+                             p.centre() == q.centre() && p.radius() == q.radius() &&
+                             p.startAngle() == q.startAngle() && p.sweep() == q.sweep() &&
+                             p.turnAngle() == q.turnAngle();
+                    });
+}
+
 }  // namespace
 
 PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
@@ -100,39 +138,90 @@ PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double w
 }
 
 std::vector<std::size_t> PathCoverageCheck::lostCells(
-    const std::vector<PathPrimitive>& primitives,
-    const std::vector<ReplacedStretch>& stretches) const {
+    const std::vector<PathPrimitive>& primitives, const std::vector<ReplacedStretch>& stretches) {
   std::vector<std::size_t> lost(stretches.size(), 0);
   if (!raster_) return lost;
-  // Lost cells lie within reach of the stretches, the only places where the two paths
-  // differ; each stretch's bounding box, grown by the reach, passes over most fast.
+  // Lost cells lie within `near` of the stretches, the only places where the two paths
+  // differ, and only primitives whose footprints reach that far from their own extent
+  // can see them.
   const double near = reach_ + raster_->cellSize();
-  std::vector<std::pair<Point2, Point2>> boxes;
+  std::vector<Box> boxes;
   for (const ReplacedStretch& stretch : stretches) {
-    Point2 low = Point2::Constant(std::numeric_limits<double>::infinity());
-    Point2 high = -low;
-    for (const Point2& p : stretch) {
-      low = low.cwiseMin(p);
-      high = high.cwiseMax(p);
-    }
-    boxes.emplace_back(low.array() - near, high.array() + near);
+    Box box;
+    for (const Point2& p : stretch) box.extend(p);
+    boxes.push_back(box.grown(near));
   }
+  std::vector<Box> primitive_boxes;
+  for (const PathPrimitive& primitive : primitives) {
+    primitive_boxes.push_back(extentOf(primitive).grown(near));
+  }
+
+  // Stretches whose neighbourhood is unchanged keep their count; the others are measured.
+  std::vector<std::size_t> unmeasured;
+  std::vector<std::vector<PathPrimitive>> nearby(stretches.size());
+  std::vector<bool> near_unmeasured(primitives.size(), false);
+  for (std::size_t s = 0; s < stretches.size(); ++s) {
+    std::vector<std::size_t> near_primitives;
+    for (std::size_t k = 0; k < primitives.size(); ++k) {
+      if (primitive_boxes[k].overlaps(boxes[s])) {
+        nearby[s].push_back(primitives[k]);
+        near_primitives.push_back(k);
+      }
+    }
+    const auto known = std::find_if(measured_.begin(), measured_.end(), [&](const auto& entry) {
+      return entry.stretch == stretches[s] && samePrimitives(entry.nearby, nearby[s]);
+    });
+    if (known != measured_.end()) {
+      lost[s] = known->lost;
+      continue;
+    }
+    unmeasured.push_back(s);
+    for (const std::size_t k : near_primitives) near_unmeasured[k] = true;
+  }
+  if (unmeasured.empty()) return lost;
+
+  // The primitives near the unmeasured stretches, each unbroken run of them as one pass
+  // (a run's ends are shared poses, so the runs together see what the whole path sees
+  // there).
   SeenArea smoothed(*raster_);
-  smoothed.addSweptPath(sweptPoses(primitives, raster_->cellSize(), reach_), sensor_);
-  for (std::size_t i = 0; i < raster_->cellCount(); ++i) {
-    if (reachable_[i] == 0 || !sharp_->seen(i) || smoothed.seen(i)) continue;
-    const Point2 centre = raster_->cellCentre(i);
-    for (std::size_t s = 0; s < stretches.size(); ++s) {
-      const auto& [low, high] = boxes[s];
-      if ((centre.array() < low.array()).any() || (centre.array() > high.array()).any()) continue;
-      const ReplacedStretch& stretch = stretches[s];
-      for (std::size_t k = 0; k + 1 < stretch.size(); ++k) {
-        if (distanceToSegment(centre, stretch[k], stretch[k + 1]) <= near) {
-          ++lost[s];
-          break;
+  for (std::size_t k = 0; k < primitives.size();) {
+    if (!near_unmeasured[k]) {
+      ++k;
+      continue;
+    }
+    const std::size_t first = k;
+    while (k < primitives.size() && near_unmeasured[k]) ++k;
+    const std::vector<PathPrimitive> run(primitives.begin() + static_cast<std::ptrdiff_t>(first),
+                                         primitives.begin() + static_cast<std::ptrdiff_t>(k));
+    smoothed.addSweptPath(sweptPoses(run, raster_->cellSize(), reach_), sensor_);
+  }
+  const double cell = raster_->cellSize();
+  const Point2 origin = raster_->origin();
+  for (const std::size_t s : unmeasured) {
+    const Box& box = boxes[s];
+    const int first_column =
+        std::max(0, static_cast<int>(std::floor((box.low.x() - origin.x()) / cell)));
+    const int last_column = std::min(
+        raster_->columns() - 1, static_cast<int>(std::floor((box.high.x() - origin.x()) / cell)));
+    const int first_row =
+        std::max(0, static_cast<int>(std::floor((box.low.y() - origin.y()) / cell)));
+    const int last_row = std::min(raster_->rows() - 1,
+                                  static_cast<int>(std::floor((box.high.y() - origin.y()) / cell)));
+    const ReplacedStretch& stretch = stretches[s];
+    for (int row = first_row; row <= last_row; ++row) {
+      for (int column = first_column; column <= last_column; ++column) {
+        const std::size_t i = raster_->index(row, column);
+        if (reachable_[i] == 0 || !sharp_->seen(i) || smoothed.seen(i)) continue;
+        const Point2 centre = raster_->cellCentre(i);
+        for (std::size_t k = 0; k + 1 < stretch.size(); ++k) {
+          if (distanceToSegment(centre, stretch[k], stretch[k + 1]) <= near) {
+            ++lost[s];
+            break;
+          }
         }
       }
     }
+    measured_.push_back({stretch, std::move(nearby[s]), lost[s]});
   }
   return lost;
 }

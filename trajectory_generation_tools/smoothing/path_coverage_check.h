@@ -44,9 +44,12 @@ class PathCoverageCheck {
 
   /// Per stretch, the reachable cells within the sensor's reach of it (half the
   /// footprint's diagonal) that the sharp path sees and the path of `primitives`
-  /// (segments, arcs, rotations) does not.
+  /// (segments, arcs, rotations) does not. A stretch whose neighbourhood (the stretch and
+  /// every primitive that can see near it) is as in an earlier call keeps that call's count;
+  /// only the others are measured, from the primitives near them, so that the rounds of
+  /// coverage-safe smoothing, which change a few corners each, cost what they change.
   std::vector<std::size_t> lostCells(const std::vector<PathPrimitive>& primitives,
-                                     const std::vector<ReplacedStretch>& stretches) const;
+                                     const std::vector<ReplacedStretch>& stretches);
 
   /// Area (m^2) of one cell of the raster.
   double cellArea() const { return raster_ ? raster_->cellArea() : 0.0; }
@@ -65,6 +68,14 @@ class PathCoverageCheck {
   CellMask reachable_;
   std::optional<SeenArea> sharp_;
   std::size_t tolerated_lost_cells_ = 0;
+
+  /// A stretch measured by an earlier call: its neighbourhood and its lost cells.
+  struct MeasuredStretch {
+    ReplacedStretch stretch;
+    std::vector<PathPrimitive> nearby;
+    std::size_t lost = 0;
+  };
+  std::vector<MeasuredStretch> measured_;
 };
 
 }  // namespace kinematic_coverage::core
