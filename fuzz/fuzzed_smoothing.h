@@ -132,7 +132,8 @@ inline void checkSmoothedPath(const PolygonWithHoles& area, const std::vector<Po
             "path curvature above 1 / radius");
   const auto& statistics = path.statistics;
   fuzzCheck(statistics.turns_smoothed == statistics.inner + statistics.outer_bisector +
-                                             statistics.outer_tangent + statistics.reverse_curve &&
+                                             statistics.outer_tangent + statistics.reverse_curve +
+                                             statistics.bulb &&
                 statistics.turns_smoothed <= statistics.turns_total,
             "smoothing statistics do not add up");
   if (primitives.empty()) return;

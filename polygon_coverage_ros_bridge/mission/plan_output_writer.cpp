@@ -39,7 +39,7 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   out << (parameters.smoothing ? "smooth: " : "trajectory: ") << turns.turns_smoothed << " of "
       << turns.turns_total << " turns smoothed (inner " << turns.inner << ", outer bisector "
       << turns.outer_bisector << ", outer tangent " << turns.outer_tangent << ", reverse curve "
-      << turns.reverse_curve << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
+      << turns.reverse_curve << ", bulb " << turns.bulb << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
       << trajectory.poses.size() << " poses, " << formatNumber(trajectory.traversal_time_s)
       << " s (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
@@ -92,6 +92,7 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
       .set("turns_outer_bisector", static_cast<double>(turns.outer_bisector))
       .set("turns_outer_tangent", static_cast<double>(turns.outer_tangent))
       .set("turns_reverse_curve", static_cast<double>(turns.reverse_curve))
+      .set("turns_bulb", static_cast<double>(turns.bulb))
       .set("turns_sharp", static_cast<double>(turns.turns_total - turns.turns_smoothed));
   setCoverageMetrics(coverage.report, metrics);
   if (combined) metrics.set("combined_coverage_percent", combined->report.coverage_percent);

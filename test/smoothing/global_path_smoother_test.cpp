@@ -103,6 +103,27 @@ TEST(GlobalPathSmoother, TighterRadiusSmoothsCloselySpacedLanes) {
   EXPECT_LT(fixed.statistics.inner, variable.statistics.inner);
 }
 
+TEST(GlobalPathSmoother, BulbTurnsTakeCloselySpacedLanesAtTheTurningRadius) {
+  // The same lanes with bulb turns among the candidates (coverage-safe smoothing's): a
+  // bulb (out beyond both lanes and back, along the boundary between them) of a larger
+  // radius than inner arcs that fit, so driven faster, takes every U-turn.
+  const PolygonWithHoles area = lanesHull(10, 1.0);
+  const std::vector<Point2> points = lanes(10, 1.0);
+  GlobalSmoothingOptions with_bulbs = options(1.5, 0.5);
+  with_bulbs.bulb_turns = true;
+  const SmoothedPath path = GlobalPathSmoother(area, with_bulbs).smooth(points);
+  testing::expectContinuousPath(path, 50.0);
+  EXPECT_EQ(path.statistics.bulb, path.statistics.turns_total);
+  for (const PathPrimitive& p : path.primitives) {
+    if (p.kind() != PrimitiveKind::kArc) continue;
+    EXPECT_GE(p.radius(), 0.5 - 1e-12);
+    EXPECT_LE(p.radius(), 1.5 + 1e-12);
+    EXPECT_GT(testing::sampledArcClearance(area, p, 0.005), 1e-9);
+  }
+  EXPECT_LT(GlobalPathSmoother(area, with_bulbs).programme(points).plan().time,
+            GlobalPathSmoother(area, options(1.5, 0.5)).programme(points).plan().time);
+}
+
 TEST(GlobalPathSmoother, CoveragePreservingKeepsAcuteInnerCornersSharp) {
   // A zigzag with acute corners and lanes one footprint apart (no overlap): inner arcs
   // cut the corners' tips, which the sharp path saw.

@@ -90,13 +90,18 @@ inline void expectContinuousPath(const SmoothedPath& path, double scale) {
   const std::vector<PathPrimitive>& p = path.primitives;
   int rotations = 0;
   int arcs = 0;
+  int bulb_pieces = 0;  // a bulb turn's arcs and straight run
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Pose2 start = p[i].startPose();
     const Pose2 end = p[i].endPose();
     ASSERT_TRUE(std::isfinite(start.x + start.y + start.yaw + end.x + end.y + end.yaw));
     if (p[i].kind() == PrimitiveKind::kRotation) ++rotations;
-    if (p[i].kind() == PrimitiveKind::kSegment) EXPECT_EQ(p[i].variant(), SmoothingVariant::kNone);
-    if (p[i].kind() == PrimitiveKind::kArc) {
+    if (p[i].variant() == SmoothingVariant::kBulb) {
+      ++bulb_pieces;
+    } else if (p[i].kind() == PrimitiveKind::kSegment) {
+      EXPECT_EQ(p[i].variant(), SmoothingVariant::kNone);
+    }
+    if (p[i].kind() == PrimitiveKind::kArc && p[i].variant() != SmoothingVariant::kBulb) {
       EXPECT_NE(p[i].variant(), SmoothingVariant::kNone);
       ++arcs;
     }
@@ -107,9 +112,14 @@ inline void expectContinuousPath(const SmoothedPath& path, double scale) {
   }
   const SmoothingStatistics& s = path.statistics;
   EXPECT_EQ(rotations, s.turns_total - s.turns_smoothed);
-  EXPECT_EQ(s.turns_smoothed, s.inner + s.outer_bisector + s.outer_tangent + s.reverse_curve);
+  EXPECT_EQ(s.turns_smoothed,
+            s.inner + s.outer_bisector + s.outer_tangent + s.reverse_curve + s.bulb);
   EXPECT_EQ(s.reverse_curve % 2, 0);
+  EXPECT_EQ(s.bulb % 2, 0);
   EXPECT_EQ(arcs, s.inner + 3 * (s.outer_bisector + s.outer_tangent) + s.reverse_curve);
+  // Each bulb turn (two corners) has two to four arcs and at most one straight run.
+  EXPECT_GE(bulb_pieces, s.bulb);
+  EXPECT_LE(bulb_pieces, 5 * s.bulb / 2);
 }
 
 /// Distance between two closed segments (0 when they cross), in doubles.

@@ -1,5 +1,6 @@
 kc_add_gtest(test_smoothing
   test/smoothing/boundary_edge_index_test.cpp
+  test/smoothing/bulb_turn_smoothing_test.cpp
   test/smoothing/corner_coverage_check_test.cpp
   test/smoothing/corner_smoothing_test.cpp
   test/smoothing/global_path_smoother_test.cpp

@@ -10,7 +10,7 @@ enum class PrimitiveKind { kSegment, kArc, kRotation };
 /// Which smoothing made a primitive: Algorithm 1's variants, or the reverse curve of the
 /// global strategy (ReverseCurveSmoothing). kNone: the planner's own segment or a sharp
 /// corner's rotation, or a segment joining two smoothings.
-enum class SmoothingVariant { kNone, kInner, kOuterBisector, kOuterTangent, kReverseCurve };
+enum class SmoothingVariant { kNone, kInner, kOuterBisector, kOuterTangent, kReverseCurve, kBulb };
 
 /// One piece of a drivable path, with exact length and pose at any point along it.
 /// Arcs are stored by centre, radius, the polar angle of their start point about the

@@ -124,7 +124,7 @@ void SmoothTrajectoryGeneratorNode::generate() {
     summary << turns.turns_smoothed << " of " << turns.turns_total << " turns smoothed (inner "
             << turns.inner << ", outer bisector " << turns.outer_bisector << ", outer tangent "
             << turns.outer_tangent << ", reverse curve " << turns.reverse_curve
-            << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
+            << ", bulb " << turns.bulb << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
             << trajectory.poses.size() << " poses, " << trajectory.trajectory_length_m << " m, "
             << trajectory.traversal_time_s << " s";
     const double duration_s = secondsSince(start);

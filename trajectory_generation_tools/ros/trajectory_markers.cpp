@@ -45,6 +45,7 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
   visualization_msgs::Marker bisector = lineList("arcs_outer_bisector", header, 0.1f, 0.3f, 0.9f);
   visualization_msgs::Marker tangent = lineList("arcs_outer_tangent", header, 0.8f, 0.1f, 0.8f);
   visualization_msgs::Marker reverse = lineList("arcs_reverse_curve", header, 0.1f, 0.7f, 0.7f);
+  visualization_msgs::Marker bulb = lineList("arcs_bulb", header, 0.9f, 0.6f, 0.1f);
   visualization_msgs::Marker rotations = lineList("rotations", header, 0.9f, 0.1f, 0.1f);
   rotations.type = visualization_msgs::Marker::SPHERE_LIST;
   rotations.scale.x = rotations.scale.y = rotations.scale.z = 0.3;
@@ -62,6 +63,7 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
             primitive.variant() == core::SmoothingVariant::kOuterBisector  ? bisector
             : primitive.variant() == core::SmoothingVariant::kOuterTangent ? tangent
             : primitive.variant() == core::SmoothingVariant::kReverseCurve ? reverse
+            : primitive.variant() == core::SmoothingVariant::kBulb         ? bulb
                                                                            : inner;
         const int steps =
             std::max(1, static_cast<int>(std::ceil(std::abs(primitive.sweep()) / kArcDrawingStep)));
@@ -78,7 +80,7 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
   visualization_msgs::MarkerArray markers;
   markers.markers.push_back(deleteAllMarker(header));
   for (visualization_msgs::Marker* marker :
-       {&segments, &inner, &bisector, &tangent, &reverse, &rotations}) {
+       {&segments, &inner, &bisector, &tangent, &reverse, &bulb, &rotations}) {
     if (!marker->points.empty()) markers.markers.push_back(*marker);
   }
   return markers;

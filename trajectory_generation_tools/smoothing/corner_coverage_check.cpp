@@ -39,6 +39,7 @@ struct Box {
   void addArc(const PathPrimitive& arc) {
     add(arc.start());
     add(arc.end());
+    if (arc.kind() != PrimitiveKind::kArc) return;  // a straight run of a bulb turn
     const double sweep = std::abs(arc.sweep());
     for (int quarter = 0; quarter < 4; ++quarter) {
       const double angle = 0.5 * M_PI * quarter;

@@ -1,6 +1,7 @@
 #include "trajectory_generation_tools/smoothing/global_path_smoother.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "trajectory_generation_tools/smoothing/bulb_turn_smoothing.h"
 #include "trajectory_generation_tools/smoothing/corner_geometry.h"
 #include "trajectory_generation_tools/smoothing/corner_waypoints.h"
 #include "trajectory_generation_tools/smoothing/inner_smoothing.h"
@@ -31,6 +33,13 @@ constexpr double kSameEntryTolerance = 1e-9;
 /// that skips the lane's end and the way back, which Algorithm 1 only risks when no other
 /// variant fits, but a time-minimising choice would take everywhere.
 constexpr double kMaxTangentReachRadii = 4.0;
+
+/// The runs along the middle leg (fractions of it, from the first corner) of the bulb turns
+/// tried at every pair of corners turning the same way: touching the middle leg's middle,
+/// along its middle half, and along all of it (through both corners, whose footprints see
+/// the strip beyond the lanes' ends there).
+constexpr std::array<std::pair<double, double>, 3> kBulbRuns{
+    {{0.5, 0.5}, {0.25, 0.75}, {0.0, 1.0}}};
 
 /// Fastest time (s) over a straight piece of `length` from speed v0 to speed v1 under
 /// v_max and a_max (the trapezoid of the velocity model). When the piece is too short to
@@ -170,7 +179,7 @@ void GlobalSmoothingProgramme::addCandidates(std::size_t i, const std::vector<do
     }
     for (const PathPrimitive& arc : smoothing->arcs) {
       if (!std::isfinite(arc.sweep()) || !arc.start().allFinite() || !arc.end().allFinite() ||
-          !smoother_.index_.arcClear(arc)) {
+          !smoother_.index_.primitiveClear(arc)) {
         return;
       }
     }
@@ -212,6 +221,11 @@ void GlobalSmoothingProgramme::addCandidates(std::size_t i, const std::vector<do
       std::optional<CornerSmoothing> curve =
           ReverseCurveSmoothing::compute(before, a, b, c, radius);
       consider(std::move(curve), radius, i - 1, {before, a, b, c});
+      for (const auto& [run_from, run_to] : kBulbRuns) {
+        if (!options.bulb_turns) break;
+        consider(BulbTurnSmoothing::compute(before, a, b, c, radius, run_from, run_to), radius,
+                 i - 1, {before, a, b, c});
+      }
     }
   }
 }
@@ -421,7 +435,7 @@ void GlobalSmoothingProgramme::keepCoverageSafe(GlobalSmoothingPlan& plan,
                                                 std::vector<std::vector<CoverageVerdict>>& verdict,
                                                 std::vector<bool>& refused_at) const {
   PathCoverageCheck check(smoother_.free_area_, smoother_.options_.wall_distance,
-                                *smoother_.options_.safe_sensor, points_);
+                          *smoother_.options_.safe_sensor, points_);
   // Every round guards a corner or refuses a candidate, so the rounds end; the all-sharp
   // choice loses nothing.
   for (;;) {

@@ -29,6 +29,11 @@ struct GlobalSmoothingOptions {
   /// Coverage-safe only: the planner's wall distance (m, >= 0), which shapes the reachable
   /// area whose coverage is kept.
   double wall_distance = 0.0;
+  /// Bulb turns (BulbTurnSmoothing) among the candidates of corner pairs turning the same
+  /// way. Coverage-safe smoothing sets it: a bulb turn drives along the boundary the lanes
+  /// end at and sees the strip beyond their ends, which inner arcs cut. The `global` and
+  /// `local` strategies keep the candidates they were measured with (docs/BENCHMARKS.md).
+  bool bulb_turns = false;
 
   /// The options that `parameters` give: `min_turning_radius` 0 means equal to
   /// `turning_radius`; `coverage_preserving` sets the preserved sensor, the strategy
@@ -47,6 +52,7 @@ struct GlobalSmoothingOptions {
     if (parameters.smoothing_strategy == "coverage_safe") {
       options.safe_sensor = FrustumSensor::fromParameters(parameters);
       options.wall_distance = parameters.wall_distance;
+      options.bulb_turns = true;
     }
     return options;
   }

@@ -22,6 +22,7 @@ struct SmoothingStatistics {
   int outer_bisector = 0;
   int outer_tangent = 0;
   int reverse_curve = 0;  ///< corners taken by reverse curves (two per curve; global only)
+  int bulb = 0;           ///< corners taken by bulb turns (two per turn; global only)
   int kept_for_coverage = 0;
 };
 

@@ -15,6 +15,9 @@ void count(SmoothingVariant variant, SmoothingStatistics& statistics) {
     case SmoothingVariant::kReverseCurve:
       ++statistics.reverse_curve;
       break;
+    case SmoothingVariant::kBulb:
+      ++statistics.bulb;
+      break;
     case SmoothingVariant::kInner:
       ++statistics.inner;
       break;
@@ -54,7 +57,7 @@ SmoothedPath SmoothedPathAssembler::assemble(
       current = smoothed->arcs.back().end();
       count(smoothed->variant, path.statistics);
       if (smoothed->corners == 2 && i + 2 < corners.size()) {
-        // A reverse curve also takes the next corner.
+        // A reverse curve or bulb turn also takes the next corner.
         ++i;
         ++path.statistics.turns_total;
         count(smoothed->variant, path.statistics);

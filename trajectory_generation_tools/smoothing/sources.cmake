@@ -1,6 +1,7 @@
 kc_add_stage_library(kc_smoothing
   SOURCES
     trajectory_generation_tools/smoothing/boundary_edge_index.cpp
+    trajectory_generation_tools/smoothing/bulb_turn_smoothing.cpp
     trajectory_generation_tools/smoothing/corner_geometry.cpp
     trajectory_generation_tools/smoothing/corner_coverage_check.cpp
     trajectory_generation_tools/smoothing/corner_smoother.cpp
