@@ -10,6 +10,8 @@ if(catkin_FOUND)
   # Bad messages and wrongly typed parameters: one ROS_ERROR, a failed status, no output.
   add_rostest(test/ros/bad_messages.test DEPENDENCIES ${KC_NODE_TARGETS})
   add_rostest(test/ros/node_parameters.test DEPENDENCIES ${KC_NODE_TARGETS})
+  # Area left unseen: a ROS_WARN and the warning in ~status.
+  add_rostest(test/ros/unseen_area.test DEPENDENCIES ${KC_NODE_TARGETS})
   # The replanner's resident memory over 100 000 visited poses.
   add_rostest(test/ros/replanner_memory.test DEPENDENCIES ${KC_NODE_TARGETS})
   # GUI test of the rviz tools: needs a DISPLAY (xvfb-run), skips without one.

@@ -4,11 +4,14 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <chrono>
+#include <optional>
 #include <sstream>
 #include <vector>
 
 #include "kinematic_coverage/PlanStatus.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
@@ -123,10 +126,22 @@ void SmoothTrajectoryGeneratorNode::generate() {
     std::ostringstream summary;
     summary << turns.turns_smoothed << " of " << turns.turns_total << " turns smoothed (inner "
             << turns.inner << ", outer bisector " << turns.outer_bisector << ", outer tangent "
-            << turns.outer_tangent << ", reverse curve " << turns.reverse_curve
-            << ", bulb " << turns.bulb << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
+            << turns.outer_tangent << ", reverse curve " << turns.reverse_curve << ", bulb "
+            << turns.bulb << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
             << trajectory.poses.size() << " poses, " << trajectory.trajectory_length_m << " m, "
             << trajectory.traversal_time_s << " s";
+    // What the trajectory leaves unseen of the area it could search, measured as
+    // `coverage_tool plan` measures it, and said as loudly.
+    const core::OffsetFreeArea offset =
+        core::computeOffsetFreeArea(*free_area_, parameters.wall_distance);
+    const core::TrajectoryCoverage coverage =
+        core::measureTrajectoryCoverage(*free_area_, offset.parts, parameters, poses);
+    summary << "; " << core::coverageSummary(coverage);
+    const std::optional<std::string> warning = core::reachableCoverageWarning(coverage);
+    if (warning) {
+      ROS_WARN("smooth_trajectory_generator: %s", warning->c_str());
+      summary << "; warning: " << *warning;
+    }
     const double duration_s = secondsSince(start);
     ROS_INFO("smooth_trajectory_generator: smooth: %s (%.3f s)", summary.str().c_str(), duration_s);
     publishStatus(true, summary.str(), duration_s, header.frame_id);
