@@ -1,0 +1,56 @@
+// The coverage bars of coverage-safe smoothing over CI's slice of the hard map families
+// (test/support/hard_map_generator.h, the first five maps of each; docs/BENCHMARKS.md,
+// Smoothing strategies on the hard maps): planned once as `coverage_tool plan` does, the
+// coverage-safe trajectory sees the reachable area within 0.05 points of the unsmoothed
+// trajectory of the same plan, and at least 99.9 % of it wherever the unsmoothed one sees
+// that much with the 0.05 points to spare.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "test/support/hard_map_generator.h"
+#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+constexpr int kMapsPerFamily = 5;
+/// Points of the reachable area that coverage-safe smoothing may see less of.
+constexpr double kMaxDropPoints = 0.05;
+
+/// Reachable coverage (percent) of the trajectory that `parameters` make of `planned`.
+double reachableCoverage(const PlannedMission& planned, const PlannerParameters& parameters) {
+  const GeneratedTrajectory trajectory =
+      TrajectoryGenerator(parameters).generate(planned.plan.waypoints, planned.free_area);
+  std::vector<Pose2> poses;
+  for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
+  return measureTrajectoryCoverage(planned.free_area, planned.plan.offset_parts, parameters, poses)
+      .report.reachable_coverage_percent;
+}
+
+TEST(CoverageSafeBars, EveryFamilysFirstMapsKeepWhatTheUnsmoothedTrajectorySees) {
+  for (const testing::MapFamily family : testing::HardMapGenerator::families()) {
+    const testing::HardMapGenerator generator(family);
+    for (int seed = 0; seed < kMapsPerFamily; ++seed) {
+      const testing::HardMap map = generator.generate(static_cast<std::uint64_t>(seed));
+      const std::string name =
+          testing::HardMapGenerator::name(family) + " seed " + std::to_string(seed);
+      const PlannedMission planned = planMission(map.mission);
+      PlannerParameters unsmoothed = map.mission.parameters;
+      unsmoothed.smoothing = false;
+      PlannerParameters safe = map.mission.parameters;
+      safe.smoothing = true;
+      safe.smoothing_strategy = "coverage_safe";
+      const double sharp_percent = reachableCoverage(planned, unsmoothed);
+      const double safe_percent = reachableCoverage(planned, safe);
+      EXPECT_GE(safe_percent, sharp_percent - kMaxDropPoints) << name;
+      if (sharp_percent >= 99.9 + kMaxDropPoints) EXPECT_GE(safe_percent, 99.9) << name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core
