@@ -39,9 +39,10 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   out << (parameters.smoothing ? "smooth: " : "trajectory: ") << turns.turns_smoothed << " of "
       << turns.turns_total << " turns smoothed (inner " << turns.inner << ", outer bisector "
       << turns.outer_bisector << ", outer tangent " << turns.outer_tangent << ", reverse curve "
-      << turns.reverse_curve << ", bulb " << turns.bulb << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
-      << trajectory.poses.size() << " poses, " << formatNumber(trajectory.traversal_time_s)
-      << " s (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
+      << turns.reverse_curve << ", bulb " << turns.bulb << "; kept sharp for coverage "
+      << turns.kept_for_coverage << "), " << trajectory.poses.size() << " poses, "
+      << formatNumber(trajectory.traversal_time_s) << " s ("
+      << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
   // Coverage of the poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so
   // that `coverage_tool evaluate` of that file reports the same figures.
