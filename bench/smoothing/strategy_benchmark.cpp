@@ -1,5 +1,7 @@
 // Smoothing strategies per map family: what each sees and what it costs, end to end as
-// `coverage_tool plan` runs (validate, clean, plan, trajectory, coverage evaluation).
+// `coverage_tool plan` runs (validate, clean, plan, trajectory, coverage evaluation, and
+// writing waypoints.csv, trajectory.csv, metrics.json and plot.png, into a temporary
+// directory that is removed afterwards).
 // Each map of HardMapGenerator's families (test/support/hard_map_generator.h) is planned
 // once with its parameters; each strategy turns the waypoints into a trajectory whose
 // coverage is measured as plan's metrics.json reports it:
@@ -13,7 +15,7 @@
 // Table 1, per family, batch and strategy: the median and worst share of the reachable area
 // seen, the maps under 99.9 %, the largest drop below the unsmoothed trajectory's share
 // (points), the median ratio of traversal time to the unsmoothed trajectory's, and the
-// summed end-to-end wall time (planning + trajectory + coverage) with its ratio to the
+// summed end-to-end wall time (planning + trajectory + coverage + files) with its ratio to the
 // unsmoothed runs' and the maps over 1.3 times the unsmoothed run plus 0.5 s.
 // Table 2, the unsmoothed plan per family and batch: the median time cost and traversal time.
 // Table 3, turns smoothed per strategy on lake_30x30 and on LakeMapGenerator's lakes
@@ -34,18 +36,18 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
-#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/lake_map_generator.h"
-#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -161,11 +163,20 @@ std::string strategyName(Strategy strategy) {
   }
 }
 
+/// A directory removed with everything in it when this goes out of scope.
+struct ScratchDirectory {
+  std::string path;
+  ~ScratchDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
 /// One strategy's figures on one map.
 struct Run {
   double reachable_percent = 0.0;
   double traversal_time_s = 0.0;
-  double wall_s = 0.0;  ///< planning + trajectory + coverage
+  double wall_s = 0.0;  ///< planning + trajectory + coverage + writing the files
   int turns_smoothed = 0;
   int turns_total = 0;
 };
@@ -176,7 +187,7 @@ struct MapRuns {
   double time_cost_s = 0.0;  ///< the plan's
 };
 
-MapRuns runMap(const Mission& mission) {
+MapRuns runMap(const Mission& mission, const std::string& out_dir) {
   MapRuns result;
   const auto planning_started = Clock::now();
   const PlannedMission planned = planMission(mission);
@@ -193,22 +204,23 @@ MapRuns runMap(const Mission& mission) {
       result.runs[s] = result.runs[same];
       continue;
     }
+    PlanOutputRequest request;
+    request.parameters = &parameters;
+    request.free_area = &planned.free_area;
+    request.plan = &planned.plan;
+    request.planning_time_s = planning_s;
+    request.start = mission.start;
+    request.goal = mission.goal;
+    request.title = std::string("strategy_benchmark: ") + strategyName(Strategy(s));
+    std::ostringstream progress;
     const auto started = Clock::now();
-    const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(parameters).generate(planned.plan.waypoints, planned.free_area);
-    std::vector<Pose2> poses;
-    poses.reserve(trajectory.poses.size());
-    for (const TrajectoryPose& pose : trajectory.poses) {
-      poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
-    }
-    const TrajectoryCoverage coverage =
-        measureTrajectoryCoverage(planned.free_area, planned.plan.offset_parts, parameters, poses);
+    const PlanOutputs outputs = writePlanOutputs(request, out_dir, progress);
     Run& run = result.runs[s];
-    run.reachable_percent = coverage.report.reachable_coverage_percent;
-    run.traversal_time_s = trajectory.traversal_time_s;
     run.wall_s = planning_s + std::chrono::duration<double>(Clock::now() - started).count();
-    run.turns_smoothed = trajectory.statistics.turns_smoothed;
-    run.turns_total = trajectory.statistics.turns_total;
+    run.reachable_percent = outputs.coverage.reachable_coverage_percent;
+    run.traversal_time_s = outputs.traversal_time_s;
+    run.turns_smoothed = outputs.turns.turns_smoothed;
+    run.turns_total = outputs.turns.turns_total;
   }
   return result;
 }
@@ -278,6 +290,15 @@ void printLakeRows(const std::string& label, const std::vector<MapRuns>& maps) {
 }
 
 int run(const Options& options) {
+  // Each run writes its files as `coverage_tool plan` does, into one scratch directory.
+  std::string scratch =
+      (std::filesystem::temp_directory_path() / "strategy_benchmark.XXXXXX").string();
+  if (mkdtemp(scratch.data()) == nullptr) {
+    std::fprintf(stderr, "strategy_benchmark: cannot create a directory in %s\n",
+                 std::filesystem::temp_directory_path().c_str());
+    return 2;
+  }
+  const ScratchDirectory out_dir{scratch};
   // Table 1 and the figures of table 2, family by family.
   struct BaselineRow {
     std::string label;
@@ -314,7 +335,7 @@ int run(const Options& options) {
       std::vector<MapRuns> maps;
       for (int i = 0; i < batch; ++i, ++seed) {
         try {
-          maps.push_back(runMap(generator.generate(seed).mission));
+          maps.push_back(runMap(generator.generate(seed).mission, out_dir.path));
           if (options.per_map) printMap(name, seed, maps.back());
         } catch (const std::exception& error) {
           std::fprintf(stderr, "FAIL %s seed %llu: %s\n", name.c_str(),
@@ -351,11 +372,11 @@ int run(const Options& options) {
       "worst |\n|---|---|---:|---:|---:|---:|\n");
   const Mission lake =
       MissionFileReader().read(std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml");
-  printLakeRows("lake_30x30", {runMap(lake)});
+  printLakeRows("lake_30x30", {runMap(lake, out_dir.path)});
   if (options.lakes > 0) {
     std::vector<MapRuns> lakes;
     for (int seed = 1; seed <= options.lakes; ++seed) {
-      lakes.push_back(runMap(testing::LakeMapGenerator().generate(seed)));
+      lakes.push_back(runMap(testing::LakeMapGenerator().generate(seed), out_dir.path));
     }
     printLakeRows("lakes 1-" + std::to_string(options.lakes), lakes);
   }

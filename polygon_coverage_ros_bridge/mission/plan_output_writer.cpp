@@ -128,6 +128,9 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   }
   CoveragePlot().writePng(plot, plot_path);
   outputs.files = {waypoints_path, trajectory_path, metrics_path, plot_path};
+  outputs.coverage = coverage.report;
+  outputs.turns = turns;
+  outputs.traversal_time_s = trajectory.traversal_time_s;
   return outputs;
 }
 

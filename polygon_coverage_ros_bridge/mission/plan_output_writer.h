@@ -8,6 +8,8 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
+#include "trajectory_generation_tools/smoothing/path_smoother.h"
 
 namespace kinematic_coverage::core {
 
@@ -30,6 +32,11 @@ struct PlanOutputRequest {
 struct PlanOutputs {
   std::vector<std::string> files;     ///< the written paths
   std::vector<std::string> warnings;  ///< e.g. reachable area left unseen (no "warning: ")
+  /// The figures of metrics.json that benchmarks compare: the trajectory's coverage (the
+  /// new trajectory's alone when replanning), its turns and its traversal time.
+  CoverageReport coverage;
+  SmoothingStatistics turns;
+  double traversal_time_s = 0.0;
 };
 
 /// Smooths, samples and times the plan's trajectory (TrajectoryGenerator), measures its
