@@ -221,10 +221,11 @@ void GlobalSmoothingProgramme::addCandidates(std::size_t i, const std::vector<do
       std::optional<CornerSmoothing> curve =
           ReverseCurveSmoothing::compute(before, a, b, c, radius);
       consider(std::move(curve), radius, i - 1, {before, a, b, c});
-      for (const auto& [run_from, run_to] : kBulbRuns) {
-        if (!options.bulb_turns) break;
-        consider(BulbTurnSmoothing::compute(before, a, b, c, radius, run_from, run_to), radius,
-                 i - 1, {before, a, b, c});
+      if (options.bulb_turns) {
+        for (const auto& [run_from, run_to] : kBulbRuns) {
+          consider(BulbTurnSmoothing::compute(before, a, b, c, radius, run_from, run_to), radius,
+                   i - 1, {before, a, b, c});
+        }
       }
     }
   }
