@@ -292,7 +292,8 @@ void printLakeRows(const std::string& label, const std::vector<MapRuns>& maps) {
 int run(const Options& options) {
   // Each run writes its files as `coverage_tool plan` does, into one scratch directory.
   std::string scratch =
-      (std::filesystem::temp_directory_path() / "strategy_benchmark.XXXXXX").string();
+      (std::filesystem::temp_directory_path() / ("strategy_benchmark." + std::string(6, 'X')))
+          .string();  // mkdtemp's template
   if (mkdtemp(scratch.data()) == nullptr) {
     std::fprintf(stderr, "strategy_benchmark: cannot create a directory in %s\n",
                  std::filesystem::temp_directory_path().c_str());
