@@ -53,8 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       input.ConsumeFloatingPointInRange(0.0, kMaxFootprintSide),
       input.ConsumeFloatingPointInRange(0.0, 0.9));
   if (input.ConsumeBool()) {
-    options.safe_sensor = sensor;
-    options.wall_distance = input.ConsumeFloatingPointInRange(0.0, kMaxWallDistance);
+    options.makeCoverageSafe(sensor, input.ConsumeFloatingPointInRange(0.0, kMaxWallDistance));
   } else {
     options.preserved_sensor = sensor;
   }

@@ -63,7 +63,7 @@ std::vector<Strategy> strategies() {
       {"coverage_safe",
        [](const PolygonWithHoles& area, double r, const std::vector<Point2>& points) {
          GlobalSmoothingOptions options = globalOptions(r, 1.0);
-         options.safe_sensor = FrustumSensor(4.0, 3.0, 0.0);
+         options.makeCoverageSafe(FrustumSensor(4.0, 3.0, 0.0), 0.0);
          return GlobalPathSmoother(area, options).smooth(points);
        },
        1.0, 60, 0.01},

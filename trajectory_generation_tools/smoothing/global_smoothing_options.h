@@ -50,11 +50,17 @@ struct GlobalSmoothingOptions {
       options.preserved_sensor = FrustumSensor::fromParameters(parameters);
     }
     if (parameters.smoothing_strategy == "coverage_safe") {
-      options.safe_sensor = FrustumSensor::fromParameters(parameters);
-      options.wall_distance = parameters.wall_distance;
-      options.bulb_turns = true;
+      options.makeCoverageSafe(FrustumSensor::fromParameters(parameters), parameters.wall_distance);
     }
     return options;
+  }
+
+  /// Coverage-safe smoothing (`smoothing_strategy: coverage_safe`) for `sensor` and the
+  /// planner's `wall_distance`: the safe sensor and its candidates, bulb turns included.
+  void makeCoverageSafe(const FrustumSensor& sensor, double wall_distance_m) {
+    safe_sensor = sensor;
+    wall_distance = wall_distance_m;
+    bulb_turns = true;
   }
 };
 
