@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "trajectory_generation_tools/smoothing/corner_geometry.h"
+
 namespace kinematic_coverage::core {
 namespace {
 
@@ -13,18 +15,6 @@ constexpr double kTurnTolerance = 1e-6;
 /// Arcs onto and off the middle leg's line sweeping at most this much (rad): a turn that
 /// loops further is slower than the sharp corners it replaces.
 constexpr double kMaxMiddleSweep = 1.5 * M_PI;
-
-Point2 leftNormal(const Point2& d) { return {-d.y(), d.x()}; }
-
-double polarAngle(const Point2& v) { return std::atan2(v.y(), v.x()); }
-
-/// The angle swept turning `side` (+1 counter-clockwise) from polar angle `from` to `to`,
-/// in [0, 2 pi).
-double sweepBetween(double from, double to, double side) {
-  double sweep = std::fmod(side * (to - from), 2.0 * M_PI);
-  if (sweep < 0.0) sweep += 2.0 * M_PI;
-  return sweep;
-}
 
 /// Signed turn (rad) from direction `from` to direction `to`.
 double turnBetween(const Point2& from, const Point2& to) {

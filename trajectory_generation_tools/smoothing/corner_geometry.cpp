@@ -63,4 +63,14 @@ Point2 CornerGeometry::mirrored(const Point2& p) const {
   return b_ + 2.0 * rel.dot(inner_bisector_) * inner_bisector_ - rel;
 }
 
+Point2 leftNormal(const Point2& d) { return {-d.y(), d.x()}; }
+
+double polarAngle(const Point2& v) { return std::atan2(v.y(), v.x()); }
+
+double sweepBetween(double from, double to, double side) {
+  double sweep = std::fmod(side * (to - from), 2.0 * M_PI);
+  if (sweep < 0.0) sweep += 2.0 * M_PI;
+  return sweep;
+}
+
 }  // namespace kinematic_coverage::core

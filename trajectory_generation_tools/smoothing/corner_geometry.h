@@ -73,4 +73,12 @@ class CornerGeometry {
   double scale_ = 1.0;
 };
 
+/// `d` turned a quarter to the left (counter-clockwise), its length kept.
+Point2 leftNormal(const Point2& d);
+/// The polar angle of `v` about the origin, in (-pi, pi].
+double polarAngle(const Point2& v);
+/// The angle swept turning `side` (+1 counter-clockwise, -1 clockwise) from polar angle
+/// `from` to polar angle `to`, in [0, 2 pi): how far an arc of that side runs between them.
+double sweepBetween(double from, double to, double side);
+
 }  // namespace kinematic_coverage::core

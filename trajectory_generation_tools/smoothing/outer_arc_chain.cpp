@@ -8,8 +8,6 @@ namespace {
 /// A first-arc sweep within this much (rad) below zero is rounding and snaps to zero.
 constexpr double kSweepSnap = 1e-12;
 
-double polarAngle(const Point2& v) { return std::atan2(v.y(), v.x()); }
-
 }  // namespace
 
 std::optional<CornerSmoothing> OuterArcChain::build(const CornerGeometry& g, const Point2& o1,

@@ -1,8 +1,8 @@
 #include "trajectory_generation_tools/smoothing/path_coverage_check.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <utility>
 
@@ -40,20 +40,12 @@ std::vector<Pose2> sweptPoses(const std::vector<PathPrimitive>& primitives, doub
   return poses;
 }
 
-/// An axis-aligned box, empty until extended.
-struct Box {
-  Point2 low = Point2::Constant(std::numeric_limits<double>::infinity());
-  Point2 high = Point2::Constant(-std::numeric_limits<double>::infinity());
+using Box = Eigen::AlignedBox2d;
 
-  void extend(const Point2& p) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  Box grown(double margin) const { return {low.array() - margin, high.array() + margin}; }
-  bool overlaps(const Box& other) const {
-    return (low.array() <= other.high.array()).all() && (other.low.array() <= high.array()).all();
-  }
-};
+/// `box` grown by `margin` on every side.
+Box grown(const Box& box, double margin) {
+  return Box(Point2(box.min().array() - margin), Point2(box.max().array() + margin));
+}
 
 /// A box holding the path of `primitive` (an arc's whole circle).
 Box extentOf(const PathPrimitive& primitive) {
@@ -61,8 +53,8 @@ Box extentOf(const PathPrimitive& primitive) {
   box.extend(primitive.start());
   box.extend(primitive.end());
   if (primitive.kind() == PrimitiveKind::kArc) {
-    box.extend(primitive.centre().array() - primitive.radius());
-    box.extend(primitive.centre().array() + primitive.radius());
+    box.extend(Point2(primitive.centre().array() - primitive.radius()));
+    box.extend(Point2(primitive.centre().array() + primitive.radius()));
   }
   return box;
 }
@@ -149,11 +141,11 @@ std::vector<std::size_t> PathCoverageCheck::lostCells(
   for (const ReplacedStretch& stretch : stretches) {
     Box box;
     for (const Point2& p : stretch) box.extend(p);
-    boxes.push_back(box.grown(near));
+    boxes.push_back(grown(box, near));
   }
   std::vector<Box> primitive_boxes;
   for (const PathPrimitive& primitive : primitives) {
-    primitive_boxes.push_back(extentOf(primitive).grown(near));
+    primitive_boxes.push_back(grown(extentOf(primitive), near));
   }
 
   // Stretches whose neighbourhood is unchanged keep their count; the others are measured.
@@ -163,7 +155,7 @@ std::vector<std::size_t> PathCoverageCheck::lostCells(
   for (std::size_t s = 0; s < stretches.size(); ++s) {
     std::vector<std::size_t> near_primitives;
     for (std::size_t k = 0; k < primitives.size(); ++k) {
-      if (primitive_boxes[k].overlaps(boxes[s])) {
+      if (primitive_boxes[k].intersects(boxes[s])) {
         nearby[s].push_back(primitives[k]);
         near_primitives.push_back(k);
       }
@@ -200,13 +192,13 @@ std::vector<std::size_t> PathCoverageCheck::lostCells(
   for (const std::size_t s : unmeasured) {
     const Box& box = boxes[s];
     const int first_column =
-        std::max(0, static_cast<int>(std::floor((box.low.x() - origin.x()) / cell)));
+        std::max(0, static_cast<int>(std::floor((box.min().x() - origin.x()) / cell)));
     const int last_column = std::min(
-        raster_->columns() - 1, static_cast<int>(std::floor((box.high.x() - origin.x()) / cell)));
+        raster_->columns() - 1, static_cast<int>(std::floor((box.max().x() - origin.x()) / cell)));
     const int first_row =
-        std::max(0, static_cast<int>(std::floor((box.low.y() - origin.y()) / cell)));
-    const int last_row = std::min(raster_->rows() - 1,
-                                  static_cast<int>(std::floor((box.high.y() - origin.y()) / cell)));
+        std::max(0, static_cast<int>(std::floor((box.min().y() - origin.y()) / cell)));
+    const int last_row = std::min(
+        raster_->rows() - 1, static_cast<int>(std::floor((box.max().y() - origin.y()) / cell)));
     const ReplacedStretch& stretch = stretches[s];
     for (int row = first_row; row <= last_row; ++row) {
       for (int column = first_column; column <= last_column; ++column) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "trajectory_generation_tools/smoothing/corner_geometry.h"
+
 namespace kinematic_coverage::core {
 namespace {
 
@@ -13,19 +15,6 @@ constexpr int kEntrySamples = 128;
 constexpr int kRefinementSteps = 40;
 /// Arcs sweeping less than this (rad) make no curve (the corner would be straight).
 constexpr double kMinSweep = 1e-9;
-
-Point2 leftNormal(const Point2& d) { return {-d.y(), d.x()}; }
-
-double polarAngle(const Point2& v) { return std::atan2(v.y(), v.x()); }
-
-/// The angle swept turning `side` (+1 counter-clockwise) from polar angle `from` to `to`,
-/// in [0, 2 pi).
-double sweepBetween(double from, double to, double side) {
-  double sweep = side * (to - from);
-  sweep = std::fmod(sweep, 2.0 * M_PI);
-  if (sweep < 0.0) sweep += 2.0 * M_PI;
-  return sweep;
-}
 
 /// One member of the family of reverse curves: its arcs and where it touches the legs.
 struct Curve {
