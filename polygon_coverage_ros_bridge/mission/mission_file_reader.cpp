@@ -42,6 +42,7 @@ const std::vector<ParameterField>& parameterFields() {
       {"lateral_footprint", &P::lateral_footprint},
       {"sensor_distance", &P::sensor_distance},
       {"lateral_overlap", &P::lateral_overlap},
+      {"coverage_repair", &P::coverage_repair},
       {"smoothing", &P::smoothing},
       {"turning_radius", &P::turning_radius},
       {"smoothing_strategy", &P::smoothing_strategy},

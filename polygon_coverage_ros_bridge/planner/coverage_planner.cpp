@@ -14,6 +14,7 @@
 #include "polygon_coverage_ros_bridge/geometry/region_intersection.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
+#include "polygon_coverage_ros_bridge/repair/unseen_area_repair.h"
 #include "polygon_coverage_ros_bridge/route/jog_removal.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
@@ -518,12 +519,45 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
                                  0.5 * (sensor.width() - sensor.sweepDistance()));
     std::vector<bool> kept;
     const std::vector<Point2> without_jogs = jog_removal.apply(path, keep, &kept);
-    const std::vector<Point2> waypoints =
-        simplifiedPath(without_jogs, kept,
-                       std::max(kDuplicateWaypointTolerance, kRelativeDuplicateTolerance * scale));
-    plan.first_inside = (waypoints.size() > 1 && (start - start_inside).norm() > tolerance) ? 1 : 0;
-    plan.last_inside = waypoints.size() - 1;
-    if (waypoints.size() > 1 && (goal - goal_inside).norm() > tolerance) plan.last_inside -= 1;
+    const double duplicate_tolerance =
+        std::max(kDuplicateWaypointTolerance, kRelativeDuplicateTolerance * scale);
+    std::vector<Point2> waypoints = simplifiedPath(without_jogs, kept, duplicate_tolerance);
+    const auto findInside = [&] {
+      plan.first_inside =
+          (waypoints.size() > 1 && (start - start_inside).norm() > tolerance) ? 1 : 0;
+      plan.last_inside = waypoints.size() - 1;
+      if (waypoints.size() > 1 && (goal - goal_inside).norm() > tolerance) plan.last_inside -= 1;
+    };
+    findInside();
+    PlannerParameters time_parameters = parameters_;
+    time_parameters.cost_function = "time";
+    const SegmentCost time_cost(time_parameters);
+    {
+      std::ostringstream summary;
+      summary << waypoints.size() << " waypoints, " << pathLength(waypoints) << " m, time cost "
+              << time_cost.pathCost(waypoints) << " s";
+      stage("path", t, summary.str());
+    }
+
+    // Patches where the sweeps leave reachable area unseen.
+    if (parameters_.coverage_repair && coverage_region == nullptr) {
+      t = Clock::now();
+      failing_stage = "repair";
+      RepairedPath repaired =
+          UnseenAreaRepair(free_area, planned_parts, sensor, graph, segment_cost)
+              .repair(waypoints, plan.first_inside, plan.last_inside);
+      std::vector<bool> protect(repaired.waypoints.size(), false);
+      protect.front() = protect.back() = true;
+      protect[plan.first_inside] = protect[repaired.last_inside] = true;
+      waypoints = simplifiedPath(repaired.waypoints, protect, duplicate_tolerance);
+      findInside();
+      std::ostringstream summary;
+      summary << repaired.patches << " patches, unseen reachable area " << repaired.unseen_before_m2
+              << " -> " << repaired.unseen_after_m2 << " m^2 of " << repaired.reachable_m2
+              << " m^2; " << waypoints.size() << " waypoints, " << pathLength(waypoints)
+              << " m, time cost " << time_cost.pathCost(waypoints) << " s";
+      stage("repair", t, summary.str());
+    }
     for (std::size_t i = 0; i < waypoints.size(); ++i) {
       const double yaw = i + 1 < waypoints.size() ? headingOf(waypoints[i], waypoints[i + 1])
                          : i > 0                  ? headingOf(waypoints[i - 1], waypoints[i])
@@ -531,15 +565,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
       plan.waypoints.push_back({waypoints[i].x(), waypoints[i].y(), yaw});
     }
     plan.path_length_m = pathLength(waypoints);
-    PlannerParameters time_parameters = parameters_;
-    time_parameters.cost_function = "time";
-    plan.time_cost_s = SegmentCost(time_parameters).pathCost(waypoints);
-    {
-      std::ostringstream summary;
-      summary << plan.waypoints.size() << " waypoints, " << plan.path_length_m << " m, time cost "
-              << plan.time_cost_s << " s";
-      stage("path", t, summary.str());
-    }
+    plan.time_cost_s = time_cost.pathCost(waypoints);
   } catch (const SizeLimitError&) {
     throw;
   } catch (const InvalidInputError& error) {

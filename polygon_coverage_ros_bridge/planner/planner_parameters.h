@@ -23,8 +23,10 @@ struct PlannerParameters {
   double lateral_footprint = 2.0;        ///< m, line sensor only
   double sensor_distance = 3.0;          ///< m between sensor and bottom
   double lateral_overlap = 0.4;          ///< fraction in [0, 1)
-  bool smoothing = true;                 ///< false: segments and rotations
-  double turning_radius = 1.0;           ///< m
+  /// Patches driven where the planned sweeps leave reachable area unseen (UnseenAreaRepair).
+  bool coverage_repair = false;
+  bool smoothing = true;        ///< false: segments and rotations
+  double turning_radius = 1.0;  ///< m
   /// "global": every corner's smoothing chosen jointly, minimising traversal time;
   /// "local": the thesis's Algorithm 1, corner by corner.
   std::string smoothing_strategy = "global";

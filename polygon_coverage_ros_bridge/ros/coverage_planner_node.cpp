@@ -22,8 +22,8 @@ namespace {
 const ros::Duration kTransformTimeout(0.5);
 
 /// The planner's stages in order, so that a failure names the stage it happened in.
-const std::vector<std::string> kStages = {"validate", "clean",       "offset", "decompose",
-                                          "sweeps",   "transitions", "solve",  "path"};
+const std::vector<std::string> kStages = {"validate",    "clean", "offset", "decompose", "sweeps",
+                                          "transitions", "solve", "path",   "repair"};
 
 std::string nextStage(const std::string& finished) {
   for (std::size_t i = 0; i + 1 < kStages.size(); ++i) {

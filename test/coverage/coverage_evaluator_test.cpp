@@ -68,6 +68,31 @@ TEST(CoverageEvaluator, NamesTheLargestUnseenRegionInTheMapsFrame) {
                    .has_value());
 }
 
+// Every unseen region, the largest first, with samples spread over it: a lane along the
+// middle of a 40 m x 10 m area (W 4 m, L 0) and one back along its right half 1 m lower
+// leave a band above (40 m x 3 m) and one below (x 0 to 20 m 3 m high, x 20 to 40 m 2 m).
+TEST(CoverageEvaluator, ListsEveryUnseenRegionLargestFirstWithSamplesInside) {
+  const PolygonWithHoles area{rectangle(0, 0, 40, 10), {}};
+  const FrustumSensor sensor(4.0, 0.0, 0.0);
+  const CoverageEvaluator evaluator(area, {area}, sensor, {0.05}, 0.2);
+  const SeenArea seen = evaluator.seeWaypointPath({{0, 5, 0}, {40, 5, 0}, {40, 4, 0}, {20, 4, 0}});
+  const std::vector<UnseenRegion> regions = evaluator.unseenRegions(seen, 50);
+  ASSERT_EQ(regions.size(), 2u);
+  EXPECT_NEAR(regions[0].area_m2, 120.0, 1.0);
+  EXPECT_NEAR(regions[1].area_m2, 100.0, 1.0);
+  EXPECT_GT(regions[0].centroid.y(), 5.0);
+  for (const UnseenRegion& region : regions) {
+    EXPECT_LE(region.samples.size(), 50u);
+    EXPECT_GE(region.samples.size(), 40u);
+    for (const Point2& p : region.samples) {
+      EXPECT_TRUE(p.y() > 7.0 - 0.05 || p.y() < 3.0 + 0.05) << p.transpose();
+      EXPECT_EQ(p.y() > 5.0, region.centroid.y() > 5.0);
+    }
+  }
+  EXPECT_TRUE(
+      evaluator.unseenRegions(evaluator.seeWaypointPath(lawnmower(0, 40, 0, 10, 2)), 10).empty());
+}
+
 TEST(CoverageEvaluator, LawnmowerWithOverlapCoversTheReachableArea) {
   // 30 m square, 1 m wall distance, the thesis's 40 % overlap, footprint 4 m x 1.6 m.
   const PolygonWithHoles free_area{rectangle(0, 0, 30, 30), {}};

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "test/support/test_shapes.h"
 
 namespace kinematic_coverage::core {
@@ -74,6 +75,42 @@ TEST(ReachableArea, SquareOffsetByOneMetreWithFrustumFootprint) {
         reachableArea(raster, raster.rasterize(free_area), raster.rasterize(offset_area), 1.6);
     const double expected = 18.0 * 18.0 + 4.0 * 18.0 * 0.8 + M_PI * 0.8 * 0.8;
     EXPECT_NEAR(raster.area(reachable), expected, 1e-3 * expected) << "angle " << angle;
+  }
+}
+
+// Measured against the polygons, every cell's decision is the exact one at its centre:
+// reachable when the centre lies in the free area and within L/2 of the offset area (a
+// turned square with a square hole), on coarse and fine cells and at two angles.
+TEST(ReachableArea, FromPolygonsEveryCellIsDecidedAtItsCentre) {
+  const double half_length = 0.8;
+  for (const double angle : {0.0, 0.37}) {
+    for (const double cell : {0.05, 0.13}) {
+      const PolygonWithHoles free_area{turnedSquare({3.0, -2.0}, 20.0, angle),
+                                       {turnedSquare({3.0, -2.0}, 4.0, angle)}};
+      PolygonWithHoles offset_area{turnedSquare({3.0, -2.0}, 18.0, angle),
+                                   {turnedSquare({3.0, -2.0}, 6.0, angle)}};
+      std::reverse(offset_area.holes[0].begin(), offset_area.holes[0].end());
+      const CoverageRaster raster = CoverageRaster::covering(free_area, {cell, 1e-3, 4'000'000});
+      const CellMask free_mask = raster.rasterize(free_area);
+      const CellMask offset_mask = raster.rasterize(offset_area);
+      const CellMask exact =
+          reachableArea(raster, free_mask, offset_mask, {offset_area}, 2.0 * half_length);
+      std::size_t differing_from_grown = 0;
+      const CellMask grown = reachableArea(raster, free_mask, offset_mask, 2.0 * half_length);
+      for (std::size_t i = 0; i < exact.size(); ++i) {
+        const Point2 centre = raster.cellCentre(i);
+        const double distance =
+            contains(offset_area, centre) ? 0.0 : distanceToBoundary(centre, offset_area);
+        const bool expected = free_mask[i] != 0 && distance <= half_length;
+        if (std::abs(distance - half_length) > 1e-9) {
+          ASSERT_EQ(exact[i] != 0, expected)
+              << "angle " << angle << " cell " << cell << " at " << centre.transpose();
+        }
+        if (exact[i] != grown[i]) ++differing_from_grown;
+      }
+      // The grown rim is off by up to half a cell: a ragged line of cells along the rim.
+      EXPECT_GT(differing_from_grown, 0u);
+    }
   }
 }
 

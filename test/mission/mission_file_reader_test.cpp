@@ -79,6 +79,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"lateral_footprint", "4.5"},
       {"sensor_distance", "7"},
       {"lateral_overlap", "0.25"},
+      {"coverage_repair", "true"},
       {"smoothing", "false"},
       {"turning_radius", "3.5"},
       {"smoothing_strategy", "local"},
@@ -120,6 +121,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.lateral_footprint, 4.5);
   EXPECT_EQ(p.sensor_distance, 7.0);
   EXPECT_EQ(p.lateral_overlap, 0.25);
+  EXPECT_TRUE(p.coverage_repair);
   EXPECT_FALSE(p.smoothing);
   EXPECT_EQ(p.turning_radius, 3.5);
   EXPECT_EQ(p.smoothing_strategy, "local");

@@ -57,14 +57,16 @@ RasterResolution reportingResolution() {
 CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
                                      const std::vector<PolygonWithHoles>& offset_parts,
                                      const FrustumSensor& sensor,
-                                     const RasterResolution& resolution, double grid_angle)
+                                     const RasterResolution& resolution, double grid_angle,
+                                     ReachableRim rim)
     : sensor_(requireValid(sensor)),
       grid_angle_(grid_angle),
       raster_(CoverageRaster::covering(turned(free_area, -grid_angle), resolution)),
       free_area_(raster_.rasterize(turned(free_area, -grid_angle))),
       free_fractions_(raster_.areaFractions(turned(free_area, -grid_angle))),
       offset_free_area_(free_area_.size(), 0) {
-  for (const PolygonWithHoles& part : turned(offset_parts, -grid_angle)) {
+  const std::vector<PolygonWithHoles> raster_parts = turned(offset_parts, -grid_angle);
+  for (const PolygonWithHoles& part : raster_parts) {
     const CellMask mask = raster_.rasterize(part);
     for (std::size_t i = 0; i < mask.size(); ++i) offset_free_area_[i] |= mask[i];
   }
@@ -74,8 +76,12 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
             << " m raster";
     throw InvalidInputError(message.str());
   }
-  reachable_area_ = kinematic_coverage::core::reachableArea(raster_, free_area_, offset_free_area_,
-                                                            sensor_.length());
+  reachable_area_ =
+      rim == ReachableRim::kExact
+          ? kinematic_coverage::core::reachableArea(raster_, free_area_, offset_free_area_,
+                                                    raster_parts, sensor_.length())
+          : kinematic_coverage::core::reachableArea(raster_, free_area_, offset_free_area_,
+                                                    sensor_.length());
 }
 
 Point2 CoverageEvaluator::toRaster(const Point2& p) const {
@@ -119,29 +125,37 @@ void CoverageEvaluator::requireOwnRaster(const SeenArea& seen) const {
 }
 
 std::optional<UnseenRegion> CoverageEvaluator::largestUnseenRegion(const SeenArea& seen) const {
+  std::vector<UnseenRegion> regions = unseenRegions(seen, 0);
+  if (regions.empty()) return std::nullopt;
+  return std::move(regions.front());
+}
+
+std::vector<UnseenRegion> CoverageEvaluator::unseenRegions(const SeenArea& seen,
+                                                           std::size_t samples_per_region) const {
   requireOwnRaster(seen);
   const auto unseen = [&](std::size_t i) { return reachable_area_[i] != 0 && !seen.seen(i); };
   // Flood fill over the unseen reachable cells, 8-connected; each cell is visited once.
   std::vector<std::uint8_t> done(raster_.cellCount(), 0);
   std::vector<std::size_t> stack;
-  std::optional<UnseenRegion> largest;
+  std::vector<std::size_t> filled;
+  std::vector<UnseenRegion> regions;
   const int columns = raster_.columns();
   const int rows = raster_.rows();
   for (std::size_t first = 0; first < done.size(); ++first) {
     if (done[first] != 0 || !unseen(first)) continue;
-    std::size_t cells = 0;
     Point2 sum = Point2::Zero();
     Point2 low = Point2::Constant(std::numeric_limits<double>::infinity());
     Point2 high = -low;
     done[first] = 1;
     stack.assign(1, first);
+    filled.clear();
     while (!stack.empty()) {
       const std::size_t i = stack.back();
       stack.pop_back();
+      filled.push_back(i);
       const int row = static_cast<int>(i / static_cast<std::size_t>(columns));
       const int column = static_cast<int>(i % static_cast<std::size_t>(columns));
       const Point2 centre = fromRaster(raster_.cellCentre(i));
-      ++cells;
       sum += centre;
       low = low.cwiseMin(centre);
       high = high.cwiseMax(centre);
@@ -157,17 +171,26 @@ std::optional<UnseenRegion> CoverageEvaluator::largestUnseenRegion(const SeenAre
         }
       }
     }
-    const double area = static_cast<double>(cells) * raster_.cellArea();
-    if (largest && area <= largest->area_m2) continue;
     // The cells' centres grown by half a (turned) cell's diagonal: the cells themselves.
     const Point2 half = Point2::Constant(std::sqrt(0.5) * raster_.cellSize());
     low -= half;
     high += half;
-    largest = UnseenRegion{area,
-                           sum / static_cast<double>(cells),
-                           {low, {high.x(), low.y()}, high, {low.x(), high.y()}}};
+    UnseenRegion region{static_cast<double>(filled.size()) * raster_.cellArea(),
+                        sum / static_cast<double>(filled.size()),
+                        {low, {high.x(), low.y()}, high, {low.x(), high.y()}},
+                        {}};
+    if (samples_per_region > 0) {
+      const std::size_t stride = (filled.size() + samples_per_region - 1) / samples_per_region;
+      for (std::size_t k = 0; k < filled.size(); k += stride) {
+        region.samples.push_back(fromRaster(raster_.cellCentre(filled[k])));
+      }
+    }
+    regions.push_back(std::move(region));
   }
-  return largest;
+  std::stable_sort(
+      regions.begin(), regions.end(),
+      [](const UnseenRegion& a, const UnseenRegion& b) { return a.area_m2 > b.area_m2; });
+  return regions;
 }
 
 CoverageReport CoverageEvaluator::report(const SeenArea& seen) const {

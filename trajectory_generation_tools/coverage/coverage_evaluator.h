@@ -58,7 +58,16 @@ struct UnseenRegion {
   Point2 centroid = Point2::Zero();
   /// Its bounding box along the map's axes (4 corners, counter-clockwise), for plots.
   Ring outline;
+  /// Centres of its cells spread evenly over it (map frame), as many as asked of
+  /// CoverageEvaluator::unseenRegions: where a repair must look.
+  std::vector<Point2> samples;
 };
+
+/// How the evaluator draws the reachable area's rim: grown on the raster (reachableArea
+/// from masks, up to half a cell off either way: every documented figure so far), or
+/// measured against the offset free area's polygons (reachableArea from polygons, exact at
+/// the cells' centres: UnseenAreaRepair, which must not chase the grown rim's stray cells).
+enum class ReachableRim { kGrown, kExact };
 
 /// Evaluates what a sensor sees of a map: rasterizes the free area, the offset free area
 /// and the reachable area once, then measures trajectories or waypoint paths on them.
@@ -74,7 +83,8 @@ class CoverageEvaluator {
   /// raster(), the masks and the seen areas are then in the raster's frame.
   CoverageEvaluator(const PolygonWithHoles& free_area,
                     const std::vector<PolygonWithHoles>& offset_parts, const FrustumSensor& sensor,
-                    const RasterResolution& resolution = {}, double grid_angle = 0.0);
+                    const RasterResolution& resolution = {}, double grid_angle = 0.0,
+                    ReachableRim rim = ReachableRim::kGrown);
 
   const CoverageRaster& raster() const { return raster_; }
   const CellMask& freeArea() const { return free_area_; }
@@ -97,6 +107,12 @@ class CoverageEvaluator {
   /// The largest UnseenRegion of a seen area made on this evaluator's raster; none when
   /// the whole reachable area was seen.
   std::optional<UnseenRegion> largestUnseenRegion(const SeenArea& seen) const;
+
+  /// Every UnseenRegion of a seen area made on this evaluator's raster, the largest first,
+  /// each with up to `samples_per_region` of its cells' centres (every k-th cell of its
+  /// flood fill, so that they spread over it).
+  std::vector<UnseenRegion> unseenRegions(const SeenArea& seen,
+                                          std::size_t samples_per_region) const;
 
  private:
   /// Map frame to raster frame, and back.

@@ -5,8 +5,11 @@
 #include <cstdint>
 #include <limits>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -19,6 +22,87 @@ void requireSize(const CoverageRaster& raster, const CellMask& mask, const char*
     throw InvalidInputError(message.str());
   }
 }
+
+/// The edges of polygons in square buckets at least `reach` wide, for the question whether
+/// a point lies within `reach` of an edge: only the buckets around the point are searched.
+class EdgeBuckets {
+ public:
+  EdgeBuckets(const std::vector<PolygonWithHoles>& polygons, double reach) : reach_(reach) {
+    Point2 low = Point2::Constant(std::numeric_limits<double>::infinity());
+    Point2 high = -low;
+    const auto addRing = [&](const Ring& ring) {
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        edges_.emplace_back(ring[i], ring[(i + 1) % ring.size()]);
+        low = low.cwiseMin(ring[i]);
+        high = high.cwiseMax(ring[i]);
+      }
+    };
+    for (const PolygonWithHoles& polygon : polygons) {
+      addRing(polygon.hull);
+      for (const Ring& hole : polygon.holes) addRing(hole);
+    }
+    if (edges_.empty()) return;
+    origin_ = low;
+    const Point2 extent = high - low;
+    // Buckets no smaller than the reach, and no more of them than about four per edge.
+    size_ = std::max({reach, 1e-9, std::sqrt(extent.x() * extent.y() / (4.0 * edges_.size()))});
+    columns_ = static_cast<int>(extent.x() / size_) + 1;
+    rows_ = static_cast<int>(extent.y() / size_) + 1;
+    buckets_.resize(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_));
+    for (std::size_t e = 0; e < edges_.size(); ++e) {
+      const auto& [a, b] = edges_[e];
+      const int c0 = column(std::min(a.x(), b.x()));
+      const int c1 = column(std::max(a.x(), b.x()));
+      const int r0 = row(std::min(a.y(), b.y()));
+      const int r1 = row(std::max(a.y(), b.y()));
+      for (int r = r0; r <= r1; ++r) {
+        for (int c = c0; c <= c1; ++c) {
+          // Only the buckets the edge passes near (within half a bucket diagonal).
+          const Point2 centre = origin_ + size_ * Point2(c + 0.5, r + 0.5);
+          if (distanceToSegment(centre, a, b) > size_) continue;
+          buckets_[bucket(r, c)].push_back(static_cast<std::uint32_t>(e));
+        }
+      }
+    }
+  }
+
+  /// True when p lies within the reach of an edge.
+  bool near(const Point2& p) const {
+    if (edges_.empty()) return false;
+    const int c0 = column(p.x() - reach_);
+    const int c1 = column(p.x() + reach_);
+    const int r0 = row(p.y() - reach_);
+    const int r1 = row(p.y() + reach_);
+    for (int r = r0; r <= r1; ++r) {
+      for (int c = c0; c <= c1; ++c) {
+        for (std::uint32_t e : buckets_[bucket(r, c)]) {
+          if (distanceToSegment(p, edges_[e].first, edges_[e].second) <= reach_) return true;
+        }
+      }
+    }
+    return false;
+  }
+
+ private:
+  int column(double x) const {
+    return std::clamp(static_cast<int>(std::floor((x - origin_.x()) / size_)), 0, columns_ - 1);
+  }
+  int row(double y) const {
+    return std::clamp(static_cast<int>(std::floor((y - origin_.y()) / size_)), 0, rows_ - 1);
+  }
+  std::size_t bucket(int r, int c) const {
+    return static_cast<std::size_t>(r) * static_cast<std::size_t>(columns_) +
+           static_cast<std::size_t>(c);
+  }
+
+  double reach_;
+  std::vector<std::pair<Point2, Point2>> edges_;
+  Point2 origin_ = Point2::Zero();
+  double size_ = 1.0;
+  int columns_ = 1;
+  int rows_ = 1;
+  std::vector<std::vector<std::uint32_t>> buckets_;
+};
 
 /// Lower envelope of the parabolas (x - q)^2 + f(q) over the sample positions q
 /// (Felzenszwalb and Huttenlocher, "Distance Transforms of Sampled Functions", 2012).
@@ -174,6 +258,27 @@ CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,
   CellMask reachable = dilateMask(raster, offset_free_area, 0.5 * footprint_length);
   for (std::size_t i = 0; i < reachable.size(); ++i) {
     reachable[i] = (reachable[i] != 0 && free_area[i] != 0) ? 1 : 0;
+  }
+  return reachable;
+}
+
+CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,
+                       const CellMask& offset_free_area,
+                       const std::vector<PolygonWithHoles>& offset_parts, double footprint_length) {
+  CellMask reachable = reachableArea(raster, free_area, offset_free_area, footprint_length);
+  const double reach = 0.5 * footprint_length;
+  if (reach == 0.0) return reachable;
+  // Grown by a cell less, every cell's centre lies within the reach of a set cell's centre
+  // (inside the polygons); grown by a cell more, the cells left out lie farther than the
+  // reach plus three quarters of a cell from the polygons (every point of which lies within
+  // half a cell diagonal of a set cell's centre). Only the cells between are measured.
+  const double cell = raster.cellSize();
+  const CellMask surely = dilateMask(raster, offset_free_area, std::max(0.0, reach - cell));
+  const CellMask maybe = dilateMask(raster, offset_free_area, reach + cell);
+  const EdgeBuckets edges(offset_parts, reach);
+  for (std::size_t i = 0; i < reachable.size(); ++i) {
+    if (free_area[i] == 0 || maybe[i] == 0 || surely[i] != 0) continue;
+    reachable[i] = edges.near(raster.cellCentre(i)) ? 1 : 0;
   }
   return reachable;
 }

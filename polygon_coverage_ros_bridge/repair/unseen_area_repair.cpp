@@ -1,0 +1,305 @@
+#include "polygon_coverage_ros_bridge/repair/unseen_area_repair.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// Rounds of measuring and patching; each one sees what the patches of the one before
+/// left (the rim of a region around a corner that a straight patch cut).
+constexpr int kRepairRounds = 3;
+/// Cells per unseen region whose nearest boundary points place its patches.
+constexpr std::size_t kSamplesPerRegion = 400;
+/// Regions smaller than this share of a square footprint width are left: the rims that
+/// the raster's reachable area adds (its growth is up to half a cell generous) and
+/// slivers no drivable patch would see more of.
+constexpr double kMinRegionShare = 1e-3;
+/// A region's cells deeper than this share of the footprint width inside the offset free
+/// area are seen from a patch through them; shallower ones from the boundary beside them.
+constexpr double kBoundaryReachShare = 0.25;
+/// Boundary points of one region farther apart along the boundary than this share of the
+/// footprint width get patches of their own.
+constexpr double kPatchSplitShare = 1.0;
+/// Legs of the path, nearest to a patch's ends, where its insertion is priced.
+constexpr std::size_t kCandidateLegs = 12;
+
+std::vector<Pose2> posesOf(const std::vector<Point2>& points) {
+  std::vector<Pose2> poses;
+  poses.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double yaw = i + 1 < points.size() ? headingOf(points[i], points[i + 1])
+                       : i > 0               ? headingOf(points[i - 1], points[i])
+                                             : 0.0;
+    poses.push_back({points[i].x(), points[i].y(), yaw});
+  }
+  return poses;
+}
+
+double unseenArea(const std::vector<UnseenRegion>& regions) {
+  double sum = 0.0;
+  for (const UnseenRegion& region : regions) sum += region.area_m2;
+  return sum;
+}
+
+}  // namespace
+
+UnseenAreaRepair::UnseenAreaRepair(const PolygonWithHoles& free_area,
+                                   std::vector<PolygonWithHoles> planned_parts,
+                                   const FrustumSensor& sensor, const VisibilityGraph& graph,
+                                   const SegmentCost& segment_cost)
+    : free_area_(free_area),
+      planned_parts_(std::move(planned_parts)),
+      sensor_(sensor),
+      graph_(graph),
+      segment_cost_(segment_cost) {
+  for (const PolygonWithHoles& part : planned_parts_) {
+    rings_.push_back(part.hull);
+    for (const Ring& hole : part.holes) rings_.push_back(hole);
+  }
+  for (const Ring& ring : rings_) {
+    std::vector<double> lengths = {0.0};
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      lengths.push_back(lengths.back() + (ring[(i + 1) % ring.size()] - ring[i]).norm());
+    }
+    arc_lengths_.push_back(std::move(lengths));
+  }
+}
+
+UnseenAreaRepair::RingPosition UnseenAreaRepair::nearestOnBoundary(const Point2& p,
+                                                                   double* distance) const {
+  RingPosition best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t r = 0; r < rings_.size(); ++r) {
+    const Ring& ring = rings_[r];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Point2& a = ring[i];
+      const Point2& b = ring[(i + 1) % ring.size()];
+      const Point2 q = closestPointOnSegment(p, a, b);
+      const double d = (p - q).norm();
+      if (d < best_distance) {
+        best_distance = d;
+        best = {r, arc_lengths_[r][i] + (q - a).norm()};
+      }
+    }
+  }
+  *distance = best_distance;
+  return best;
+}
+
+Point2 UnseenAreaRepair::pointAt(std::size_t ring, double arc_length) const {
+  const std::vector<double>& lengths = arc_lengths_[ring];
+  const Ring& vertices = rings_[ring];
+  const double perimeter = lengths.back();
+  double s = std::fmod(arc_length, perimeter);
+  if (s < 0.0) s += perimeter;
+  const std::size_t i = static_cast<std::size_t>(std::min<std::ptrdiff_t>(
+      std::upper_bound(lengths.begin(), lengths.end(), s) - lengths.begin() - 1,
+      static_cast<std::ptrdiff_t>(vertices.size()) - 1));
+  const Point2& a = vertices[i];
+  const Point2& b = vertices[(i + 1) % vertices.size()];
+  const double edge = lengths[i + 1] - lengths[i];
+  const double t = edge > 0.0 ? std::clamp((s - lengths[i]) / edge, 0.0, 1.0) : 0.0;
+  return a + t * (b - a);
+}
+
+std::vector<Point2> UnseenAreaRepair::boundaryWalk(std::size_t ring, double from, double to) const {
+  const std::vector<double>& lengths = arc_lengths_[ring];
+  const double perimeter = lengths.back();
+  if (to < from) to += perimeter;
+  std::vector<Point2> walk = {pointAt(ring, from)};
+  // The ring's vertices strictly between, over at most one round.
+  for (int round = 0; round < 2; ++round) {
+    for (std::size_t i = 0; i < rings_[ring].size(); ++i) {
+      const double s = lengths[i] + round * perimeter;
+      if (s > from && s < to) walk.push_back(rings_[ring][i]);
+    }
+  }
+  walk.push_back(pointAt(ring, to));
+  walk.erase(std::unique(walk.begin(), walk.end()), walk.end());
+  return walk;
+}
+
+std::vector<std::vector<Point2>> UnseenAreaRepair::patchesFor(
+    const std::vector<Point2>& samples) const {
+  const double boundary_reach = kBoundaryReachShare * sensor_.width();
+  std::vector<std::vector<double>> along_ring(rings_.size());
+  std::vector<Point2> deep;
+  for (const Point2& sample : samples) {
+    double distance = 0.0;
+    const RingPosition position = nearestOnBoundary(sample, &distance);
+    bool inside = false;
+    for (const PolygonWithHoles& part : planned_parts_) inside = inside || contains(part, sample);
+    if (inside && distance > boundary_reach) {
+      deep.push_back(sample);
+    } else {
+      along_ring[position.ring].push_back(position.arc_length);
+    }
+  }
+  std::vector<std::vector<Point2>> patches;
+  // Along each ring: the stretches that hold the region's boundary points, split where
+  // they lie far apart (the arc lengths are circular: the largest gap may wrap).
+  const double split = kPatchSplitShare * sensor_.width();
+  for (std::size_t r = 0; r < rings_.size(); ++r) {
+    std::vector<double>& s = along_ring[r];
+    if (s.empty()) continue;
+    std::sort(s.begin(), s.end());
+    const double perimeter = arc_lengths_[r].back();
+    std::size_t widest = s.size() - 1;  // the gap after s[widest], wrapping at the end
+    double widest_gap = s.front() + perimeter - s.back();
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+      if (s[i + 1] - s[i] > widest_gap) {
+        widest_gap = s[i + 1] - s[i];
+        widest = i;
+      }
+    }
+    // Walk from the point after the widest gap round to the one before it.
+    std::size_t begin = (widest + 1) % s.size();
+    double from = s[begin];
+    double previous = from;
+    for (std::size_t k = 1; k <= s.size(); ++k) {
+      const std::size_t i = (begin + k) % s.size();
+      double gap = k == s.size() ? std::numeric_limits<double>::infinity() : s[i] - previous;
+      if (gap < 0.0) gap += perimeter;
+      if (gap > split) {
+        patches.push_back(boundaryWalk(r, from, previous));
+        from = s[i];
+      }
+      previous = s[i];
+    }
+  }
+  // Deeper inside: one patch along the cells' main axis, between its extreme cells.
+  if (!deep.empty()) {
+    Point2 centroid = Point2::Zero();
+    for (const Point2& p : deep) centroid += p;
+    centroid /= static_cast<double>(deep.size());
+    double xx = 0.0, xy = 0.0, yy = 0.0;
+    for (const Point2& p : deep) {
+      const Point2 d = p - centroid;
+      xx += d.x() * d.x();
+      xy += d.x() * d.y();
+      yy += d.y() * d.y();
+    }
+    const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);
+    const Point2 axis(std::cos(angle), std::sin(angle));
+    const auto by_axis = [&](const Point2& a, const Point2& b) {
+      return a.dot(axis) < b.dot(axis);
+    };
+    const Point2 low = *std::min_element(deep.begin(), deep.end(), by_axis);
+    const Point2 high = *std::max_element(deep.begin(), deep.end(), by_axis);
+    patches.push_back(graph_.shortestPath(low, high));
+  }
+  return patches;
+}
+
+bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, std::size_t first_inside,
+                              std::size_t* last_inside, std::vector<Point2>* waypoints) const {
+  std::vector<Point2>& path = *waypoints;
+  // The legs nearest to the patch's ends.
+  std::vector<std::pair<double, std::size_t>> legs;
+  for (std::size_t i = first_inside; i < *last_inside; ++i) {
+    const double near = std::min(distanceToSegment(patch.front(), path[i], path[i + 1]),
+                                 distanceToSegment(patch.back(), path[i], path[i + 1]));
+    legs.emplace_back(near, i);
+  }
+  if (legs.empty()) return false;
+  const std::size_t candidates = std::min(kCandidateLegs, legs.size());
+  std::partial_sort(legs.begin(), legs.begin() + static_cast<std::ptrdiff_t>(candidates),
+                    legs.end());
+  // A spur: from an anchor on the path out to the patch, along it and back, the path's
+  // own legs kept (they see what the sweeps rely on). The anchor is a waypoint, or the
+  // point of a leg nearest to the patch, which splits the leg.
+  const double patch_cost = segment_cost_.pathCost(patch);
+  double best_cost = std::numeric_limits<double>::infinity();
+  std::size_t best_leg = 0;
+  Point2 best_anchor = Point2::Zero();
+  bool best_reversed = false;
+  for (std::size_t k = 0; k < candidates; ++k) {
+    const std::size_t i = legs[k].second;
+    const double leg_cost = segment_cost_.of(path[i], path[i + 1]);
+    for (bool reversed : {false, true}) {
+      const Point2& in = reversed ? patch.back() : patch.front();
+      const Point2& out = reversed ? patch.front() : patch.back();
+      for (const Point2& anchor :
+           {path[i], path[i + 1], closestPointOnSegment(in, path[i], path[i + 1])}) {
+        const double split =
+            segment_cost_.of(path[i], anchor) + segment_cost_.of(anchor, path[i + 1]) - leg_cost;
+        const double detour =
+            split + graph_.cost(anchor, in) + patch_cost + graph_.cost(out, anchor);
+        if (detour < best_cost) {
+          best_cost = detour;
+          best_leg = i;
+          best_anchor = anchor;
+          best_reversed = reversed;
+        }
+      }
+    }
+  }
+  if (!std::isfinite(best_cost)) return false;
+  std::vector<Point2> stretch = patch;
+  if (best_reversed) std::reverse(stretch.begin(), stretch.end());
+  // The spur from the anchor back to it, without repeated points.
+  std::vector<Point2> spur = graph_.shortestPath(best_anchor, stretch.front());
+  spur.insert(spur.end(), stretch.begin() + 1, stretch.end());
+  const std::vector<Point2> back = graph_.shortestPath(stretch.back(), best_anchor);
+  spur.insert(spur.end(), back.begin() + 1, back.end());
+  spur.erase(std::unique(spur.begin(), spur.end()), spur.end());
+  if (spur.size() <= 1) return false;  // the patch is the anchor
+  // Inserted after the leg's first waypoint: the anchor (unless it is that waypoint), the
+  // spur, and the anchor again (unless it is the leg's second waypoint).
+  std::vector<Point2> inserted;
+  if (best_anchor != path[best_leg]) inserted.push_back(best_anchor);
+  inserted.insert(inserted.end(), spur.begin() + 1, spur.end());
+  if (best_anchor == path[best_leg + 1]) inserted.pop_back();
+  path.insert(path.begin() + static_cast<std::ptrdiff_t>(best_leg) + 1, inserted.begin(),
+              inserted.end());
+  *last_inside += inserted.size();
+  return true;
+}
+
+RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t first_inside,
+                                      std::size_t last_inside) const {
+  const CoverageEvaluator evaluator(free_area_, planned_parts_, sensor_, reportingResolution(),
+                                    kReportingGridAngle, ReachableRim::kExact);
+  const double cell_area = evaluator.raster().cellArea();
+  const double min_region = kMinRegionShare * sensor_.width() * sensor_.width();
+  RepairedPath result;
+  result.reachable_m2 =
+      static_cast<double>(CoverageRaster::countCells(evaluator.reachableArea())) * cell_area;
+  std::vector<UnseenRegion> regions =
+      evaluator.unseenRegions(evaluator.seeWaypointPath(posesOf(waypoints)), kSamplesPerRegion);
+  result.unseen_before_m2 = unseenArea(regions);
+  double unseen = result.unseen_before_m2;
+  for (int round = 0; round < kRepairRounds; ++round) {
+    std::vector<Point2> patched = waypoints;
+    std::size_t patched_last = last_inside;
+    std::size_t patches = 0;
+    for (const UnseenRegion& region : regions) {
+      if (region.area_m2 < min_region) break;  // the largest first
+      for (const std::vector<Point2>& patch : patchesFor(region.samples)) {
+        if (insert(patch, first_inside, &patched_last, &patched)) ++patches;
+      }
+    }
+    if (patches == 0) break;
+    std::vector<UnseenRegion> left =
+        evaluator.unseenRegions(evaluator.seeWaypointPath(posesOf(patched)), kSamplesPerRegion);
+    const double patched_unseen = unseenArea(left);
+    if (patched_unseen >= unseen - min_region) break;  // the patches saw nothing worth their cost
+    waypoints = std::move(patched);
+    last_inside = patched_last;
+    result.patches += patches;
+    regions = std::move(left);
+    unseen = patched_unseen;
+  }
+  result.waypoints = std::move(waypoints);
+  result.last_inside = last_inside;
+  result.unseen_after_m2 = unseen;
+  return result;
+}
+
+}  // namespace kinematic_coverage::core

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/route/segment_cost.h"
+#include "polygon_coverage_ros_bridge/route/visibility_graph.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+
+namespace kinematic_coverage::core {
+
+/// A waypoint path after UnseenAreaRepair, with what the repair measured.
+struct RepairedPath {
+  std::vector<Point2> waypoints;
+  /// The index of the last waypoint inside the offset free area (moved by the insertions).
+  std::size_t last_inside = 0;
+  /// Patches driven: stretches along the boundary or through an unseen region.
+  std::size_t patches = 0;
+  /// The reachable area, and the part of it that the path left unseen before and after.
+  double reachable_m2 = 0.0;
+  double unseen_before_m2 = 0.0;
+  double unseen_after_m2 = 0.0;
+};
+
+/// Search safety of the planner's waypoint path: sweeps planned cell by cell can leave
+/// reachable area unseen (a band along a side steeper than the lanes' flanks, the rim of a
+/// cell corner), and the object may lie there. The repair measures the path's footprints
+/// on the coverage report's raster, and for every unseen region of the reachable area
+/// drives a patch that sees it: along the offset free area's boundary beside it (where a
+/// band lies beyond the boundary, or within a quarter footprint width inside it), or
+/// through it (deeper inside); each patch is inserted into the leg of the path where the
+/// detour costs least. Rounds repeat while unseen regions remain and the last round saw more.
+class UnseenAreaRepair {
+ public:
+  /// `free_area` (cleaned) and `planned_parts` (the parts of the offset free area that the
+  /// path covers) define the reachable area; `graph` routes inside the area the path
+  /// runs in (it must outlive this object); `segment_cost` prices the detours as the
+  /// planner's generalized TSP does.
+  UnseenAreaRepair(const PolygonWithHoles& free_area, std::vector<PolygonWithHoles> planned_parts,
+                   const FrustumSensor& sensor, const VisibilityGraph& graph,
+                   const SegmentCost& segment_cost);
+
+  /// The path with its patches. Only legs between `first_inside` and `last_inside` (the
+  /// waypoints inside the offset free area) get patches; start and goal stay.
+  RepairedPath repair(std::vector<Point2> waypoints, std::size_t first_inside,
+                      std::size_t last_inside) const;
+
+ private:
+  /// A point of a boundary ring of the planned parts: the ring and the arc length to it.
+  struct RingPosition {
+    std::size_t ring = 0;
+    double arc_length = 0.0;
+  };
+
+  /// The nearest point of the planned parts' boundary to p, with its ring position.
+  RingPosition nearestOnBoundary(const Point2& p, double* distance) const;
+
+  /// The point of ring `ring` at `arc_length` from its first vertex.
+  Point2 pointAt(std::size_t ring, double arc_length) const;
+
+  /// The patches that see the region of which `samples` are cells.
+  std::vector<std::vector<Point2>> patchesFor(const std::vector<Point2>& samples) const;
+
+  /// The stretch of ring `ring` from `from` to `to` (arc lengths, forward, may wrap).
+  std::vector<Point2> boundaryWalk(std::size_t ring, double from, double to) const;
+
+  /// Inserts `patch` (either way round) where the detour costs least; false when no leg
+  /// can reach it.
+  bool insert(const std::vector<Point2>& patch, std::size_t first_inside, std::size_t* last_inside,
+              std::vector<Point2>* waypoints) const;
+
+  PolygonWithHoles free_area_;
+  std::vector<PolygonWithHoles> planned_parts_;
+  FrustumSensor sensor_;
+  const VisibilityGraph& graph_;
+  SegmentCost segment_cost_;
+  std::vector<Ring> rings_;                       ///< every hull and hole of the parts
+  std::vector<std::vector<double>> arc_lengths_;  ///< per ring, to each vertex and round
+};
+
+}  // namespace kinematic_coverage::core

@@ -1,0 +1,204 @@
+#include "polygon_coverage_ros_bridge/repair/unseen_area_repair.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "test/support/hard_map_generator.h"
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// Legs may leave the offset free area by this much (rounding).
+constexpr double kLegTolerance = 1e-6;
+
+std::vector<Pose2> posesOf(const std::vector<Point2>& points) {
+  std::vector<Pose2> poses;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double yaw = i + 1 < points.size() ? headingOf(points[i], points[i + 1])
+                       : i > 0               ? headingOf(points[i - 1], points[i])
+                                             : 0.0;
+    poses.push_back({points[i].x(), points[i].y(), yaw});
+  }
+  return poses;
+}
+
+/// Unseen reachable area (m^2) of a waypoint path, the rim measured exactly.
+double unseenArea(const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& parts,
+                  const FrustumSensor& sensor, const std::vector<Point2>& waypoints) {
+  const CoverageEvaluator evaluator(free_area, parts, sensor, reportingResolution(),
+                                    kReportingGridAngle, ReachableRim::kExact);
+  return evaluator.report(evaluator.seeWaypointPath(posesOf(waypoints))).unseen_reachable_area_m2;
+}
+
+/// True when `part` appears in `whole` in order (the repair keeps every waypoint).
+bool isSubsequence(const std::vector<Point2>& part, const std::vector<Point2>& whole) {
+  std::size_t k = 0;
+  for (const Point2& p : whole) {
+    if (k < part.size() && p == part[k]) ++k;
+  }
+  return k == part.size();
+}
+
+/// A 20 m x 10 m free area kept 1 m from its walls, a sensor 2 m wide and 1 m long.
+struct Room {
+  PolygonWithHoles free_area{{{0, 0}, {20, 0}, {20, 10}, {0, 10}}, {}};
+  PolygonWithHoles offset{{{1, 1}, {19, 1}, {19, 9}, {1, 9}}, {}};
+  FrustumSensor sensor{2.0, 1.0, 0.0};
+  PlannerParameters parameters;
+  SegmentCost cost{parameters};
+  VisibilityGraph graph{offset, cost};
+
+  RepairedPath repair(const std::vector<Point2>& waypoints) const {
+    return UnseenAreaRepair(free_area, {offset}, sensor, graph, cost)
+        .repair(waypoints, 0, waypoints.size() - 1);
+  }
+};
+
+/// Lanes along x from 1 to 19 at the given heights, joined at alternating ends.
+std::vector<Point2> lanesAt(const std::vector<double>& heights) {
+  std::vector<Point2> waypoints;
+  for (std::size_t k = 0; k < heights.size(); ++k) {
+    const bool forward = k % 2 == 0;
+    waypoints.push_back({forward ? 1.0 : 19.0, heights[k]});
+    waypoints.push_back({forward ? 19.0 : 1.0, heights[k]});
+  }
+  return waypoints;
+}
+
+void expectInside(const PolygonWithHoles& area, const std::vector<Point2>& waypoints) {
+  for (std::size_t i = 0; i + 1 < waypoints.size(); ++i) {
+    EXPECT_TRUE(segmentInside(area, waypoints[i], waypoints[i + 1], kLegTolerance))
+        << "leg " << i << " from " << waypoints[i].transpose() << " to "
+        << waypoints[i + 1].transpose();
+  }
+}
+
+// Lanes 2 m apart from y = 1.5 see y 0.5 to 8.5; the reachable area reaches y = 9.5 (L/2
+// beyond the offset area), so a band 1 m high along the top stays unseen. The repair drives
+// along the top of the offset area and sees it, keeping every waypoint of the path.
+TEST(UnseenAreaRepair, ABandAlongTheBoundaryIsSeenFromTheBoundary) {
+  const Room room;
+  const std::vector<Point2> lanes = lanesAt({1.5, 3.5, 5.5, 7.5});
+  const RepairedPath repaired = room.repair(lanes);
+  EXPECT_NEAR(repaired.unseen_before_m2, 19.0, 0.2);
+  EXPECT_LT(repaired.unseen_after_m2, 0.01);
+  EXPECT_GE(repaired.patches, 1u);
+  EXPECT_LT(unseenArea(room.free_area, {room.offset}, room.sensor, repaired.waypoints), 0.01);
+  EXPECT_TRUE(isSubsequence(lanes, repaired.waypoints));
+  EXPECT_EQ(repaired.waypoints.front(), lanes.front());
+  EXPECT_EQ(repaired.waypoints.back(), lanes.back());
+  EXPECT_EQ(repaired.last_inside, repaired.waypoints.size() - 1);
+  expectInside(room.offset, repaired.waypoints);
+  // The patch runs along the top of the offset area.
+  double along_top = 0.0;
+  for (std::size_t i = 0; i + 1 < repaired.waypoints.size(); ++i) {
+    const Point2& a = repaired.waypoints[i];
+    const Point2& b = repaired.waypoints[i + 1];
+    if (std::abs(a.y() - 9.0) < 1e-9 && std::abs(b.y() - 9.0) < 1e-9) along_top += (b - a).norm();
+  }
+  EXPECT_GT(along_top, 17.0);
+}
+
+// A gap between lanes deep inside the offset area (y 4.5 to 6.5, from x = 2 where the
+// join between the lanes sees it to x = 19.5: about 35 m^2) is seen from a patch through it.
+TEST(UnseenAreaRepair, AGapBetweenLanesIsSeenFromAPatchThroughIt) {
+  const Room room;
+  const std::vector<Point2> lanes = lanesAt({1.5, 3.5, 7.5, 8.5});
+  const RepairedPath repaired = room.repair(lanes);
+  EXPECT_NEAR(repaired.unseen_before_m2, 35.0, 0.5);
+  EXPECT_LT(repaired.unseen_after_m2, 0.01);
+  EXPECT_TRUE(isSubsequence(lanes, repaired.waypoints));
+  expectInside(room.offset, repaired.waypoints);
+}
+
+// A path that sees all of the reachable area is returned as it is.
+TEST(UnseenAreaRepair, APathThatSeesEverythingIsLeftAsItIs) {
+  const Room room;
+  const std::vector<Point2> lanes = lanesAt({1.5, 3.5, 5.5, 7.5, 8.5});
+  const RepairedPath repaired = room.repair(lanes);
+  EXPECT_EQ(repaired.waypoints, lanes);
+  EXPECT_EQ(repaired.patches, 0u);
+  EXPECT_EQ(repaired.unseen_before_m2, 0.0);
+  EXPECT_EQ(repaired.unseen_after_m2, 0.0);
+  // The 18 m x 8 m offset area grown by L/2 = 0.5 m, with rounded corners.
+  EXPECT_NEAR(repaired.reachable_m2, 18.0 * 8.0 + 26.0 + 0.25 * M_PI, 0.05);
+}
+
+// Legs outside [first_inside, last_inside] (joining a start and goal outside the offset
+// area) get no patch, and the waypoints beyond them stay where they are.
+TEST(UnseenAreaRepair, LegsToAStartAndGoalOutsideTheAreaGetNoPatch) {
+  const Room room;
+  std::vector<Point2> path = lanesAt({1.5, 3.5, 5.5, 7.5});
+  path.insert(path.begin(), Point2(0.5, 1.5));
+  path.push_back({0.5, 7.5});
+  const RepairedPath repaired =
+      UnseenAreaRepair(room.free_area, {room.offset}, room.sensor, room.graph, room.cost)
+          .repair(path, 1, path.size() - 2);
+  EXPECT_LT(repaired.unseen_after_m2, 0.01);
+  EXPECT_EQ(repaired.waypoints.front(), path.front());
+  EXPECT_EQ(repaired.waypoints[1], path[1]);
+  EXPECT_EQ(repaired.waypoints.back(), path.back());
+  EXPECT_EQ(repaired.last_inside, repaired.waypoints.size() - 2);
+  const std::vector<Point2> inside(repaired.waypoints.begin() + 1, repaired.waypoints.end() - 1);
+  expectInside(room.offset, inside);
+}
+
+// The planner with coverage_repair on the first maps of every hard-map family
+// (test/support/hard_map_generator.h; of the shorelines the two that plan in about a
+// second): every plan stays valid, sees at least what the unrepaired plan sees and at
+// least 99.9 % of the reachable area of its planned parts.
+TEST(UnseenAreaRepair, PlansOfTheHardMapsSeeTheirReachableArea) {
+  for (const testing::MapFamily family : testing::HardMapGenerator::families()) {
+    const testing::HardMapGenerator generator(family);
+    const bool shoreline = testing::HardMapGenerator::name(family) == "shoreline";
+    for (int seed : shoreline ? std::vector<int>{2, 3} : std::vector<int>{0, 1, 2, 3, 4}) {
+      const testing::HardMap map = generator.generate(static_cast<std::uint64_t>(seed));
+      const std::string name =
+          testing::HardMapGenerator::name(family) + " seed " + std::to_string(seed);
+      Mission mission = map.mission;
+      mission.parameters.coverage_repair = false;
+      const PlannedMission planned = planMission(mission);
+      mission.parameters.coverage_repair = true;
+      const PlannedMission repaired = planMission(mission);
+      const FrustumSensor sensor = FrustumSensor::fromParameters(mission.parameters);
+      std::vector<Point2> before;
+      std::vector<Point2> after;
+      for (const Pose2& pose : planned.plan.waypoints) before.push_back(pose.position());
+      for (const Pose2& pose : repaired.plan.waypoints) after.push_back(pose.position());
+      const CoverageEvaluator evaluator(repaired.free_area, repaired.plan.offset_parts, sensor,
+                                        reportingResolution(), kReportingGridAngle,
+                                        ReachableRim::kExact);
+      const CoverageReport report_before =
+          evaluator.report(evaluator.seeWaypointPath(posesOf(before)));
+      const CoverageReport report_after =
+          evaluator.report(evaluator.seeWaypointPath(posesOf(after)));
+      EXPECT_LE(report_after.unseen_reachable_area_m2, report_before.unseen_reachable_area_m2)
+          << name;
+      EXPECT_GE(report_after.reachable_coverage_percent, 99.9) << name;
+      EXPECT_EQ(after.front(), before.front()) << name;
+      EXPECT_EQ(after.back(), before.back()) << name;
+      for (std::size_t i = repaired.plan.first_inside; i < repaired.plan.last_inside; ++i) {
+        EXPECT_TRUE(segmentInside(repaired.plan.route_area, after[i], after[i + 1], 1e-6))
+            << name << " leg " << i;
+      }
+      EXPECT_GE(repaired.plan.time_cost_s, planned.plan.time_cost_s - 1e-9) << name;
+      const auto hasRepairStage = [](const CoveragePlan& plan) {
+        for (const PlanningStage& stage : plan.stages) {
+          if (stage.name == "repair") return true;
+        }
+        return false;
+      };
+      EXPECT_TRUE(hasRepairStage(repaired.plan)) << name;
+      EXPECT_FALSE(hasRepairStage(planned.plan)) << name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core
