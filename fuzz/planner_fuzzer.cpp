@@ -1,11 +1,11 @@
 // libFuzzer target: CoveragePlanner through the path `coverage_tool plan` takes
 // (ParameterValidator as the mission loader applies it, then planMission: validate, clean,
-// plan) on small fuzzed polygons with holes: at most kMaxHullVertices hull vertices and
-// kMaxHoles holes of at most kMaxHoleVertices vertices, coordinates within [-5, 35] m,
-// parameters in range or, now and then, deliberately out of range. Properties of every
-// plan: waypoints are finite and distinct, each yaw is its leg's heading, the path starts
-// at the start and ends at the goal, every leg between first_inside and last_inside lies in
-// the route area (the offset free area's parts joined through their gaps; the planner
+// plan, with or without coverage_repair) on small fuzzed polygons with holes: at most
+// kMaxHullVertices hull vertices and kMaxHoles holes of at most kMaxHoleVertices vertices,
+// coordinates within [-5, 35] m, parameters in range or, now and then, deliberately out of range.
+// Properties of every plan: waypoints are finite and distinct, each yaw is its leg's heading, the
+// path starts at the start and ends at the goal, every leg between first_inside and last_inside
+// lies in the route area (the offset free area's parts joined through their gaps; the planner
 // test's tolerance), and the inside range and path
 // length are consistent.
 
@@ -135,6 +135,9 @@ Mission mission(FuzzedDataProvider& input) {
                    coordinate(input, kBoxLow, kBoxHigh, snap));
   m.goal = Point2(coordinate(input, kBoxLow, kBoxHigh, snap),
                   coordinate(input, kBoxLow, kBoxHigh, snap));
+  // Read last, so that the committed corpus decodes as before (an input that ends earlier
+  // plans without the repair).
+  m.parameters.coverage_repair = input.ConsumeBool();
   return m;
 }
 
@@ -166,6 +169,7 @@ void printMission(const Mission& m, const char* path) {
   text += "\ndecomposition_type: " + p.decomposition_type;
   text += "\ncost_function: " + p.cost_function;
   text += "\nsensor_model: " + p.sensor_model;
+  text += std::string("\ncoverage_repair: ") + (p.coverage_repair ? "true" : "false");
   const std::pair<const char*, double> numbers[] = {{"wall_distance", p.wall_distance},
                                                     {"lateral_footprint", p.lateral_footprint},
                                                     {"sensor_distance", p.sensor_distance},

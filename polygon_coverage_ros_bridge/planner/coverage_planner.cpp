@@ -515,8 +515,8 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     append({goal}, true);
     // Jogs shorter than a turning radius would stay sharp turns in smoothing; a shift within
     // half the lateral overlap keeps what the neighbouring lanes rely on seen.
-    const JogRemoval jog_removal(graph, parameters_.turning_radius,
-                                 0.5 * (sensor.width() - sensor.sweepDistance()));
+    const double max_jog_shift = 0.5 * (sensor.width() - sensor.sweepDistance());
+    const JogRemoval jog_removal(graph, parameters_.turning_radius, max_jog_shift);
     std::vector<bool> kept;
     const std::vector<Point2> without_jogs = jog_removal.apply(path, keep, &kept);
     const double duplicate_tolerance =
@@ -543,19 +543,43 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     if (parameters_.coverage_repair && coverage_region == nullptr) {
       t = Clock::now();
       failing_stage = "repair";
-      RepairedPath repaired =
-          UnseenAreaRepair(free_area, planned_parts, sensor, graph, segment_cost)
-              .repair(waypoints, plan.first_inside, plan.last_inside);
+      const UnseenAreaRepair repair(free_area, planned_parts, sensor, graph, segment_cost);
+      // Jogs whose removal shifted a lane off what it had to see are put back first: near
+      // a wall that the lane's footprint reaches exactly, any shift inward leaves a band.
+      std::size_t jogs_restored = 0;
+      const std::vector<Point2> unseen = repair.unseenSamples(waypoints);
+      if (!unseen.empty()) {
+        const double reach = 0.5 * std::hypot(sensor.width(), sensor.length()) + max_jog_shift;
+        std::vector<bool> pinned(path.size(), false);
+        for (std::size_t i = 0; i < path.size(); ++i) {
+          for (const Point2& p : unseen) {
+            if ((p - path[i]).norm() <= reach) {
+              pinned[i] = true;
+              break;
+            }
+          }
+        }
+        std::vector<bool> pinned_kept;
+        const std::vector<Point2> with_jogs = simplifiedPath(
+            jog_removal.apply(path, keep, &pinned_kept, &pinned), pinned_kept, duplicate_tolerance);
+        if (repair.unseenArea(with_jogs) < repair.unseenArea(waypoints)) {
+          jogs_restored = with_jogs.size() - std::min(with_jogs.size(), waypoints.size());
+          waypoints = with_jogs;
+          findInside();
+        }
+      }
+      RepairedPath repaired = repair.repair(waypoints, plan.first_inside, plan.last_inside);
       std::vector<bool> protect(repaired.waypoints.size(), false);
       protect.front() = protect.back() = true;
       protect[plan.first_inside] = protect[repaired.last_inside] = true;
       waypoints = simplifiedPath(repaired.waypoints, protect, duplicate_tolerance);
       findInside();
       std::ostringstream summary;
-      summary << repaired.patches << " patches, unseen reachable area " << repaired.unseen_before_m2
-              << " -> " << repaired.unseen_after_m2 << " m^2 of " << repaired.reachable_m2
-              << " m^2; " << waypoints.size() << " waypoints, " << pathLength(waypoints)
-              << " m, time cost " << time_cost.pathCost(waypoints) << " s";
+      summary << jogs_restored << " jog waypoints restored, " << repaired.patches
+              << " patches, unseen reachable area " << repaired.unseen_before_m2 << " -> "
+              << repaired.unseen_after_m2 << " m^2 of " << repaired.reachable_m2 << " m^2; "
+              << waypoints.size() << " waypoints, " << pathLength(waypoints) << " m, time cost "
+              << time_cost.pathCost(waypoints) << " s";
       stage("repair", t, summary.str());
     }
     for (std::size_t i = 0; i < waypoints.size(); ++i) {

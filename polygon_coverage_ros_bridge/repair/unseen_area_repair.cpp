@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -28,6 +28,12 @@ constexpr double kBoundaryReachShare = 0.25;
 constexpr double kPatchSplitShare = 1.0;
 /// Legs of the path, nearest to a patch's ends, where its insertion is priced.
 constexpr std::size_t kCandidateLegs = 12;
+/// A leg's view is sampled at this many steps along its middle (clear of its ends by half
+/// a footprint diagonal, where the neighbouring legs' views meet it) and this many each
+/// side of it, out to this share of half the footprint width.
+constexpr int kLegSamplesAlong = 16;
+constexpr int kLegSamplesAcross = 3;
+constexpr double kLegSampleReach = 0.95;
 
 std::vector<Pose2> posesOf(const std::vector<Point2>& points) {
   std::vector<Pose2> poses;
@@ -41,7 +47,7 @@ std::vector<Pose2> posesOf(const std::vector<Point2>& points) {
   return poses;
 }
 
-double unseenArea(const std::vector<UnseenRegion>& regions) {
+double totalArea(const std::vector<UnseenRegion>& regions) {
   double sum = 0.0;
   for (const UnseenRegion& region : regions) sum += region.area_m2;
   return sum;
@@ -53,9 +59,10 @@ UnseenAreaRepair::UnseenAreaRepair(const PolygonWithHoles& free_area,
                                    std::vector<PolygonWithHoles> planned_parts,
                                    const FrustumSensor& sensor, const VisibilityGraph& graph,
                                    const SegmentCost& segment_cost)
-    : free_area_(free_area),
-      planned_parts_(std::move(planned_parts)),
+    : planned_parts_(std::move(planned_parts)),
       sensor_(sensor),
+      evaluator_(free_area, planned_parts_, sensor_, reportingResolution(), kReportingGridAngle,
+                 ReachableRim::kExact),
       graph_(graph),
       segment_cost_(segment_cost) {
   for (const PolygonWithHoles& part : planned_parts_) {
@@ -197,7 +204,26 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::patchesFor(
   return patches;
 }
 
-bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, std::size_t first_inside,
+bool UnseenAreaRepair::legNeeded(const SeenArea& seen, const Point2& a, const Point2& b) const {
+  const double end_reach = 0.5 * std::hypot(sensor_.width(), sensor_.length());
+  const double length = (b - a).norm();
+  if (length <= 2.0 * end_reach) return true;
+  const Point2 along = (b - a) / length;
+  const Point2 across(-along.y(), along.x());
+  const CellMask& reachable = evaluator_.reachableArea();
+  for (int k = 0; k <= kLegSamplesAlong; ++k) {
+    const double s = end_reach + (length - 2.0 * end_reach) * k / kLegSamplesAlong;
+    for (int j = -kLegSamplesAcross; j <= kLegSamplesAcross; ++j) {
+      const double u = kLegSampleReach * 0.5 * sensor_.width() * j / kLegSamplesAcross;
+      const std::optional<std::size_t> cell = evaluator_.cellAt(a + s * along + u * across);
+      if (cell && reachable[*cell] != 0 && seen.visits(*cell) < 2) return true;
+    }
+  }
+  return false;
+}
+
+bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement replacement,
+                              const SeenArea& view, std::size_t first_inside,
                               std::size_t* last_inside, std::vector<Point2>* waypoints) const {
   std::vector<Point2>& path = *waypoints;
   // The legs nearest to the patch's ends.
@@ -213,11 +239,13 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, std::size_t firs
                     legs.end());
   // A spur: from an anchor on the path out to the patch, along it and back, the path's
   // own legs kept (they see what the sweeps rely on). The anchor is a waypoint, or the
-  // point of a leg nearest to the patch, which splits the leg.
+  // point of a leg nearest to the patch, which splits the leg. A leg may instead be
+  // replaced by a detour through the patch: any leg, or only one whose middle shows nothing
+  // that no other step of the path saw in `view` (a transition over swept area).
   const double patch_cost = segment_cost_.pathCost(patch);
   double best_cost = std::numeric_limits<double>::infinity();
   std::size_t best_leg = 0;
-  Point2 best_anchor = Point2::Zero();
+  std::optional<Point2> best_anchor;  // none: the leg is replaced
   bool best_reversed = false;
   for (std::size_t k = 0; k < candidates; ++k) {
     const std::size_t i = legs[k].second;
@@ -225,37 +253,50 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, std::size_t firs
     for (bool reversed : {false, true}) {
       const Point2& in = reversed ? patch.back() : patch.front();
       const Point2& out = reversed ? patch.front() : patch.back();
-      for (const Point2& anchor :
-           {path[i], path[i + 1], closestPointOnSegment(in, path[i], path[i + 1])}) {
-        const double split =
-            segment_cost_.of(path[i], anchor) + segment_cost_.of(anchor, path[i + 1]) - leg_cost;
-        const double detour =
-            split + graph_.cost(anchor, in) + patch_cost + graph_.cost(out, anchor);
-        if (detour < best_cost) {
-          best_cost = detour;
+      const auto consider = [&](double cost, std::optional<Point2> anchor) {
+        if (cost < best_cost) {
+          best_cost = cost;
           best_leg = i;
           best_anchor = anchor;
           best_reversed = reversed;
         }
+      };
+      for (const Point2& anchor :
+           {path[i], path[i + 1], closestPointOnSegment(in, path[i], path[i + 1])}) {
+        const double split =
+            segment_cost_.of(path[i], anchor) + segment_cost_.of(anchor, path[i + 1]) - leg_cost;
+        consider(split + graph_.cost(anchor, in) + patch_cost + graph_.cost(out, anchor), anchor);
+      }
+      if (replacement == LegReplacement::kAnyLeg ||
+          (replacement == LegReplacement::kUnneededLeg && !legNeeded(view, path[i], path[i + 1]))) {
+        consider(graph_.cost(path[i], in) + patch_cost + graph_.cost(out, path[i + 1]) - leg_cost,
+                 std::nullopt);
       }
     }
   }
   if (!std::isfinite(best_cost)) return false;
   std::vector<Point2> stretch = patch;
   if (best_reversed) std::reverse(stretch.begin(), stretch.end());
-  // The spur from the anchor back to it, without repeated points.
-  std::vector<Point2> spur = graph_.shortestPath(best_anchor, stretch.front());
-  spur.insert(spur.end(), stretch.begin() + 1, stretch.end());
-  const std::vector<Point2> back = graph_.shortestPath(stretch.back(), best_anchor);
-  spur.insert(spur.end(), back.begin() + 1, back.end());
-  spur.erase(std::unique(spur.begin(), spur.end()), spur.end());
-  if (spur.size() <= 1) return false;  // the patch is the anchor
-  // Inserted after the leg's first waypoint: the anchor (unless it is that waypoint), the
-  // spur, and the anchor again (unless it is the leg's second waypoint).
+  // From where the detour leaves the path to where it rejoins it, without repeated points.
+  const Point2& leave = best_anchor ? *best_anchor : path[best_leg];
+  const Point2& rejoin = best_anchor ? *best_anchor : path[best_leg + 1];
+  std::vector<Point2> detour = graph_.shortestPath(leave, stretch.front());
+  detour.insert(detour.end(), stretch.begin() + 1, stretch.end());
+  const std::vector<Point2> back = graph_.shortestPath(stretch.back(), rejoin);
+  detour.insert(detour.end(), back.begin() + 1, back.end());
+  detour.erase(std::unique(detour.begin(), detour.end()), detour.end());
   std::vector<Point2> inserted;
-  if (best_anchor != path[best_leg]) inserted.push_back(best_anchor);
-  inserted.insert(inserted.end(), spur.begin() + 1, spur.end());
-  if (best_anchor == path[best_leg + 1]) inserted.pop_back();
+  if (best_anchor) {
+    if (detour.size() <= 1) return false;  // the patch is the anchor
+    // After the leg's first waypoint: the anchor (unless it is that waypoint), the spur,
+    // and the anchor again (unless it is the leg's second waypoint).
+    if (*best_anchor != path[best_leg]) inserted.push_back(*best_anchor);
+    inserted.insert(inserted.end(), detour.begin() + 1, detour.end());
+    if (*best_anchor == path[best_leg + 1]) inserted.pop_back();
+  } else {
+    if (detour.size() <= 2) return false;  // the patch lies on the leg's ends
+    inserted.assign(detour.begin() + 1, detour.end() - 1);
+  }
   path.insert(path.begin() + static_cast<std::ptrdiff_t>(best_leg) + 1, inserted.begin(),
               inserted.end());
   *last_inside += inserted.size();
@@ -264,42 +305,73 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, std::size_t firs
 
 RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t first_inside,
                                       std::size_t last_inside) const {
-  const CoverageEvaluator evaluator(free_area_, planned_parts_, sensor_, reportingResolution(),
-                                    kReportingGridAngle, ReachableRim::kExact);
-  const double cell_area = evaluator.raster().cellArea();
+  const double cell_area = evaluator_.raster().cellArea();
   const double min_region = kMinRegionShare * sensor_.width() * sensor_.width();
+  const CellMask& reachable = evaluator_.reachableArea();
   RepairedPath result;
-  result.reachable_m2 =
-      static_cast<double>(CoverageRaster::countCells(evaluator.reachableArea())) * cell_area;
-  std::vector<UnseenRegion> regions =
-      evaluator.unseenRegions(evaluator.seeWaypointPath(posesOf(waypoints)), kSamplesPerRegion);
-  result.unseen_before_m2 = unseenArea(regions);
+  result.reachable_m2 = static_cast<double>(CoverageRaster::countCells(reachable)) * cell_area;
+  SeenArea seen = evaluator_.seeWaypointPath(posesOf(waypoints));
+  std::vector<UnseenRegion> regions = evaluator_.unseenRegions(seen, kSamplesPerRegion);
+  result.unseen_before_m2 = totalArea(regions);
   double unseen = result.unseen_before_m2;
   for (int round = 0; round < kRepairRounds; ++round) {
-    std::vector<Point2> patched = waypoints;
-    std::size_t patched_last = last_inside;
-    std::size_t patches = 0;
-    for (const UnseenRegion& region : regions) {
-      if (region.area_m2 < min_region) break;  // the largest first
-      for (const std::vector<Point2>& patch : patchesFor(region.samples)) {
-        if (insert(patch, first_inside, &patched_last, &patched)) ++patches;
+    // First with any leg replaced where that is cheaper, then only legs whose view others
+    // have, then spurs only: the first that loses no more of what the path saw (a replaced
+    // leg may have been a lane) than it sees.
+    bool accepted = false;
+    for (const LegReplacement replacement :
+         {LegReplacement::kAnyLeg, LegReplacement::kUnneededLeg, LegReplacement::kNone}) {
+      std::vector<Point2> patched = waypoints;
+      std::size_t patched_last = last_inside;
+      std::size_t patches = 0;
+      for (const UnseenRegion& region : regions) {
+        if (region.area_m2 < min_region) break;  // the largest first
+        for (const std::vector<Point2>& patch : patchesFor(region.samples)) {
+          if (insert(patch, replacement, seen, first_inside, &patched_last, &patched)) ++patches;
+        }
       }
+      if (patches == 0) break;
+      SeenArea patched_seen = evaluator_.seeWaypointPath(posesOf(patched));
+      std::size_t lost = 0;
+      for (std::size_t i = 0; i < reachable.size(); ++i) {
+        if (reachable[i] != 0 && seen.seen(i) && !patched_seen.seen(i)) ++lost;
+      }
+      std::vector<UnseenRegion> left = evaluator_.unseenRegions(patched_seen, kSamplesPerRegion);
+      const double patched_unseen = totalArea(left);
+      if (static_cast<double>(lost) * cell_area > min_region ||
+          patched_unseen >= unseen - min_region) {
+        continue;  // the patches lost more than they saw, or saw nothing worth their cost
+      }
+      waypoints = std::move(patched);
+      last_inside = patched_last;
+      result.patches += patches;
+      seen = std::move(patched_seen);
+      regions = std::move(left);
+      unseen = patched_unseen;
+      accepted = true;
+      break;
     }
-    if (patches == 0) break;
-    std::vector<UnseenRegion> left =
-        evaluator.unseenRegions(evaluator.seeWaypointPath(posesOf(patched)), kSamplesPerRegion);
-    const double patched_unseen = unseenArea(left);
-    if (patched_unseen >= unseen - min_region) break;  // the patches saw nothing worth their cost
-    waypoints = std::move(patched);
-    last_inside = patched_last;
-    result.patches += patches;
-    regions = std::move(left);
-    unseen = patched_unseen;
+    if (!accepted) break;
   }
   result.waypoints = std::move(waypoints);
   result.last_inside = last_inside;
   result.unseen_after_m2 = unseen;
   return result;
+}
+
+std::vector<Point2> UnseenAreaRepair::unseenSamples(const std::vector<Point2>& waypoints) const {
+  const double min_region = kMinRegionShare * sensor_.width() * sensor_.width();
+  std::vector<Point2> samples;
+  for (const UnseenRegion& region : evaluator_.unseenRegions(
+           evaluator_.seeWaypointPath(posesOf(waypoints)), kSamplesPerRegion)) {
+    if (region.area_m2 < min_region) break;  // the largest first
+    samples.insert(samples.end(), region.samples.begin(), region.samples.end());
+  }
+  return samples;
+}
+
+double UnseenAreaRepair::unseenArea(const std::vector<Point2>& waypoints) const {
+  return evaluator_.report(evaluator_.seeWaypointPath(posesOf(waypoints))).unseen_reachable_area_m2;
 }
 
 }  // namespace kinematic_coverage::core

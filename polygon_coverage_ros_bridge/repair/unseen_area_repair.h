@@ -7,6 +7,7 @@
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
 namespace kinematic_coverage::core {
 
@@ -29,8 +30,10 @@ struct RepairedPath {
 /// on the coverage report's raster, and for every unseen region of the reachable area
 /// drives a patch that sees it: along the offset free area's boundary beside it (where a
 /// band lies beyond the boundary, or within a quarter footprint width inside it), or
-/// through it (deeper inside); each patch is inserted into the leg of the path where the
-/// detour costs least. Rounds repeat while unseen regions remain and the last round saw more.
+/// through it (deeper inside); each patch is driven where the detour costs least, as a
+/// spur from the path or instead of a leg whose view the path keeps (a round of patches
+/// that loses what the path saw is tried again with spurs only, which keep every leg).
+/// Rounds repeat while unseen regions remain and the last round saw more.
 class UnseenAreaRepair {
  public:
   /// `free_area` (cleaned) and `planned_parts` (the parts of the offset free area that the
@@ -45,6 +48,14 @@ class UnseenAreaRepair {
   /// waypoints inside the offset free area) get patches; start and goal stay.
   RepairedPath repair(std::vector<Point2> waypoints, std::size_t first_inside,
                       std::size_t last_inside) const;
+
+  /// Cells of the unseen regions that the repair would patch (up to 400 spread over each
+  /// region): where the planner puts back waypoints that its jog removal shifted, which
+  /// sees a band along a wall for far less than a patch does.
+  std::vector<Point2> unseenSamples(const std::vector<Point2>& waypoints) const;
+
+  /// The reachable area that a waypoint path leaves unseen, m^2.
+  double unseenArea(const std::vector<Point2>& waypoints) const;
 
  private:
   /// A point of a boundary ring of the planned parts: the ring and the arc length to it.
@@ -65,14 +76,24 @@ class UnseenAreaRepair {
   /// The stretch of ring `ring` from `from` to `to` (arc lengths, forward, may wrap).
   std::vector<Point2> boundaryWalk(std::size_t ring, double from, double to) const;
 
-  /// Inserts `patch` (either way round) where the detour costs least; false when no leg
-  /// can reach it.
-  bool insert(const std::vector<Point2>& patch, std::size_t first_inside, std::size_t* last_inside,
+  /// Which legs a patch's detour may replace instead of leaving them as they are.
+  enum class LegReplacement { kAnyLeg, kUnneededLeg, kNone };
+
+  /// Inserts `patch` (either way round) where the detour costs least: as a spur, or as a
+  /// detour instead of a leg that `replacement` allows (legNeeded on the path's `view`);
+  /// false when no leg can reach the patch.
+  bool insert(const std::vector<Point2>& patch, LegReplacement replacement, const SeenArea& view,
+              std::size_t first_inside, std::size_t* last_inside,
               std::vector<Point2>* waypoints) const;
 
-  PolygonWithHoles free_area_;
+  /// True unless every reachable cell sampled in the middle of the leg's view was seen at
+  /// least twice (by another step of the path too).
+  bool legNeeded(const SeenArea& seen, const Point2& a, const Point2& b) const;
+
   std::vector<PolygonWithHoles> planned_parts_;
   FrustumSensor sensor_;
+  /// The coverage report's raster with the reachable area's rim measured exactly.
+  CoverageEvaluator evaluator_;
   const VisibilityGraph& graph_;
   SegmentCost segment_cost_;
   std::vector<Ring> rings_;                       ///< every hull and hole of the parts

@@ -33,29 +33,31 @@ bool JogRemoval::removable(const Point2& a, const Point2& b, const Point2& c,
 }
 
 std::vector<Point2> JogRemoval::apply(const std::vector<Point2>& path,
-                                      const std::vector<bool>& keep,
-                                      std::vector<bool>* kept) const {
-  if (keep.size() != path.size()) {
+                                      const std::vector<bool>& keep, std::vector<bool>* kept,
+                                      const std::vector<bool>* pinned) const {
+  if (keep.size() != path.size() || (pinned != nullptr && pinned->size() != path.size())) {
     throw InvalidInputError("jog removal: one keep flag per waypoint expected");
   }
+  const auto stays = [&](std::size_t i) { return keep[i] || (pinned != nullptr && (*pinned)[i]); };
   // The kept waypoints, each with the original waypoints dropped between it and the next
   // kept one: every dropped waypoint stays within max_deviation of the final path, so
   // removals never add up to a larger shift.
   struct KeptWaypoint {
     Point2 point;
     bool protect;
+    bool stays;
     std::vector<Point2> dropped_after;
   };
   std::vector<KeptWaypoint> result;
   for (std::size_t i = 0; i < path.size(); ++i) {
-    if (!result.empty() && i + 1 < path.size() && !keep[i] &&
+    if (!result.empty() && i + 1 < path.size() && !stays(i) &&
         removable(result.back().point, path[i], path[i + 1], result.back().dropped_after)) {
       result.back().dropped_after.push_back(path[i]);
       continue;
     }
     // The waypoint stays; the previous one may have become removable now that its next
     // neighbour is this one (a jog whose short leg ends here).
-    while (result.size() >= 2 && !result.back().protect) {
+    while (result.size() >= 2 && !result.back().stays) {
       const KeptWaypoint& before = result[result.size() - 2];
       std::vector<Point2> dropped = before.dropped_after;
       dropped.insert(dropped.end(), result.back().dropped_after.begin(),
@@ -65,7 +67,7 @@ std::vector<Point2> JogRemoval::apply(const std::vector<Point2>& path,
       result.pop_back();
       result.back().dropped_after = std::move(dropped);
     }
-    result.push_back({path[i], keep[i], {}});
+    result.push_back({path[i], keep[i], stays(i), {}});
   }
   std::vector<Point2> points;
   if (kept != nullptr) kept->clear();

@@ -23,9 +23,12 @@ class JogRemoval {
 
   /// The path without its removable jogs. Waypoints whose `keep` flag is set (entry and
   /// exit of the offset free area, start and goal) always stay; the result's flags are
-  /// written to `kept` when it is not null. `keep` has one flag per waypoint.
+  /// written to `kept` when it is not null. `keep` has one flag per waypoint. Waypoints
+  /// flagged in `pinned` (when given, one flag per waypoint) stay too, but without a flag
+  /// in `kept`: jogs whose shift would leave area unseen (UnseenAreaRepair).
   std::vector<Point2> apply(const std::vector<Point2>& path, const std::vector<bool>& keep,
-                            std::vector<bool>* kept = nullptr) const;
+                            std::vector<bool>* kept = nullptr,
+                            const std::vector<bool>* pinned = nullptr) const;
 
  private:
   /// True when waypoint b may be dropped between a and c, the waypoints `dropped` before

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -66,6 +67,21 @@ TEST(CoverageEvaluator, NamesTheLargestUnseenRegionInTheMapsFrame) {
   const CoverageEvaluator evaluator(area, {area}, sensor, {0.05});
   EXPECT_FALSE(evaluator.largestUnseenRegion(evaluator.seeWaypointPath(lawnmower(0, 40, 0, 10, 2)))
                    .has_value());
+}
+
+// cellAt finds the cell that holds a map point on a turned raster, and none off the grid.
+TEST(CoverageEvaluator, CellAtHoldsThePointOnATurnedRaster) {
+  const PolygonWithHoles area{rectangle(0, 0, 40, 10), {}};
+  const CoverageEvaluator evaluator(area, {area}, FrustumSensor(4.0, 1.0, 0.0), {0.05}, 0.2);
+  const double half_diagonal = std::sqrt(0.5) * evaluator.raster().cellSize();
+  for (const Point2& p : {Point2(0.01, 0.01), Point2(17.3, 4.2), Point2(39.99, 9.99)}) {
+    const std::optional<std::size_t> cell = evaluator.cellAt(p);
+    ASSERT_TRUE(cell.has_value()) << p.transpose();
+    const Point2 centre = Eigen::Rotation2Dd(0.2) * evaluator.raster().cellCentre(*cell);
+    EXPECT_LE((centre - p).norm(), half_diagonal + 1e-12) << p.transpose();
+  }
+  EXPECT_FALSE(evaluator.cellAt({-100.0, 5.0}).has_value());
+  EXPECT_FALSE(evaluator.cellAt({20.0, 100.0}).has_value());
 }
 
 // Every unseen region, the largest first, with samples spread over it: a lane along the

@@ -50,6 +50,25 @@ TEST(JogRemoval, RemovesAShortJogBetweenTwoLanes) {
   EXPECT_LE(largestShift(path, result), 0.5);
 }
 
+// A pinned waypoint stays, as a kept one does, but is not reported as kept: the caller
+// may still simplify it away where the path runs straight on.
+TEST(JogRemoval, PinnedWaypointsStayWithoutBeingKept) {
+  const PolygonWithHoles area = squareWithHole();
+  const SegmentCost cost(distanceCost());
+  const VisibilityGraph graph(area, cost);
+  const std::vector<Point2> path = {{1, 2}, {6, 2}, {6.01, 2.03}, {18, 2.03}};
+  const std::vector<bool> keep(path.size(), false);
+  std::vector<bool> pinned(path.size(), false);
+  std::vector<bool> kept;
+  const JogRemoval removal(graph, 1.0, 0.5);
+  EXPECT_EQ(removal.apply(path, keep, &kept, &pinned).size(), 3u);
+  pinned[1] = pinned[2] = true;
+  EXPECT_EQ(removal.apply(path, keep, &kept, &pinned), path);
+  EXPECT_EQ(kept, std::vector<bool>(path.size(), false));
+  const std::vector<bool> too_few(2, true);
+  EXPECT_THROW(removal.apply(path, keep, &kept, &too_few), InvalidInputError);
+}
+
 TEST(JogRemoval, KeepsJogsWhoseShortcutLeavesTheArea) {
   const PolygonWithHoles area = squareWithHole();
   const SegmentCost cost(distanceCost());

@@ -124,6 +124,14 @@ void CoverageEvaluator::requireOwnRaster(const SeenArea& seen) const {
   }
 }
 
+std::optional<std::size_t> CoverageEvaluator::cellAt(const Point2& p) const {
+  const Point2 q = (toRaster(p) - raster_.origin()) / raster_.cellSize();
+  if (!(q.x() >= 0.0 && q.y() >= 0.0 && q.x() < raster_.columns() && q.y() < raster_.rows())) {
+    return std::nullopt;
+  }
+  return raster_.index(static_cast<int>(q.y()), static_cast<int>(q.x()));
+}
+
 std::optional<UnseenRegion> CoverageEvaluator::largestUnseenRegion(const SeenArea& seen) const {
   std::vector<UnseenRegion> regions = unseenRegions(seen, 0);
   if (regions.empty()) return std::nullopt;

@@ -104,6 +104,9 @@ class CoverageEvaluator {
   /// reachable figures count the cells whose centres lie in the reachable area.
   CoverageReport report(const SeenArea& seen) const;
 
+  /// The index of the raster cell that holds p (map frame), if any.
+  std::optional<std::size_t> cellAt(const Point2& p) const;
+
   /// The largest UnseenRegion of a seen area made on this evaluator's raster; none when
   /// the whole reachable area was seen.
   std::optional<UnseenRegion> largestUnseenRegion(const SeenArea& seen) const;
