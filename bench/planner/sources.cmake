@@ -8,3 +8,8 @@ target_link_libraries(large_hull_benchmark PRIVATE kc_planner)
 
 add_executable(memory_bound_benchmark bench/planner/memory_bound_benchmark.cpp)
 target_link_libraries(memory_bound_benchmark PRIVATE kc_mission kc_planner kc_trajectory)
+
+# coverage_repair off and on over the hard-map families.
+add_executable(repair_benchmark bench/planner/repair_benchmark.cpp
+  test/support/hard_map_generator.cpp)
+target_link_libraries(repair_benchmark PRIVATE kc_mission kc_planner kc_coverage)

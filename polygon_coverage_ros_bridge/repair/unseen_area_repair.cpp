@@ -26,6 +26,9 @@ constexpr double kBoundaryReachShare = 0.25;
 /// Boundary points of one region farther apart along the boundary than this share of the
 /// footprint width get patches of their own.
 constexpr double kPatchSplitShare = 1.0;
+/// Unseen cells closer than this share of the footprint width are one region: a patch
+/// that sees one sees the others, and a ragged sliver along a wall counts as a whole.
+constexpr double kJoinShare = 0.25;
 /// Legs of the path, nearest to a patch's ends, where its insertion is priced.
 constexpr std::size_t kCandidateLegs = 12;
 /// A leg's view is sampled at this many steps along its middle (clear of its ends by half
@@ -307,11 +310,13 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
                                       std::size_t last_inside) const {
   const double cell_area = evaluator_.raster().cellArea();
   const double min_region = kMinRegionShare * sensor_.width() * sensor_.width();
+  const double join_distance = kJoinShare * sensor_.width();
   const CellMask& reachable = evaluator_.reachableArea();
   RepairedPath result;
   result.reachable_m2 = static_cast<double>(CoverageRaster::countCells(reachable)) * cell_area;
   SeenArea seen = evaluator_.seeWaypointPath(posesOf(waypoints));
-  std::vector<UnseenRegion> regions = evaluator_.unseenRegions(seen, kSamplesPerRegion);
+  std::vector<UnseenRegion> regions =
+      evaluator_.unseenRegions(seen, kSamplesPerRegion, join_distance);
   result.unseen_before_m2 = totalArea(regions);
   double unseen = result.unseen_before_m2;
   for (int round = 0; round < kRepairRounds; ++round) {
@@ -336,7 +341,8 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
       for (std::size_t i = 0; i < reachable.size(); ++i) {
         if (reachable[i] != 0 && seen.seen(i) && !patched_seen.seen(i)) ++lost;
       }
-      std::vector<UnseenRegion> left = evaluator_.unseenRegions(patched_seen, kSamplesPerRegion);
+      std::vector<UnseenRegion> left =
+          evaluator_.unseenRegions(patched_seen, kSamplesPerRegion, join_distance);
       const double patched_unseen = totalArea(left);
       if (static_cast<double>(lost) * cell_area > min_region ||
           patched_unseen >= unseen - min_region) {
@@ -361,9 +367,10 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
 
 std::vector<Point2> UnseenAreaRepair::unseenSamples(const std::vector<Point2>& waypoints) const {
   const double min_region = kMinRegionShare * sensor_.width() * sensor_.width();
+  const double join_distance = kJoinShare * sensor_.width();
   std::vector<Point2> samples;
   for (const UnseenRegion& region : evaluator_.unseenRegions(
-           evaluator_.seeWaypointPath(posesOf(waypoints)), kSamplesPerRegion)) {
+           evaluator_.seeWaypointPath(posesOf(waypoints)), kSamplesPerRegion, join_distance)) {
     if (region.area_m2 < min_region) break;  // the largest first
     samples.insert(samples.end(), region.samples.begin(), region.samples.end());
   }

@@ -107,6 +107,13 @@ TEST(CoverageEvaluator, ListsEveryUnseenRegionLargestFirstWithSamplesInside) {
   }
   EXPECT_TRUE(
       evaluator.unseenRegions(evaluator.seeWaypointPath(lawnmower(0, 40, 0, 10, 2)), 10).empty());
+  // The bands lie 4 m apart where x < 20 (y 3 to 7 seen between them): joined within 4.5 m,
+  // they are one region; within 3.5 m, still two.
+  const std::vector<UnseenRegion> joined = evaluator.unseenRegions(seen, 50, 4.5);
+  ASSERT_EQ(joined.size(), 1u);
+  EXPECT_NEAR(joined[0].area_m2, 220.0, 2.0);
+  EXPECT_LE(joined[0].samples.size(), 50u);
+  EXPECT_EQ(evaluator.unseenRegions(seen, 50, 3.5).size(), 2u);
 }
 
 TEST(CoverageEvaluator, LawnmowerWithOverlapCoversTheReachableArea) {

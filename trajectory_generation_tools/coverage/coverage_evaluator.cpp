@@ -139,10 +139,20 @@ std::optional<UnseenRegion> CoverageEvaluator::largestUnseenRegion(const SeenAre
 }
 
 std::vector<UnseenRegion> CoverageEvaluator::unseenRegions(const SeenArea& seen,
-                                                           std::size_t samples_per_region) const {
+                                                           std::size_t samples_per_region,
+                                                           double join_distance) const {
   requireOwnRaster(seen);
   const auto unseen = [&](std::size_t i) { return reachable_area_[i] != 0 && !seen.seen(i); };
-  // Flood fill over the unseen reachable cells, 8-connected; each cell is visited once.
+  // Cells within the join distance of each other are connected through the unseen cells
+  // grown by half of it; only the unseen cells count.
+  CellMask joined;
+  if (join_distance > 0.0) {
+    CellMask mask(raster_.cellCount(), 0);
+    for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = unseen(i) ? 1 : 0;
+    joined = dilateMask(raster_, mask, 0.5 * join_distance);
+  }
+  const auto connected = [&](std::size_t i) { return joined.empty() ? unseen(i) : joined[i] != 0; };
+  // Flood fill over the connected cells, 8-connected; each cell is visited once.
   std::vector<std::uint8_t> done(raster_.cellCount(), 0);
   std::vector<std::size_t> stack;
   std::vector<std::size_t> filled;
@@ -160,20 +170,22 @@ std::vector<UnseenRegion> CoverageEvaluator::unseenRegions(const SeenArea& seen,
     while (!stack.empty()) {
       const std::size_t i = stack.back();
       stack.pop_back();
-      filled.push_back(i);
       const int row = static_cast<int>(i / static_cast<std::size_t>(columns));
       const int column = static_cast<int>(i % static_cast<std::size_t>(columns));
-      const Point2 centre = fromRaster(raster_.cellCentre(i));
-      sum += centre;
-      low = low.cwiseMin(centre);
-      high = high.cwiseMax(centre);
+      if (unseen(i)) {
+        filled.push_back(i);
+        const Point2 centre = fromRaster(raster_.cellCentre(i));
+        sum += centre;
+        low = low.cwiseMin(centre);
+        high = high.cwiseMax(centre);
+      }
       for (int dr = -1; dr <= 1; ++dr) {
         for (int dc = -1; dc <= 1; ++dc) {
           const int r = row + dr;
           const int c = column + dc;
           if (r < 0 || r >= rows || c < 0 || c >= columns) continue;
           const std::size_t j = raster_.index(r, c);
-          if (done[j] != 0 || !unseen(j)) continue;
+          if (done[j] != 0 || !connected(j)) continue;
           done[j] = 1;
           stack.push_back(j);
         }

@@ -113,9 +113,10 @@ class CoverageEvaluator {
 
   /// Every UnseenRegion of a seen area made on this evaluator's raster, the largest first,
   /// each with up to `samples_per_region` of its cells' centres (every k-th cell of its
-  /// flood fill, so that they spread over it).
-  std::vector<UnseenRegion> unseenRegions(const SeenArea& seen,
-                                          std::size_t samples_per_region) const;
+  /// flood fill, so that they spread over it). Cells within `join_distance` (m) of each
+  /// other belong to one region: a ragged sliver along a wall is one region, not hundreds.
+  std::vector<UnseenRegion> unseenRegions(const SeenArea& seen, std::size_t samples_per_region,
+                                          double join_distance = 0.0) const;
 
  private:
   /// Map frame to raster frame, and back.
