@@ -130,6 +130,18 @@ double headingOf(const Point2& a, const Point2& b) {
   return wrapAngle(std::atan2(b.y() - a.y(), b.x() - a.x()));
 }
 
+std::vector<Pose2> legHeadingPoses(const std::vector<Point2>& points) {
+  std::vector<Pose2> poses;
+  poses.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double yaw = i + 1 < points.size() ? headingOf(points[i], points[i + 1])
+                       : i > 0               ? headingOf(points[i - 1], points[i])
+                                             : 0.0;
+    poses.push_back({points[i].x(), points[i].y(), yaw});
+  }
+  return poses;
+}
+
 Ring convexHull(std::vector<Point2> points) {
   std::sort(points.begin(), points.end(), [](const Point2& a, const Point2& b) {
     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());

@@ -55,4 +55,8 @@ double headingOf(const Point2& a, const Point2& b);
 /// Wraps an angle into (-pi, pi].
 double wrapAngle(double angle);
 
+/// The points of a polyline as poses, each facing along the leg that leaves it (the last
+/// along the leg that reaches it; a single point faces yaw 0): the waypoints of a path.
+std::vector<Pose2> legHeadingPoses(const std::vector<Point2>& points);
+
 }  // namespace kinematic_coverage::core

@@ -582,12 +582,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
               << time_cost.pathCost(waypoints) << " s";
       stage("repair", t, summary.str());
     }
-    for (std::size_t i = 0; i < waypoints.size(); ++i) {
-      const double yaw = i + 1 < waypoints.size() ? headingOf(waypoints[i], waypoints[i + 1])
-                         : i > 0                  ? headingOf(waypoints[i - 1], waypoints[i])
-                                                  : 0.0;
-      plan.waypoints.push_back({waypoints[i].x(), waypoints[i].y(), yaw});
-    }
+    plan.waypoints = legHeadingPoses(waypoints);
     plan.path_length_m = pathLength(waypoints);
     plan.time_cost_s = time_cost.pathCost(waypoints);
   } catch (const SizeLimitError&) {

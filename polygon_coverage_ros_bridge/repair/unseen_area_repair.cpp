@@ -38,18 +38,6 @@ constexpr int kLegSamplesAlong = 16;
 constexpr int kLegSamplesAcross = 3;
 constexpr double kLegSampleReach = 0.95;
 
-std::vector<Pose2> posesOf(const std::vector<Point2>& points) {
-  std::vector<Pose2> poses;
-  poses.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double yaw = i + 1 < points.size() ? headingOf(points[i], points[i + 1])
-                       : i > 0               ? headingOf(points[i - 1], points[i])
-                                             : 0.0;
-    poses.push_back({points[i].x(), points[i].y(), yaw});
-  }
-  return poses;
-}
-
 double totalArea(const std::vector<UnseenRegion>& regions) {
   double sum = 0.0;
   for (const UnseenRegion& region : regions) sum += region.area_m2;
@@ -314,7 +302,7 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
   const CellMask& reachable = evaluator_.reachableArea();
   RepairedPath result;
   result.reachable_m2 = static_cast<double>(CoverageRaster::countCells(reachable)) * cell_area;
-  SeenArea seen = evaluator_.seeWaypointPath(posesOf(waypoints));
+  SeenArea seen = evaluator_.seeWaypointPath(legHeadingPoses(waypoints));
   std::vector<UnseenRegion> regions =
       evaluator_.unseenRegions(seen, kSamplesPerRegion, join_distance);
   result.unseen_before_m2 = totalArea(regions);
@@ -336,7 +324,7 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
         }
       }
       if (patches == 0) break;
-      SeenArea patched_seen = evaluator_.seeWaypointPath(posesOf(patched));
+      SeenArea patched_seen = evaluator_.seeWaypointPath(legHeadingPoses(patched));
       std::size_t lost = 0;
       for (std::size_t i = 0; i < reachable.size(); ++i) {
         if (reachable[i] != 0 && seen.seen(i) && !patched_seen.seen(i)) ++lost;
@@ -369,8 +357,9 @@ std::vector<Point2> UnseenAreaRepair::unseenSamples(const std::vector<Point2>& w
   const double min_region = kMinRegionShare * sensor_.width() * sensor_.width();
   const double join_distance = kJoinShare * sensor_.width();
   std::vector<Point2> samples;
-  for (const UnseenRegion& region : evaluator_.unseenRegions(
-           evaluator_.seeWaypointPath(posesOf(waypoints)), kSamplesPerRegion, join_distance)) {
+  for (const UnseenRegion& region :
+       evaluator_.unseenRegions(evaluator_.seeWaypointPath(legHeadingPoses(waypoints)),
+                                kSamplesPerRegion, join_distance)) {
     if (region.area_m2 < min_region) break;  // the largest first
     samples.insert(samples.end(), region.samples.begin(), region.samples.end());
   }
@@ -378,7 +367,8 @@ std::vector<Point2> UnseenAreaRepair::unseenSamples(const std::vector<Point2>& w
 }
 
 double UnseenAreaRepair::unseenArea(const std::vector<Point2>& waypoints) const {
-  return evaluator_.report(evaluator_.seeWaypointPath(posesOf(waypoints))).unseen_reachable_area_m2;
+  return evaluator_.report(evaluator_.seeWaypointPath(legHeadingPoses(waypoints)))
+      .unseen_reachable_area_m2;
 }
 
 }  // namespace kinematic_coverage::core

@@ -17,6 +17,18 @@ TEST(PlanarGeometry, AreaOfSquareWithHole) {
   EXPECT_LT(signedArea(squareWithHole().holes[0]), 0.0);
 }
 
+TEST(PlanarGeometry, LegHeadingPosesFaceAlongTheLegLeavingThem) {
+  const std::vector<Pose2> poses = legHeadingPoses({{0, 0}, {1, 0}, {1, 2}, {-1, 2}});
+  ASSERT_EQ(poses.size(), 4u);
+  EXPECT_DOUBLE_EQ(poses[0].yaw, 0.0);
+  EXPECT_DOUBLE_EQ(poses[1].yaw, M_PI / 2);
+  EXPECT_DOUBLE_EQ(poses[2].yaw, M_PI);
+  EXPECT_DOUBLE_EQ(poses[3].yaw, M_PI);  // the last faces along the leg reaching it
+  EXPECT_EQ(poses[2].position(), Point2(1, 2));
+  EXPECT_DOUBLE_EQ(legHeadingPoses({{3, 4}}).front().yaw, 0.0);
+  EXPECT_TRUE(legHeadingPoses({}).empty());
+}
+
 TEST(PlanarGeometry, ContainsRespectsHoles) {
   const PolygonWithHoles polygon = squareWithHole();
   EXPECT_TRUE(contains(polygon, {1, 1}));

@@ -17,23 +17,13 @@ namespace {
 /// Legs may leave the offset free area by this much (rounding).
 constexpr double kLegTolerance = 1e-6;
 
-std::vector<Pose2> posesOf(const std::vector<Point2>& points) {
-  std::vector<Pose2> poses;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double yaw = i + 1 < points.size() ? headingOf(points[i], points[i + 1])
-                       : i > 0               ? headingOf(points[i - 1], points[i])
-                                             : 0.0;
-    poses.push_back({points[i].x(), points[i].y(), yaw});
-  }
-  return poses;
-}
-
 /// Unseen reachable area (m^2) of a waypoint path, the rim measured exactly.
 double unseenArea(const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& parts,
                   const FrustumSensor& sensor, const std::vector<Point2>& waypoints) {
   const CoverageEvaluator evaluator(free_area, parts, sensor, reportingResolution(),
                                     kReportingGridAngle, ReachableRim::kExact);
-  return evaluator.report(evaluator.seeWaypointPath(posesOf(waypoints))).unseen_reachable_area_m2;
+  return evaluator.report(evaluator.seeWaypointPath(legHeadingPoses(waypoints)))
+      .unseen_reachable_area_m2;
 }
 
 /// True when `part` appears in `whole` in order (the repair keeps every waypoint).
@@ -166,6 +156,28 @@ TEST(UnseenAreaRepair, LegsToAStartAndGoalOutsideTheAreaGetNoPatch) {
   expectInside(room.offset, inside);
 }
 
+/// A mission planned as coverage_tool plans it, without and with coverage_repair, and the
+/// two waypoint paths.
+struct PlannedBothWays {
+  PlannedMission without;
+  PlannedMission with;
+  std::vector<Point2> before;
+  std::vector<Point2> after;
+  FrustumSensor sensor{1.0, 0.0, 0.0};
+};
+
+PlannedBothWays planBothWays(Mission mission) {
+  PlannedBothWays result;
+  mission.parameters.coverage_repair = false;
+  result.without = planMission(mission);
+  mission.parameters.coverage_repair = true;
+  result.with = planMission(mission);
+  for (const Pose2& pose : result.without.plan.waypoints) result.before.push_back(pose.position());
+  for (const Pose2& pose : result.with.plan.waypoints) result.after.push_back(pose.position());
+  result.sensor = FrustumSensor::fromParameters(mission.parameters);
+  return result;
+}
+
 // Rooms seed 4: the jog removal shifts the end of a room's top lane, which sees exactly to
 // the reachable area's rim along the wall, 0.2 m inward, leaving a band 14 m long (1.9 m^2).
 // Putting the jog back sees it for 0.3 % more time; a patch along the wall took 23 % more.
@@ -173,14 +185,12 @@ TEST(UnseenAreaRepair, AJogThatShiftedALaneOffTheWallIsPutBack) {
   const testing::HardMap map = testing::HardMapGenerator(testing::MapFamily::kRooms).generate(4);
   Mission mission = map.mission;
   mission.parameters.smoothing = false;
-  const PlannedMission planned = planMission(mission);
-  mission.parameters.coverage_repair = true;
-  const PlannedMission repaired = planMission(mission);
-  const FrustumSensor sensor = FrustumSensor::fromParameters(mission.parameters);
-  std::vector<Point2> before;
-  std::vector<Point2> after;
-  for (const Pose2& pose : planned.plan.waypoints) before.push_back(pose.position());
-  for (const Pose2& pose : repaired.plan.waypoints) after.push_back(pose.position());
+  const PlannedBothWays plans = planBothWays(mission);
+  const PlannedMission& planned = plans.without;
+  const PlannedMission& repaired = plans.with;
+  const FrustumSensor& sensor = plans.sensor;
+  const std::vector<Point2>& before = plans.before;
+  const std::vector<Point2>& after = plans.after;
   EXPECT_GT(unseenArea(planned.free_area, planned.plan.offset_parts, sensor, before), 1.5);
   EXPECT_LT(unseenArea(repaired.free_area, repaired.plan.offset_parts, sensor, after), 0.01);
   EXPECT_LE(repaired.plan.time_cost_s, 1.01 * planned.plan.time_cost_s);
@@ -199,23 +209,18 @@ TEST(UnseenAreaRepair, PlansOfTheHardMapsSeeTheirReachableArea) {
       const testing::HardMap map = generator.generate(static_cast<std::uint64_t>(seed));
       const std::string name =
           testing::HardMapGenerator::name(family) + " seed " + std::to_string(seed);
-      Mission mission = map.mission;
-      mission.parameters.coverage_repair = false;
-      const PlannedMission planned = planMission(mission);
-      mission.parameters.coverage_repair = true;
-      const PlannedMission repaired = planMission(mission);
-      const FrustumSensor sensor = FrustumSensor::fromParameters(mission.parameters);
-      std::vector<Point2> before;
-      std::vector<Point2> after;
-      for (const Pose2& pose : planned.plan.waypoints) before.push_back(pose.position());
-      for (const Pose2& pose : repaired.plan.waypoints) after.push_back(pose.position());
-      const CoverageEvaluator evaluator(repaired.free_area, repaired.plan.offset_parts, sensor,
-                                        reportingResolution(), kReportingGridAngle,
+      const PlannedBothWays plans = planBothWays(map.mission);
+      const PlannedMission& planned = plans.without;
+      const PlannedMission& repaired = plans.with;
+      const std::vector<Point2>& before = plans.before;
+      const std::vector<Point2>& after = plans.after;
+      const CoverageEvaluator evaluator(repaired.free_area, repaired.plan.offset_parts,
+                                        plans.sensor, reportingResolution(), kReportingGridAngle,
                                         ReachableRim::kExact);
       const CoverageReport report_before =
-          evaluator.report(evaluator.seeWaypointPath(posesOf(before)));
+          evaluator.report(evaluator.seeWaypointPath(legHeadingPoses(before)));
       const CoverageReport report_after =
-          evaluator.report(evaluator.seeWaypointPath(posesOf(after)));
+          evaluator.report(evaluator.seeWaypointPath(legHeadingPoses(after)));
       EXPECT_LE(report_after.unseen_reachable_area_m2, report_before.unseen_reachable_area_m2)
           << name;
       EXPECT_GE(report_after.reachable_coverage_percent, 99.9) << name;
