@@ -18,18 +18,19 @@
 #include <string>
 #include <vector>
 
-#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "bench/support/median.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "test/support/hard_map_generator.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
 namespace {
 
+using kinematic_coverage::bench::median;
+
 using kinematic_coverage::core::CoverageEvaluator;
 using kinematic_coverage::core::FrustumSensor;
 using kinematic_coverage::core::Mission;
 using kinematic_coverage::core::PlannedMission;
-using kinematic_coverage::core::Pose2;
 namespace testing = kinematic_coverage::core::testing;
 
 /// The share of the reachable area a path must see.
@@ -68,12 +69,6 @@ Options parseOptions(int argc, char** argv) {
     }
   }
   return options;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start) {

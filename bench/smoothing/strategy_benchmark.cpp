@@ -43,6 +43,7 @@
 #include <system_error>
 #include <vector>
 
+#include "bench/support/median.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
@@ -51,6 +52,8 @@
 
 namespace kinematic_coverage::core {
 namespace {
+
+using kinematic_coverage::bench::median;
 
 using Clock = std::chrono::steady_clock;
 
@@ -236,13 +239,6 @@ void printMap(const std::string& family, std::uint64_t seed, const MapRuns& map)
                  run.traversal_time_s / map.runs[kUnsmoothed].traversal_time_s, run.wall_s);
   }
   std::fprintf(stderr, "\n");
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 /// Table 1's row of one strategy over a batch of maps.

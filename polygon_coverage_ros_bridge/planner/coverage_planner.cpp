@@ -547,12 +547,12 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
       // Jogs whose removal shifted a lane off what it had to see are put back first: near
       // a wall that the lane's footprint reaches exactly, any shift inward leaves a band.
       std::size_t jogs_restored = 0;
-      const std::vector<Point2> unseen = repair.unseenSamples(waypoints);
-      if (!unseen.empty()) {
+      const UnseenAreaRepair::Unseen unseen = repair.unseen(waypoints);
+      if (!unseen.samples.empty()) {
         const double reach = 0.5 * std::hypot(sensor.width(), sensor.length()) + max_jog_shift;
         std::vector<bool> pinned(path.size(), false);
         for (std::size_t i = 0; i < path.size(); ++i) {
-          for (const Point2& p : unseen) {
+          for (const Point2& p : unseen.samples) {
             if ((p - path[i]).norm() <= reach) {
               pinned[i] = true;
               break;
@@ -562,7 +562,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
         std::vector<bool> pinned_kept;
         const std::vector<Point2> with_jogs = simplifiedPath(
             jog_removal.apply(path, keep, &pinned_kept, &pinned), pinned_kept, duplicate_tolerance);
-        if (repair.unseenArea(with_jogs) < repair.unseenArea(waypoints)) {
+        if (repair.unseen(with_jogs).area_m2 < unseen.area_m2) {
           jogs_restored = with_jogs.size() - std::min(with_jogs.size(), waypoints.size());
           waypoints = with_jogs;
           findInside();

@@ -16,9 +16,8 @@ namespace {
 constexpr int kRepairRounds = 3;
 /// Cells per unseen region whose nearest boundary points place its patches.
 constexpr std::size_t kSamplesPerRegion = 400;
-/// Regions smaller than this share of a square footprint width are left: the rims that
-/// the raster's reachable area adds (its growth is up to half a cell generous) and
-/// slivers no drivable patch would see more of.
+/// Regions smaller than this share of a square footprint width are left: slivers no
+/// drivable patch would see more of.
 constexpr double kMinRegionShare = 1e-3;
 /// A region's cells deeper than this share of the footprint width inside the offset free
 /// area are seen from a patch through them; shallower ones from the boundary beside them.
@@ -55,7 +54,9 @@ UnseenAreaRepair::UnseenAreaRepair(const PolygonWithHoles& free_area,
       evaluator_(free_area, planned_parts_, sensor_, reportingResolution(), kReportingGridAngle,
                  ReachableRim::kExact),
       graph_(graph),
-      segment_cost_(segment_cost) {
+      segment_cost_(segment_cost),
+      min_region_m2_(kMinRegionShare * sensor.width() * sensor.width()),
+      join_distance_(kJoinShare * sensor.width()) {
   for (const PolygonWithHoles& part : planned_parts_) {
     rings_.push_back(part.hull);
     for (const Ring& hole : part.holes) rings_.push_back(hole);
@@ -297,14 +298,12 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
 RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t first_inside,
                                       std::size_t last_inside) const {
   const double cell_area = evaluator_.raster().cellArea();
-  const double min_region = kMinRegionShare * sensor_.width() * sensor_.width();
-  const double join_distance = kJoinShare * sensor_.width();
   const CellMask& reachable = evaluator_.reachableArea();
   RepairedPath result;
   result.reachable_m2 = static_cast<double>(CoverageRaster::countCells(reachable)) * cell_area;
   SeenArea seen = evaluator_.seeWaypointPath(legHeadingPoses(waypoints));
   std::vector<UnseenRegion> regions =
-      evaluator_.unseenRegions(seen, kSamplesPerRegion, join_distance);
+      evaluator_.unseenRegions(seen, kSamplesPerRegion, join_distance_);
   result.unseen_before_m2 = totalArea(regions);
   double unseen = result.unseen_before_m2;
   for (int round = 0; round < kRepairRounds; ++round) {
@@ -318,7 +317,7 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
       std::size_t patched_last = last_inside;
       std::size_t patches = 0;
       for (const UnseenRegion& region : regions) {
-        if (region.area_m2 < min_region) break;  // the largest first
+        if (region.area_m2 < min_region_m2_) break;  // the largest first
         for (const std::vector<Point2>& patch : patchesFor(region.samples)) {
           if (insert(patch, replacement, seen, first_inside, &patched_last, &patched)) ++patches;
         }
@@ -330,10 +329,10 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
         if (reachable[i] != 0 && seen.seen(i) && !patched_seen.seen(i)) ++lost;
       }
       std::vector<UnseenRegion> left =
-          evaluator_.unseenRegions(patched_seen, kSamplesPerRegion, join_distance);
+          evaluator_.unseenRegions(patched_seen, kSamplesPerRegion, join_distance_);
       const double patched_unseen = totalArea(left);
-      if (static_cast<double>(lost) * cell_area > min_region ||
-          patched_unseen >= unseen - min_region) {
+      if (static_cast<double>(lost) * cell_area > min_region_m2_ ||
+          patched_unseen >= unseen - min_region_m2_) {
         continue;  // the patches lost more than they saw, or saw nothing worth their cost
       }
       waypoints = std::move(patched);
@@ -353,22 +352,16 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
   return result;
 }
 
-std::vector<Point2> UnseenAreaRepair::unseenSamples(const std::vector<Point2>& waypoints) const {
-  const double min_region = kMinRegionShare * sensor_.width() * sensor_.width();
-  const double join_distance = kJoinShare * sensor_.width();
-  std::vector<Point2> samples;
+UnseenAreaRepair::Unseen UnseenAreaRepair::unseen(const std::vector<Point2>& waypoints) const {
+  Unseen result;
   for (const UnseenRegion& region :
        evaluator_.unseenRegions(evaluator_.seeWaypointPath(legHeadingPoses(waypoints)),
-                                kSamplesPerRegion, join_distance)) {
-    if (region.area_m2 < min_region) break;  // the largest first
-    samples.insert(samples.end(), region.samples.begin(), region.samples.end());
+                                kSamplesPerRegion, join_distance_)) {
+    result.area_m2 += region.area_m2;
+    if (region.area_m2 < min_region_m2_) continue;
+    result.samples.insert(result.samples.end(), region.samples.begin(), region.samples.end());
   }
-  return samples;
-}
-
-double UnseenAreaRepair::unseenArea(const std::vector<Point2>& waypoints) const {
-  return evaluator_.report(evaluator_.seeWaypointPath(legHeadingPoses(waypoints)))
-      .unseen_reachable_area_m2;
+  return result;
 }
 
 }  // namespace kinematic_coverage::core

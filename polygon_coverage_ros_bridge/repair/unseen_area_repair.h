@@ -49,13 +49,17 @@ class UnseenAreaRepair {
   RepairedPath repair(std::vector<Point2> waypoints, std::size_t first_inside,
                       std::size_t last_inside) const;
 
-  /// Cells of the unseen regions that the repair would patch (up to 400 spread over each
-  /// region): where the planner puts back waypoints that its jog removal shifted, which
-  /// sees a band along a wall for far less than a patch does.
-  std::vector<Point2> unseenSamples(const std::vector<Point2>& waypoints) const;
+  /// What a waypoint path leaves unseen of the reachable area.
+  struct Unseen {
+    double area_m2 = 0.0;
+    /// Cells of the regions that the repair would patch (up to 400 spread over each): where
+    /// the planner puts back waypoints that its jog removal shifted, which sees a band
+    /// along a wall for far less than a patch does.
+    std::vector<Point2> samples;
+  };
 
-  /// The reachable area that a waypoint path leaves unseen, m^2.
-  double unseenArea(const std::vector<Point2>& waypoints) const;
+  /// Measures what `waypoints` leave unseen.
+  Unseen unseen(const std::vector<Point2>& waypoints) const;
 
  private:
   /// A point of a boundary ring of the planned parts: the ring and the arc length to it.
@@ -96,6 +100,8 @@ class UnseenAreaRepair {
   CoverageEvaluator evaluator_;
   const VisibilityGraph& graph_;
   SegmentCost segment_cost_;
+  double min_region_m2_;                          ///< smaller unseen regions get no patch
+  double join_distance_;                          ///< unseen cells closer than this are one region
   std::vector<Ring> rings_;                       ///< every hull and hole of the parts
   std::vector<std::vector<double>> arc_lengths_;  ///< per ring, to each vertex and round
 };
