@@ -540,10 +540,11 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     }
 
     // Patches where the sweeps leave reachable area unseen.
-    if (parameters_.coverage_repair && coverage_region == nullptr) {
+    if (parameters_.coverage_repair) {
       t = Clock::now();
       failing_stage = "repair";
-      const UnseenAreaRepair repair(free_area, planned_parts, sensor, graph, segment_cost);
+      const UnseenAreaRepair repair(free_area, planned_parts, sensor, graph, segment_cost,
+                                    coverage_region);
       // Jogs whose removal shifted a lane off what it had to see are put back first: near
       // a wall that the lane's footprint reaches exactly, any shift inward leaves a band.
       std::size_t jogs_restored = 0;

@@ -48,7 +48,8 @@ double totalArea(const std::vector<UnseenRegion>& regions) {
 UnseenAreaRepair::UnseenAreaRepair(const PolygonWithHoles& free_area,
                                    std::vector<PolygonWithHoles> planned_parts,
                                    const FrustumSensor& sensor, const VisibilityGraph& graph,
-                                   const SegmentCost& segment_cost)
+                                   const SegmentCost& segment_cost,
+                                   const std::vector<PolygonWithHoles>* coverage_region)
     : planned_parts_(std::move(planned_parts)),
       sensor_(sensor),
       evaluator_(free_area, planned_parts_, sensor_, reportingResolution(), kReportingGridAngle,
@@ -57,6 +58,7 @@ UnseenAreaRepair::UnseenAreaRepair(const PolygonWithHoles& free_area,
       segment_cost_(segment_cost),
       min_region_m2_(kMinRegionShare * sensor.width() * sensor.width()),
       join_distance_(kJoinShare * sensor.width()) {
+  if (coverage_region != nullptr) evaluator_.restrictReachableArea(*coverage_region);
   for (const PolygonWithHoles& part : planned_parts_) {
     rings_.push_back(part.hull);
     for (const Ring& hole : part.holes) rings_.push_back(hole);

@@ -39,10 +39,12 @@ class UnseenAreaRepair {
   /// `free_area` (cleaned) and `planned_parts` (the parts of the offset free area that the
   /// path covers) define the reachable area; `graph` routes inside the area the path
   /// runs in (it must outlive this object); `segment_cost` prices the detours as the
-  /// planner's generalized TSP does.
+  /// planner's generalized TSP does. With `coverage_region` (a replanned mission's
+  /// remaining area), only the reachable area inside it counts: the rest was seen before.
   UnseenAreaRepair(const PolygonWithHoles& free_area, std::vector<PolygonWithHoles> planned_parts,
                    const FrustumSensor& sensor, const VisibilityGraph& graph,
-                   const SegmentCost& segment_cost);
+                   const SegmentCost& segment_cost,
+                   const std::vector<PolygonWithHoles>* coverage_region = nullptr);
 
   /// The path with its patches. Only legs between `first_inside` and `last_inside` (the
   /// waypoints inside the offset free area) get patches; start and goal stay.
@@ -96,7 +98,8 @@ class UnseenAreaRepair {
 
   std::vector<PolygonWithHoles> planned_parts_;
   FrustumSensor sensor_;
-  /// The coverage report's raster with the reachable area's rim measured exactly.
+  /// The coverage report's raster with the reachable area's rim measured exactly (only
+  /// its part inside the coverage region, if one was given).
   CoverageEvaluator evaluator_;
   const VisibilityGraph& graph_;
   SegmentCost segment_cost_;

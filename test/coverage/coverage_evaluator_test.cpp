@@ -84,6 +84,29 @@ TEST(CoverageEvaluator, CellAtHoldsThePointOnATurnedRaster) {
   EXPECT_FALSE(evaluator.cellAt({20.0, 100.0}).has_value());
 }
 
+// Restricted to a region (a replanned mission's remaining area), the reachable area is its
+// cells inside the region, on a turned raster too; what lies outside is neither reachable
+// nor unseen.
+TEST(CoverageEvaluator, ReachableAreaRestrictedToARegion) {
+  const PolygonWithHoles area{rectangle(0, 0, 40, 10), {}};
+  CoverageEvaluator evaluator(area, {area}, FrustumSensor(4.0, 0.0, 0.0), {0.05}, 0.2);
+  const double cell_area = evaluator.raster().cellArea();
+  EXPECT_NEAR(CoverageRaster::countCells(evaluator.reachableArea()) * cell_area, 400.0, 2.0);
+  evaluator.restrictReachableArea({{rectangle(10, 0, 20, 10), {}}, {rectangle(30, 5, 35, 10), {}}});
+  EXPECT_NEAR(CoverageRaster::countCells(evaluator.reachableArea()) * cell_area, 125.0, 1.0);
+  // A lane along y = 2 sees y 0 to 4: of the region, 10 m x 4 m.
+  const CoverageReport report =
+      evaluator.report(evaluator.seeWaypointPath({{0, 2, 0}, {40, 2, 0}}));
+  EXPECT_NEAR(report.unseen_reachable_area_m2, 85.0, 1.0);
+  for (const UnseenRegion& region :
+       evaluator.unseenRegions(evaluator.seeWaypointPath({{0, 2, 0}, {40, 2, 0}}), 20)) {
+    for (const Point2& p : region.samples) {
+      EXPECT_TRUE((p.x() > 10.0 - 0.05 && p.x() < 20.0 + 0.05) || p.x() > 30.0 - 0.05)
+          << p.transpose();
+    }
+  }
+}
+
 // Every unseen region, the largest first, with samples spread over it: a lane along the
 // middle of a 40 m x 10 m area (W 4 m, L 0) and one back along its right half 1 m lower
 // leave a band above (40 m x 3 m) and one below (x 0 to 20 m 3 m high, x 20 to 40 m 2 m).

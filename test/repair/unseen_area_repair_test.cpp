@@ -156,6 +156,33 @@ TEST(UnseenAreaRepair, LegsToAStartAndGoalOutsideTheAreaGetNoPatch) {
   expectInside(room.offset, inside);
 }
 
+// With a coverage region (a replanned mission's remaining area), only the reachable area
+// inside it is patched: of the 1 m band that the lanes leave along the top, the left half
+// (x < 10); a region where everything is seen gets no patch.
+TEST(UnseenAreaRepair, OnlyTheCoverageRegionIsPatched) {
+  const Room room;
+  const std::vector<Point2> lanes = lanesAt({1.5, 3.5, 5.5, 7.5});
+  const std::vector<PolygonWithHoles> left{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}}};
+  const RepairedPath repaired =
+      UnseenAreaRepair(room.free_area, {room.offset}, room.sensor, room.graph, room.cost, &left)
+          .repair(lanes, 0, lanes.size() - 1);
+  EXPECT_NEAR(repaired.unseen_before_m2, 9.5, 0.2);
+  EXPECT_LT(repaired.unseen_after_m2, 0.01);
+  EXPECT_GE(repaired.patches, 1u);
+  EXPECT_TRUE(isSubsequence(lanes, repaired.waypoints));
+  expectInside(room.offset, repaired.waypoints);
+  // Less driving than seeing the whole band (a walk along all of the top).
+  EXPECT_LT(pathLength(repaired.waypoints), pathLength(room.repair(lanes).waypoints) - 5.0);
+
+  const std::vector<PolygonWithHoles> bottom{{{{0, 0}, {20, 0}, {20, 5}, {0, 5}}, {}}};
+  const RepairedPath untouched =
+      UnseenAreaRepair(room.free_area, {room.offset}, room.sensor, room.graph, room.cost, &bottom)
+          .repair(lanes, 0, lanes.size() - 1);
+  EXPECT_EQ(untouched.waypoints, lanes);
+  EXPECT_EQ(untouched.patches, 0u);
+  EXPECT_EQ(untouched.unseen_before_m2, 0.0);
+}
+
 /// A mission planned as coverage_tool plans it, without and with coverage_repair, and the
 /// two waypoint paths.
 struct PlannedBothWays {

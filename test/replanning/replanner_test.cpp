@@ -44,6 +44,30 @@ TEST(Replanner, LakeDriftScenarioCoversTheUpdatedReachableArea) {
             99.0);
 }
 
+/// With coverage_repair, the replanned path is repaired too (stage `repair`), against the
+/// remaining area: the visited and new footprints together see at least what they see
+/// without it.
+TEST(Replanner, CoverageRepairRepairsTheReplannedPath) {
+  const testing::DriftScenario scenario = testing::lakeDriftScenario(0.4, {2.0, 1.0});
+  double combined[2] = {0.0, 0.0};
+  for (const bool repair : {false, true}) {
+    PlannerParameters parameters = scenario.mission.parameters;
+    parameters.coverage_repair = repair;
+    const ReplannedMission replanned =
+        Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
+    bool repaired = false;
+    for (const PlanningStage& stage : replanned.plan.stages) repaired |= stage.name == "repair";
+    EXPECT_EQ(repaired, repair);
+    parameters.smoothing = false;
+    const GeneratedTrajectory trajectory =
+        TrajectoryGenerator(parameters).generate(replanned.plan.waypoints, replanned.free_area);
+    combined[repair ? 1 : 0] = testing::combinedReachableCoverage(
+        replanned.free_area, parameters, scenario.visited, trajectory.poses);
+  }
+  EXPECT_GE(combined[1], combined[0] - 1e-9);
+  EXPECT_GE(combined[1], 99.9);
+}
+
 /// Every method gives valid parts and a plan; the convex hull discards unvisited area, so
 /// it keeps no more than the footprint method (thesis Fig. 3.9 and 3.11).
 TEST(Replanner, EveryMethodGivesValidPartsAndAPlan) {

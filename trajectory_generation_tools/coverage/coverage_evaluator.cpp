@@ -124,6 +124,15 @@ void CoverageEvaluator::requireOwnRaster(const SeenArea& seen) const {
   }
 }
 
+void CoverageEvaluator::restrictReachableArea(const std::vector<PolygonWithHoles>& region) {
+  CellMask inside(reachable_area_.size(), 0);
+  for (const PolygonWithHoles& part : turned(region, -grid_angle_)) {
+    const CellMask mask = raster_.rasterize(part);
+    for (std::size_t i = 0; i < mask.size(); ++i) inside[i] |= mask[i];
+  }
+  for (std::size_t i = 0; i < inside.size(); ++i) reachable_area_[i] &= inside[i];
+}
+
 std::optional<std::size_t> CoverageEvaluator::cellAt(const Point2& p) const {
   const Point2 q = (toRaster(p) - raster_.origin()) / raster_.cellSize();
   if (!(q.x() >= 0.0 && q.y() >= 0.0 && q.x() < raster_.columns() && q.y() < raster_.rows())) {

@@ -104,6 +104,11 @@ class CoverageEvaluator {
   /// reachable figures count the cells whose centres lie in the reachable area.
   CoverageReport report(const SeenArea& seen) const;
 
+  /// Keeps of the reachable area only the cells whose centres lie in `region` (map frame):
+  /// where a replanned path must see, the remaining area of a mission, not what the robot
+  /// has already seen.
+  void restrictReachableArea(const std::vector<PolygonWithHoles>& region);
+
   /// The index of the raster cell that holds p (map frame), if any.
   std::optional<std::size_t> cellAt(const Point2& p) const;
 
