@@ -105,9 +105,10 @@ step). The thesis compared smoothed and unsmoothed trajectories on the Proteus v
 Lake Zurich (Chapter 4, Tables 4.1 to 4.3). Here the vehicle is the robot model of
 `coverage_tool simulate` and of the `auv_simulator` node. Each mission is planned three
 times with `coverage_tool plan`: smoothed by the thesis's Algorithm 1
-(`smoothing_strategy: local`), smoothed with the default strategy (`global`: every corner's
-smoothing chosen jointly to minimise the traversal time), and unsmoothed (`smoothing:
-false`); the same robot follows every trajectory with `coverage_tool simulate`. The metrics
+(`smoothing_strategy: local`), smoothed with the default strategy (`coverage_safe`: every
+corner's smoothing chosen jointly to minimise the traversal time while the path as a whole
+still sees what the unsmoothed path sees), and unsmoothed (`smoothing: false`), all three
+from the same waypoints (with the default `coverage_repair`); the same robot follows every trajectory with `coverage_tool simulate`. The metrics
 (docs/REFERENCE.md, Metrics) are the traversal time, the tracking error (the distance from
 the robot to the nearest point of the desired path, once per 0.1 s simulation step: its sum,
 mean and percentiles) and the coverage loss of the poses the robot actually drove. The trend

@@ -1,10 +1,9 @@
 // What coverage_repair buys and costs on HardMapGenerator's families
 // (test/support/hard_map_generator.h): every map is planned as `coverage_tool plan` plans it
 // (planMission) with coverage_repair off and on, and both waypoint paths are measured on the
-// coverage report's raster with the reachable area's rim measured exactly (the repair's own
-// measure, ReachableRim::kExact). Per family: the maps whose path sees less than 99.9 % of
-// the reachable area without and with the repair, the worst reachable coverage with it, the
-// median and largest ratio of the repaired path's time cost to the unrepaired one's, and
+// coverage report's raster (the repair's own measure). Per family: the maps whose path sees less
+// than 99.9 % of the reachable area without and with the repair, the worst reachable coverage with
+// it, the median and largest ratio of the repaired path's time cost to the unrepaired one's, and
 // the summed planning time of both.
 //
 // Usage: repair_benchmark [--maps N] [--families comb,spiral,...] [--per-map]
@@ -80,8 +79,7 @@ double reachablePercent(const PlannedMission& planned, const Mission& mission) {
   const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts,
                                     FrustumSensor::fromParameters(mission.parameters),
                                     kinematic_coverage::core::reportingResolution(),
-                                    kinematic_coverage::core::kReportingGridAngle,
-                                    kinematic_coverage::core::ReachableRim::kExact);
+                                    kinematic_coverage::core::kReportingGridAngle);
   return evaluator.report(evaluator.seeWaypointPath(planned.plan.waypoints))
       .reachable_coverage_percent;
 }

@@ -1,10 +1,11 @@
 // Trajectory benchmark: smoothing (Algorithm 1), sampling and timing a 10 000-waypoint
 // boustrophedon path (lanes 100 m long and 2 m apart, r = 1 m, 20 rectangular obstacles
-// beside the lanes). Prints the path's figures under both smoothing strategies, then the
-// median, minimum and maximum of N runs (default 21) of each stage; the pose buffer is
+// beside the lanes). Prints the path's figures under the three smoothing strategies, then
+// the median, minimum and maximum of N runs (default 21) of each stage; the pose buffer is
 // reused between runs, as the smooth_trajectory_generator node does. The global strategy's
-// smoothing (GlobalPathSmoother with the default options) is timed on the same path as a
-// separate row, not part of the total.
+// smoothing (GlobalPathSmoother) is timed on the same path as a separate row, not part of
+// the total, and so is the coverage-safe strategy's (the default), over at most 3 runs: it
+// measures the path's coverage on a raster of millions of cells.
 //
 //   trajectory_benchmark [--runs N]
 #include <algorithm>
@@ -20,6 +21,9 @@
 #include "trajectory_generation_tools/trajectory/trajectory_timing.h"
 
 namespace {
+
+/// Runs of the coverage-safe smoothing timed (each takes seconds on this path).
+constexpr int kCoverageSafeRuns = 3;
 
 using Clock = std::chrono::steady_clock;
 
@@ -64,10 +68,17 @@ int main(int argc, char** argv) {
   const kinematic_coverage::core::TrajectorySampler sampler(parameters);
   const kinematic_coverage::core::TrajectoryTiming timing(parameters);
 
-  std::vector<double> smooth_ms, sample_ms, time_ms, total_ms, global_ms;
+  std::vector<double> smooth_ms, sample_ms, time_ms, total_ms, global_ms, safe_ms;
+  kinematic_coverage::core::PlannerParameters global_parameters = parameters;
+  global_parameters.smoothing_strategy = "global";
   const kinematic_coverage::core::GlobalSmoothingOptions global_options =
-      kinematic_coverage::core::GlobalSmoothingOptions::fromParameters(parameters);
+      kinematic_coverage::core::GlobalSmoothingOptions::fromParameters(global_parameters);
+  kinematic_coverage::core::PlannerParameters safe_parameters = parameters;
+  safe_parameters.smoothing_strategy = "coverage_safe";
+  const kinematic_coverage::core::GlobalSmoothingOptions safe_options =
+      kinematic_coverage::core::GlobalSmoothingOptions::fromParameters(safe_parameters);
   kinematic_coverage::core::SmoothedPath global_path;
+  kinematic_coverage::core::SmoothedPath safe_path;
   kinematic_coverage::core::SmoothedPath path;
   std::vector<kinematic_coverage::core::TrajectoryPose> poses;
   double traversal_time_s = 0.0;
@@ -87,7 +98,16 @@ int main(int argc, char** argv) {
     global_path =
         kinematic_coverage::core::GlobalPathSmoother(area, global_options).smooth(waypoints);
     global_ms.push_back(millisecondsSince(global_start));
+    if (run < kCoverageSafeRuns) {
+      const Clock::time_point safe_start = Clock::now();
+      safe_path =
+          kinematic_coverage::core::GlobalPathSmoother(area, safe_options).smooth(waypoints);
+      safe_ms.push_back(millisecondsSince(safe_start));
+    }
   }
+  std::vector<kinematic_coverage::core::TrajectoryPose> safe_poses;
+  sampler.sample(safe_path.primitives, safe_poses);
+  const double safe_time_s = timing.assignTimes(safe_path.primitives, safe_poses);
   std::vector<kinematic_coverage::core::TrajectoryPose> global_poses;
   sampler.sample(global_path.primitives, global_poses);
   const double global_time_s = timing.assignTimes(global_path.primitives, global_poses);
@@ -97,16 +117,21 @@ int main(int argc, char** argv) {
   std::printf("| local | %zu | %d / %d | %zu | %zu | %.1f |\n", waypoints.size(),
               path.statistics.turns_smoothed, path.statistics.turns_total, path.primitives.size(),
               poses.size(), traversal_time_s);
-  std::printf("| global | %zu | %d / %d | %zu | %zu | %.1f |\n\n", waypoints.size(),
+  std::printf("| global | %zu | %d / %d | %zu | %zu | %.1f |\n", waypoints.size(),
               global_path.statistics.turns_smoothed, global_path.statistics.turns_total,
               global_path.primitives.size(), global_poses.size(), global_time_s);
+  std::printf("| coverage_safe | %zu | %d / %d | %zu | %zu | %.1f |\n\n", waypoints.size(),
+              safe_path.statistics.turns_smoothed, safe_path.statistics.turns_total,
+              safe_path.primitives.size(), safe_poses.size(), safe_time_s);
   std::printf(
       "| stage | median ms (timing) | min ms (timing) | max ms (timing) |\n|---|---|---|---|\n");
-  const std::pair<const char*, std::vector<double>*> stages[] = {{"smoothing", &smooth_ms},
-                                                                 {"sampling", &sample_ms},
-                                                                 {"timing", &time_ms},
-                                                                 {"total", &total_ms},
-                                                                 {"global smoothing", &global_ms}};
+  const std::pair<const char*, std::vector<double>*> stages[] = {
+      {"smoothing", &smooth_ms},
+      {"sampling", &sample_ms},
+      {"timing", &time_ms},
+      {"total", &total_ms},
+      {"global smoothing", &global_ms},
+      {"coverage-safe smoothing", &safe_ms}};
   for (const auto& [name, times] : stages) {
     const Summary summary = summarize(*times);
     std::printf("| %s | %.2f | %.2f | %.2f |\n", name, summary.median, summary.min, summary.max);

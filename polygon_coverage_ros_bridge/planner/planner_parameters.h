@@ -24,12 +24,13 @@ struct PlannerParameters {
   double sensor_distance = 3.0;          ///< m between sensor and bottom
   double lateral_overlap = 0.4;          ///< fraction in [0, 1)
   /// Patches driven where the planned sweeps leave reachable area unseen (UnseenAreaRepair).
-  bool coverage_repair = false;
+  bool coverage_repair = true;
   bool smoothing = true;        ///< false: segments and rotations
   double turning_radius = 1.0;  ///< m
-  /// "global": every corner's smoothing chosen jointly, minimising traversal time;
-  /// "local": the thesis's Algorithm 1, corner by corner.
-  std::string smoothing_strategy = "global";
+  /// "coverage_safe": as "global", keeping what the sharp path sees; "global": every
+  /// corner's smoothing chosen jointly, minimising traversal time; "local": the thesis's
+  /// Algorithm 1, corner by corner.
+  std::string smoothing_strategy = "coverage_safe";
   double min_turning_radius = 0.0;         ///< m, global only; 0: equal to turning_radius
   bool coverage_preserving = false;        ///< global only: smooth only where nothing goes unseen
   double segment_sampling_distance = 0.5;  ///< m

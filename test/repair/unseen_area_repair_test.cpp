@@ -21,7 +21,7 @@ constexpr double kLegTolerance = 1e-6;
 double unseenArea(const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& parts,
                   const FrustumSensor& sensor, const std::vector<Point2>& waypoints) {
   const CoverageEvaluator evaluator(free_area, parts, sensor, reportingResolution(),
-                                    kReportingGridAngle, ReachableRim::kExact);
+                                    kReportingGridAngle);
   return evaluator.report(evaluator.seeWaypointPath(legHeadingPoses(waypoints)))
       .unseen_reachable_area_m2;
 }
@@ -242,8 +242,7 @@ TEST(UnseenAreaRepair, PlansOfTheHardMapsSeeTheirReachableArea) {
       const std::vector<Point2>& before = plans.before;
       const std::vector<Point2>& after = plans.after;
       const CoverageEvaluator evaluator(repaired.free_area, repaired.plan.offset_parts,
-                                        plans.sensor, reportingResolution(), kReportingGridAngle,
-                                        ReachableRim::kExact);
+                                        plans.sensor, reportingResolution(), kReportingGridAngle);
       const CoverageReport report_before =
           evaluator.report(evaluator.seeWaypointPath(legHeadingPoses(before)));
       const CoverageReport report_after =

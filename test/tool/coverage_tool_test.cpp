@@ -287,8 +287,8 @@ TEST(CoverageTool, PlansEveryPartOfASplitAreaAndNamesTheGap) {
 }
 
 TEST(CoverageTool, TheThesisPresetIsOneSwitchAway) {
-  // --config config/thesis.yaml plans as the thesis did: Algorithm 1's smoothing, the
-  // same as --set smoothing_strategy=local, and unlike the default strategy.
+  // --config config/thesis.yaml plans as the thesis did: Algorithm 1's smoothing and no
+  // coverage repair, the same as setting both, and unlike the defaults.
   const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_7_5.yaml";
   const auto traversal_time = [&](const std::string& name, const std::string& options) {
     const std::string out_dir = scratchDir() + "/" + name;
@@ -299,7 +299,8 @@ TEST(CoverageTool, TheThesisPresetIsOneSwitchAway) {
   };
   const double thesis =
       traversal_time("thesis", "--config '" + std::string(KC_SOURCE_DIR) + "/config/thesis.yaml'");
-  EXPECT_EQ(thesis, traversal_time("local", "--set smoothing_strategy=local"));
+  EXPECT_EQ(thesis,
+            traversal_time("local", "--set smoothing_strategy=local --set coverage_repair=false"));
   EXPECT_NE(thesis, traversal_time("default", ""));
   expectInvalid("plan '" + lake + "' --out '" + scratchDir() + "/x' --config /nonexistent.yaml",
                 "/nonexistent.yaml");

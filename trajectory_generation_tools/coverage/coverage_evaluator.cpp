@@ -57,8 +57,7 @@ RasterResolution reportingResolution() {
 CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
                                      const std::vector<PolygonWithHoles>& offset_parts,
                                      const FrustumSensor& sensor,
-                                     const RasterResolution& resolution, double grid_angle,
-                                     ReachableRim rim)
+                                     const RasterResolution& resolution, double grid_angle)
     : sensor_(requireValid(sensor)),
       grid_angle_(grid_angle),
       raster_(CoverageRaster::covering(turned(free_area, -grid_angle), resolution)),
@@ -76,12 +75,8 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
             << " m raster";
     throw InvalidInputError(message.str());
   }
-  reachable_area_ =
-      rim == ReachableRim::kExact
-          ? kinematic_coverage::core::reachableArea(raster_, free_area_, offset_free_area_,
-                                                    raster_parts, sensor_.length())
-          : kinematic_coverage::core::reachableArea(raster_, free_area_, offset_free_area_,
-                                                    sensor_.length());
+  reachable_area_ = kinematic_coverage::core::reachableArea(raster_, free_area_, offset_free_area_,
+                                                            raster_parts, sensor_.length());
 }
 
 Point2 CoverageEvaluator::toRaster(const Point2& p) const {

@@ -63,12 +63,6 @@ struct UnseenRegion {
   std::vector<Point2> samples;
 };
 
-/// How the evaluator draws the reachable area's rim: grown on the raster (reachableArea
-/// from masks, up to half a cell off either way: every documented figure so far), or
-/// measured against the offset free area's polygons (reachableArea from polygons, exact at
-/// the cells' centres: UnseenAreaRepair, which must not chase the grown rim's stray cells).
-enum class ReachableRim { kGrown, kExact };
-
 /// Evaluates what a sensor sees of a map: rasterizes the free area, the offset free area
 /// and the reachable area once, then measures trajectories or waypoint paths on them.
 class CoverageEvaluator {
@@ -83,8 +77,7 @@ class CoverageEvaluator {
   /// raster(), the masks and the seen areas are then in the raster's frame.
   CoverageEvaluator(const PolygonWithHoles& free_area,
                     const std::vector<PolygonWithHoles>& offset_parts, const FrustumSensor& sensor,
-                    const RasterResolution& resolution = {}, double grid_angle = 0.0,
-                    ReachableRim rim = ReachableRim::kGrown);
+                    const RasterResolution& resolution = {}, double grid_angle = 0.0);
 
   const CoverageRaster& raster() const { return raster_; }
   const CellMask& freeArea() const { return free_area_; }
