@@ -74,7 +74,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// Reachable coverage (percent) of a plan's waypoint path, the rim measured exactly.
+/// Reachable coverage (percent) of a plan's waypoint path, as metrics.json measures it.
 double reachablePercent(const PlannedMission& planned, const Mission& mission) {
   const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts,
                                     FrustumSensor::fromParameters(mission.parameters),

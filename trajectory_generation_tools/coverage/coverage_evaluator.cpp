@@ -62,13 +62,9 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
       grid_angle_(grid_angle),
       raster_(CoverageRaster::covering(turned(free_area, -grid_angle), resolution)),
       free_area_(raster_.rasterize(turned(free_area, -grid_angle))),
-      free_fractions_(raster_.areaFractions(turned(free_area, -grid_angle))),
-      offset_free_area_(free_area_.size(), 0) {
+      free_fractions_(raster_.areaFractions(turned(free_area, -grid_angle))) {
   const std::vector<PolygonWithHoles> raster_parts = turned(offset_parts, -grid_angle);
-  for (const PolygonWithHoles& part : raster_parts) {
-    const CellMask mask = raster_.rasterize(part);
-    for (std::size_t i = 0; i < mask.size(); ++i) offset_free_area_[i] |= mask[i];
-  }
+  offset_free_area_ = raster_.rasterize(raster_parts);
   if (CoverageRaster::countCells(offset_free_area_) == 0) {
     std::ostringstream message;
     message << "coverage: the offset free area covers no cell of the " << raster_.cellSize()
@@ -120,11 +116,7 @@ void CoverageEvaluator::requireOwnRaster(const SeenArea& seen) const {
 }
 
 void CoverageEvaluator::restrictReachableArea(const std::vector<PolygonWithHoles>& region) {
-  CellMask inside(reachable_area_.size(), 0);
-  for (const PolygonWithHoles& part : turned(region, -grid_angle_)) {
-    const CellMask mask = raster_.rasterize(part);
-    for (std::size_t i = 0; i < mask.size(); ++i) inside[i] |= mask[i];
-  }
+  const CellMask inside = raster_.rasterize(turned(region, -grid_angle_));
   for (std::size_t i = 0; i < inside.size(); ++i) reachable_area_[i] &= inside[i];
 }
 

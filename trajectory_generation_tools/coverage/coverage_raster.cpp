@@ -174,6 +174,15 @@ int CoverageRaster::firstColumnAtOrRightOf(double x) const {
   return static_cast<int>(std::min(column, static_cast<double>(columns_)));
 }
 
+CellMask CoverageRaster::rasterize(const std::vector<PolygonWithHoles>& polygons) const {
+  CellMask mask(cellCount(), 0);
+  for (const PolygonWithHoles& polygon : polygons) {
+    const CellMask part = rasterize(polygon);
+    for (std::size_t i = 0; i < part.size(); ++i) mask[i] |= part[i];
+  }
+  return mask;
+}
+
 CellMask CoverageRaster::rasterize(const PolygonWithHoles& polygon) const {
   requireFinite(polygon);
   std::vector<const Ring*> rings{&polygon.hull};

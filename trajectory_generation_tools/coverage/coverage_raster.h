@@ -83,6 +83,9 @@ class CoverageRaster {
   /// tile the plane share no cell). Throws InvalidInputError for non-finite coordinates.
   CellMask rasterize(const PolygonWithHoles& polygon) const;
 
+  /// The cells whose centres lie in any of the polygons (the union of their rasterizations).
+  CellMask rasterize(const std::vector<PolygonWithHoles>& polygons) const;
+
   /// Lines per cell row on which areaFractions measures the boundary cells.
   static constexpr int kFractionLines = 16;
 
