@@ -278,5 +278,39 @@ TEST(GlobalPathSmoother, CoverageSafeSmoothsWhatOverlappingLanesSeeAgain) {
   EXPECT_LT(lostReachable(area, 5.0, lanes(20, 2.0), path, sensor), 0.05);
 }
 
+TEST(GlobalPathSmoother, CoverageSafeTakesAGuardedCornerByAnArcThatLosesOnlyUnreachableArea) {
+  // A right angle 3 m from both walls under a 4 m x 3 m footprint: the reachable area ends
+  // 1.5 m beyond the path. The widest arc (3 m) cuts into it, so the corner is guarded; a
+  // tighter arc keeps every reachable cell the sharp turn sees and misses only what the
+  // in-place rotation's footprint corners sweep beyond the reachable rim. Coverage-safe
+  // smoothing takes that arc; the corner's own test in the free area (coverage_preserving's)
+  // would have kept the corner sharp.
+  const FrustumSensor sensor(4.0, 3.0, 0.0);
+  PolygonWithHoles room;
+  room.hull = {{-3, -3}, {23, -3}, {23, 23}, {-3, 23}};
+  const std::vector<Point2> corner{{0, 0}, {20, 0}, {20, 20}};
+  GlobalSmoothingOptions safe = options(3.0, 0.5);
+  safe.safe_sensor = sensor;
+  safe.wall_distance = 3.0;
+  const SmoothedPath plain = GlobalPathSmoother(room, options(3.0, 0.5)).smooth(corner);
+  const SmoothedPath path = GlobalPathSmoother(room, safe).smooth(corner);
+  testing::expectContinuousPath(path, 40.0);
+  EXPECT_GT(lostReachable(room, 3.0, corner, plain, sensor), 0.05);
+  EXPECT_LT(lostReachable(room, 3.0, corner, path, sensor), 0.05);
+  ASSERT_EQ(path.statistics.inner, 1);
+  EXPECT_EQ(path.statistics.kept_for_coverage, 0);
+  CornerSmoothing taken;
+  for (const PathPrimitive& p : path.primitives) {
+    if (p.kind() == PrimitiveKind::kArc) taken.arcs.push_back(p);
+  }
+  ASSERT_EQ(taken.arcs.size(), 1u);
+  const double radius = taken.arcs.front().radius();
+  EXPECT_LT(radius, 3.0);
+  taken.entry_distance = radius;  // a right angle's inner arc starts r before the corner
+  taken.exit_distance = radius;
+  const BoundaryEdgeIndex index(room);
+  EXPECT_FALSE(CornerCoverageCheck(index, sensor).preserves(corner, taken));
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <optional>
+#include <random>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -110,6 +111,80 @@ TEST(PathCoverageCheck, LaterCallsCountAsAFreshCheckDoes) {
     for (const std::size_t cells : remembered) total += cells;
     EXPECT_GT(total, 0u);  // the arcs at the walls cut area the sharp turns see
   }
+}
+
+/// The sharp path `waypoints` from corner - 1 to corner + 1 with the inner smoothing of
+/// radius r at interior corner `corner`: what lostCellsReplacing takes for it.
+std::vector<PathPrimitive> innerArcReplacement(const std::vector<Point2>& waypoints,
+                                               std::size_t corner, double r) {
+  const std::vector<Point2> legs{waypoints[corner - 1], waypoints[corner], waypoints[corner + 1]};
+  ReplacedStretch unused;
+  return withInnerArc(legs, 1, r, &unused);
+}
+
+TEST(PathCoverageCheck, OneCornerReplacedLosesWhatTheWholePathCheckFinds) {
+  // Lawnmowers in a room with random lane lengths and spacing (fixed seed): smoothing one
+  // corner at a time, the windowed check of that corner alone counts what the whole-path
+  // check counts for the same path.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> spacing(1.5, 4.5);
+  std::uniform_real_distribution<double> jitter(-3.0, 3.0);
+  for (int trial = 0; trial < 4; ++trial) {
+    std::vector<Point2> path;
+    double y = 0.0;
+    for (int lane = 0; lane < 5; ++lane) {
+      const double near_end = 2.0 + (lane % 2 == 0 ? 0.0 : jitter(random) + 3.0);
+      const double far_end = 28.0 + (lane % 2 == 0 ? jitter(random) : 0.0);
+      if (lane % 2 == 0) {
+        path.insert(path.end(), {{near_end, y}, {far_end, y}});
+      } else {
+        path.insert(path.end(), {{far_end, y}, {near_end, y}});
+      }
+      y += spacing(random);
+    }
+    PolygonWithHoles area;
+    area.hull = {{-1, -2}, {33, -2}, {33, y + 1}, {-1, y + 1}};
+    PathCoverageCheck check(area, 1.0, kSensor, path);
+    std::size_t lost_somewhere = 0;
+    for (std::size_t corner = 1; corner + 1 < path.size(); ++corner) {
+      ReplacedStretch stretch;
+      const std::vector<PathPrimitive> whole = withInnerArc(path, corner, 1.0, &stretch);
+      const std::size_t expected =
+          PathCoverageCheck(area, 1.0, kSensor, path).lostCells(whole, {stretch}).front();
+      const std::size_t windowed = check.lostCellsReplacing(
+          corner - 1, corner, innerArcReplacement(path, corner, 1.0), stretch);
+      EXPECT_NEAR(static_cast<double>(windowed), static_cast<double>(expected), kRoundingCells)
+          << "trial " << trial << ", corner " << corner;
+      lost_somewhere += expected;
+    }
+    EXPECT_GT(lost_somewhere, 10 * kRoundingCells);  // arcs at the walls cut reachable area
+  }
+}
+
+TEST(PathCoverageCheck, OneCornerReplacedAtADeadEndLosesItsTipUnlessAnotherLegSeesIt) {
+  const std::vector<Point2> dead_end{{0, 0}, {0, 40}, {3, 0}};
+  ReplacedStretch stretch;
+  withInnerArc(dead_end, 1, 1.0, &stretch);
+  const PathCoverageCheck check({}, 0.0, kSensor, dead_end);
+  EXPECT_GT(check.lostCellsReplacing(0, 1, innerArcReplacement(dead_end, 1, 1.0), stretch) *
+                check.cellArea(),
+            10.0);  // m^2
+
+  // Later legs that sweep both lanes and the end again see what the arc cuts; the legs
+  // replaced are the same (the first two), the rest of the path stays sharp.
+  std::vector<Point2> revisited = dead_end;
+  for (const Point2& p : {Point2(-0.5, 0), Point2(-0.5, 41), Point2(3.5, 41), Point2(3.5, 0)}) {
+    revisited.push_back(p);
+  }
+  const PathCoverageCheck revisited_check({}, 0.0, kSensor, revisited);
+  EXPECT_LE(
+      revisited_check.lostCellsReplacing(0, 1, innerArcReplacement(revisited, 1, 1.0), stretch),
+      kRoundingCells);
+  // The sharp corner itself, as its own replacement, loses nothing.
+  const std::vector<std::optional<CornerSmoothing>> sharp(1);
+  EXPECT_EQ(check.lostCellsReplacing(
+                0, 1, SmoothedPathAssembler::assemble(dead_end, sharp).primitives, dead_end),
+            0u);
 }
 
 TEST(PathCoverageCheck, ToleratesAShareOfWhatTheSharpPathSees) {

@@ -34,6 +34,11 @@ constexpr double kSameEntryTolerance = 1e-9;
 /// variant fits, but a time-minimising choice would take everywhere.
 constexpr double kMaxTangentReachRadii = 4.0;
 
+/// Coverage-safe smoothing: a guarded corner's smoothing that loses at most this many
+/// cells of PathCoverageCheck's raster keeps coverage (the sharp path and the smoothing are
+/// rasterized differently: swept rotation sectors against sampled arcs).
+constexpr std::size_t kGuardedToleratedCells = 2;
+
 /// The runs along the middle leg (fractions of it, from the first corner) of the bulb turns
 /// tried at every pair of corners turning the same way: touching the middle leg's middle,
 /// along its middle half, and along all of it (through both corners, whose footprints see
@@ -126,8 +131,6 @@ GlobalSmoothingProgramme::GlobalSmoothingProgramme(const GlobalPathSmoother& smo
     : smoother_(smoother), points_(points) {
   if (smoother_.options_.preserved_sensor) {
     coverage_.emplace(smoother_.index_, *smoother_.options_.preserved_sensor);
-  } else if (smoother_.options_.safe_sensor) {
-    coverage_.emplace(smoother_.index_, *smoother_.options_.safe_sensor);
   }
   const std::size_t legs = points_.size() < 2 ? 0 : points_.size() - 1;
   leg_length_.resize(legs);
@@ -256,14 +259,31 @@ std::optional<double> GlobalSmoothingProgramme::legPiece(
 }
 
 bool GlobalSmoothingProgramme::preservesCoverage(
-    std::size_t i, std::size_t j, std::vector<std::vector<CoverageVerdict>>& verdicts) const {
+    std::size_t i, std::size_t j, std::vector<std::vector<CoverageVerdict>>& verdicts,
+    const PathCoverageCheck* path_check) const {
   const GlobalSmoothingCandidate& candidate = candidates_[i][j];
-  if (!coverage_ || !candidate.smoothing) return true;
+  if ((!coverage_ && !path_check) || !candidate.smoothing) return true;
   CoverageVerdict& verdict = verdicts[i][j];
   if (verdict == CoverageVerdict::kUnchecked) {
-    verdict = coverage_->preserves(candidate.corner_path, *candidate.smoothing)
-                  ? CoverageVerdict::kPreserves
-                  : CoverageVerdict::kRefused;
+    bool preserves = false;
+    if (path_check) {
+      // The candidate in the sharp path: its legs driven from their starts through its
+      // arcs to their ends, every other corner sharp.
+      const std::size_t first_leg = i + 1 - candidate.corners();
+      const std::size_t last_leg = i + 1;
+      const std::vector<Point2> legs(points_.begin() + static_cast<std::ptrdiff_t>(first_leg),
+                                     points_.begin() + static_cast<std::ptrdiff_t>(last_leg + 2));
+      std::vector<std::optional<CornerSmoothing>> smoothing(legs.size() - 2);
+      smoothing.front() = candidate.smoothing;
+      const std::vector<PathPrimitive> replacement =
+          SmoothedPathAssembler::assemble(legs, smoothing).primitives;
+      preserves =
+          path_check->lostCellsReplacing(first_leg, last_leg, replacement,
+                                         replacedStretch(i, candidate)) <= kGuardedToleratedCells;
+    } else {
+      preserves = coverage_->preserves(candidate.corner_path, *candidate.smoothing);
+    }
+    verdict = preserves ? CoverageVerdict::kPreserves : CoverageVerdict::kRefused;
   }
   return verdict == CoverageVerdict::kPreserves;
 }
@@ -296,7 +316,7 @@ GlobalSmoothingEvaluation GlobalSmoothingProgramme::evaluate(const GlobalSmoothi
     if (choice[i] == kNoCandidate) continue;
     const std::size_t j = static_cast<std::size_t>(choice[i]);
     const GlobalSmoothingCandidate& current = candidates_[i][j];
-    if (smoother_.options_.preserved_sensor && !preservesCoverage(i, j, verdict_)) {
+    if (smoother_.options_.preserved_sensor && !preservesCoverage(i, j, verdict_, nullptr)) {
       return infeasible;
     }
     const std::optional<double> piece = legPiece(i + 1 - current.corners(), previous, &current);
@@ -375,14 +395,15 @@ GlobalSmoothingChoice GlobalSmoothingProgramme::solve(
 bool GlobalSmoothingProgramme::refuseUnpreserved(const GlobalSmoothingChoice& choice,
                                                  const std::vector<bool>& guarded,
                                                  std::vector<std::vector<CoverageVerdict>>& verdict,
-                                                 std::vector<bool>& refused_at) const {
+                                                 std::vector<bool>& refused_at,
+                                                 const PathCoverageCheck* path_check) const {
   bool refused = false;
   for (std::size_t i = 0; i < choice.size(); ++i) {
     if (choice[i] == kNoCandidate || !guarded[i]) continue;
     const std::size_t j = static_cast<std::size_t>(choice[i]);
     const GlobalSmoothingCandidate& candidate = candidates_[i][j];
     if (!candidate.smoothing || verdict[i][j] != CoverageVerdict::kUnchecked) continue;
-    if (!preservesCoverage(i, j, verdict)) {
+    if (!preservesCoverage(i, j, verdict, path_check)) {
       refused_at[i] = true;
       if (candidate.corners() == 2) refused_at[i - 1] = true;
       refused = true;
@@ -393,14 +414,15 @@ bool GlobalSmoothingProgramme::refuseUnpreserved(const GlobalSmoothingChoice& ch
 
 GlobalSmoothingChoice GlobalSmoothingProgramme::solveGuarded(
     const std::vector<bool>& guarded, std::vector<std::vector<CoverageVerdict>>& verdict,
-    std::vector<bool>& refused_at, double* least) const {
+    std::vector<bool>& refused_at, double* least, const PathCoverageCheck* path_check) const {
   // Only the smoothings the programme chooses are checked (each check rasterizes the
   // corner): a refused one is dropped and the programme runs again, until every chosen
   // smoothing of a guarded corner preserves coverage. Every round drops a candidate, and
   // the result is the fastest choice among the candidates that preserve coverage, as if
   // all had been checked first.
   GlobalSmoothingChoice choice = solve(verdict, least);
-  while (coverage_ && refuseUnpreserved(choice, guarded, verdict, refused_at)) {
+  while ((coverage_ || path_check) &&
+         refuseUnpreserved(choice, guarded, verdict, refused_at, path_check)) {
     choice = solve(verdict, least);
   }
   return choice;
@@ -431,12 +453,10 @@ std::vector<Point2> GlobalSmoothingProgramme::replacedStretch(
   return stretch;
 }
 
-void GlobalSmoothingProgramme::keepCoverageSafe(GlobalSmoothingPlan& plan,
+void GlobalSmoothingProgramme::keepCoverageSafe(GlobalSmoothingPlan& plan, PathCoverageCheck& check,
                                                 std::vector<bool>& guarded,
                                                 std::vector<std::vector<CoverageVerdict>>& verdict,
                                                 std::vector<bool>& refused_at) const {
-  PathCoverageCheck check(smoother_.free_area_, smoother_.options_.wall_distance,
-                          *smoother_.options_.safe_sensor, points_);
   // Every round guards a corner or refuses a candidate, so the rounds end; the all-sharp
   // choice loses nothing.
   for (;;) {
@@ -474,7 +494,7 @@ void GlobalSmoothingProgramme::keepCoverageSafe(GlobalSmoothingPlan& plan,
       changed = true;
     }
     if (!changed) return;
-    plan.choice = solveGuarded(guarded, verdict, refused_at, &plan.time);
+    plan.choice = solveGuarded(guarded, verdict, refused_at, &plan.time, &check);
   }
 }
 
@@ -497,9 +517,11 @@ GlobalSmoothingPlan GlobalSmoothingProgramme::plan() const {
   // corners whose smoothing the whole-path check finds losing area.
   std::vector<bool> guarded(corners, smoother_.options_.preserved_sensor.has_value());
   std::vector<bool> coverage_refused(corners, false);
-  plan.choice = solveGuarded(guarded, verdict, coverage_refused, &plan.time);
+  plan.choice = solveGuarded(guarded, verdict, coverage_refused, &plan.time, nullptr);
   if (smoother_.options_.safe_sensor && !smoother_.options_.preserved_sensor) {
-    keepCoverageSafe(plan, guarded, verdict, coverage_refused);
+    PathCoverageCheck check(smoother_.free_area_, smoother_.options_.wall_distance,
+                            *smoother_.options_.safe_sensor, points_);
+    keepCoverageSafe(plan, check, guarded, verdict, coverage_refused);
   }
 
   plan.smoothings = smoothingsOf(plan.choice);

@@ -10,6 +10,7 @@
 #include "trajectory_generation_tools/smoothing/corner_coverage_check.h"
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
 #include "trajectory_generation_tools/smoothing/global_smoothing_options.h"
+#include "trajectory_generation_tools/smoothing/path_coverage_check.h"
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
 
 namespace kinematic_coverage::core {
@@ -76,8 +77,9 @@ class GlobalPathSmoother;
 /// must also preserve coverage (CornerCoverageCheck). With a safe sensor, the chosen
 /// smoothings together must see what the sharp path sees (PathCoverageCheck), up to its
 /// tolerated loss: the corners whose smoothings lose the most reachable area are guarded
-/// (their smoothings must then preserve coverage) until the rest lose no more than that,
-/// and a guarded corner's smoothing that still loses area is refused.
+/// (their smoothings must then keep what the sharp path sees with only that corner
+/// smoothed) until the rest lose no more than that, and a guarded corner's smoothing that
+/// still loses area is refused.
 ///
 /// The objective is the sum of the pieces' times under the velocity model: each arc chain
 /// driven at its speed limit min(v_max, yaw_rate_max * radius), a sharp corner as stop,
@@ -134,22 +136,27 @@ class GlobalSmoothingProgramme {
   std::optional<double> legPiece(std::size_t leg, const GlobalSmoothingCandidate* previous,
                                  const GlobalSmoothingCandidate* next) const;
   /// Whether candidate j of corner i preserves coverage (checked once, then remembered in
-  /// `verdicts`).
+  /// `verdicts`): with `path_check` (coverage-safe smoothing), the reachable area the
+  /// whole sharp path sees is kept with only this corner smoothed; without, the corner's
+  /// own footprints keep what its sharp turn saw (CornerCoverageCheck).
   bool preservesCoverage(std::size_t i, std::size_t j,
-                         std::vector<std::vector<CoverageVerdict>>& verdicts) const;
+                         std::vector<std::vector<CoverageVerdict>>& verdicts,
+                         const PathCoverageCheck* path_check) const;
   /// Checks the chosen smoothings of the `guarded` corners not checked before; marks a
   /// corner whose choice is refused in `refused_at`. True when any was refused.
   bool refuseUnpreserved(const GlobalSmoothingChoice& choice, const std::vector<bool>& guarded,
                          std::vector<std::vector<CoverageVerdict>>& verdict,
-                         std::vector<bool>& refused_at) const;
+                         std::vector<bool>& refused_at, const PathCoverageCheck* path_check) const;
   /// The fastest choice whose guarded corners' smoothings preserve coverage.
   GlobalSmoothingChoice solveGuarded(const std::vector<bool>& guarded,
                                      std::vector<std::vector<CoverageVerdict>>& verdict,
-                                     std::vector<bool>& refused_at, double* least) const;
+                                     std::vector<bool>& refused_at, double* least,
+                                     const PathCoverageCheck* path_check) const;
   /// Coverage-safe smoothing's rounds after the first choice in `plan`: the whole-path
   /// check's largest losers are guarded (or, if guarded already, their choice refused)
   /// and the programme chooses again, until the rest lose no more than it tolerates.
-  void keepCoverageSafe(GlobalSmoothingPlan& plan, std::vector<bool>& guarded,
+  void keepCoverageSafe(GlobalSmoothingPlan& plan, PathCoverageCheck& check,
+                        std::vector<bool>& guarded,
                         std::vector<std::vector<CoverageVerdict>>& verdict,
                         std::vector<bool>& refused_at) const;
   /// The stretch of the sharp path (a ReplacedStretch of PathCoverageCheck) that
@@ -165,6 +172,7 @@ class GlobalSmoothingProgramme {
                               double* least) const;
 
   const GlobalPathSmoother& smoother_;
+  /// Coverage-preserving smoothing's test of each corner.
   std::optional<CornerCoverageCheck> coverage_;
   std::vector<Point2> points_;
   // Legs k = P_k -> P_k+1; a leg that is clear and starts in the free area holds every

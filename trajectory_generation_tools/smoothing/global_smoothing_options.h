@@ -24,7 +24,8 @@ struct GlobalSmoothingOptions {
   /// Set: coverage-safe smoothing (`smoothing_strategy: coverage_safe`); the path as a
   /// whole must see what its sharp version sees with this sensor (PathCoverageCheck), and
   /// a corner whose smoothing loses area nothing else sees is smoothed only in ways that
-  /// keep it (CornerCoverageCheck) or left sharp.
+  /// keep it with the rest of the path sharp (PathCoverageCheck::lostCellsReplacing) or
+  /// left sharp.
   std::optional<FrustumSensor> safe_sensor;
   /// Coverage-safe only: the planner's wall distance (m, >= 0), which shapes the reachable
   /// area whose coverage is kept.

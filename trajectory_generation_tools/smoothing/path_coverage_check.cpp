@@ -115,6 +115,18 @@ PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double w
     reachable_ = reachableArea(*raster_, free, offset, sensor.length());
   }
 
+  rotations_.resize(waypoints.size());
+  for (std::size_t k = 0; k + 1 < waypoints.size(); ++k) {
+    legs_.push_back(PathPrimitive::segment(waypoints[k], waypoints[k + 1]));
+    if (k == 0) continue;
+    const Point2 in = waypoints[k] - waypoints[k - 1];
+    const Point2 out = waypoints[k + 1] - waypoints[k];
+    const double turn = std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out));
+    if (turn != 0.0 && in.norm() > kSamePositionTolerance && out.norm() > kSamePositionTolerance) {
+      rotations_[k] = PathPrimitive::rotation(waypoints[k], std::atan2(in.y(), in.x()), turn);
+    }
+  }
+
   // waypointPathPoses takes each leg's heading from the positions; a yaw is used only
   // for a path at a single position.
   std::vector<Pose2> path;
@@ -214,6 +226,66 @@ std::vector<std::size_t> PathCoverageCheck::lostCells(
       }
     }
     measured_.push_back({stretch, std::move(nearby[s]), lost[s]});
+  }
+  return lost;
+}
+
+std::size_t PathCoverageCheck::lostCellsReplacing(std::size_t first_leg, std::size_t last_leg,
+                                                  const std::vector<PathPrimitive>& replacement,
+                                                  const ReplacedStretch& stretch) const {
+  if (!raster_ || stretch.empty()) return 0;
+  const double near = reach_ + raster_->cellSize();
+  Box box;
+  for (const Point2& p : stretch) box.extend(p);
+  box = grown(box, near);
+
+  // A window of the raster around the stretch, its cells aligned with the raster's.
+  const double cell = raster_->cellSize();
+  const Point2 origin = raster_->origin();
+  const int first_column =
+      std::max(0, static_cast<int>(std::floor((box.min().x() - origin.x()) / cell)));
+  const int last_column = std::min(
+      raster_->columns() - 1, static_cast<int>(std::floor((box.max().x() - origin.x()) / cell)));
+  const int first_row =
+      std::max(0, static_cast<int>(std::floor((box.min().y() - origin.y()) / cell)));
+  const int last_row = std::min(raster_->rows() - 1,
+                                static_cast<int>(std::floor((box.max().y() - origin.y()) / cell)));
+  if (first_column > last_column || first_row > last_row) return 0;
+  const CoverageRaster window(origin + cell * Point2(first_column, first_row), cell,
+                              last_column - first_column + 1, last_row - first_row + 1);
+
+  // What the path sees there with the replacement: the replacement, and every other sharp
+  // leg and rotation that can see into the window, each its own pass.
+  SeenArea seen(window);
+  seen.addSweptPath(sweptPoses(replacement, cell, reach_), sensor_);
+  const auto add = [&](const PathPrimitive& primitive) {
+    if (grown(extentOf(primitive), near).intersects(box)) {
+      seen.addSweptPath(sweptPoses({primitive}, cell, reach_), sensor_);
+    }
+  };
+  for (std::size_t k = 0; k < legs_.size(); ++k) {
+    if (k < first_leg || k > last_leg) add(legs_[k]);
+  }
+  for (std::size_t k = 0; k < rotations_.size(); ++k) {
+    if (rotations_[k] && (k <= first_leg || k > last_leg)) add(*rotations_[k]);
+  }
+
+  std::size_t lost = 0;
+  for (int row = first_row; row <= last_row; ++row) {
+    for (int column = first_column; column <= last_column; ++column) {
+      const std::size_t i = raster_->index(row, column);
+      if (reachable_[i] == 0 || !sharp_->seen(i) ||
+          seen.seen(window.index(row - first_row, column - first_column))) {
+        continue;
+      }
+      const Point2 centre = raster_->cellCentre(i);
+      for (std::size_t k = 0; k + 1 < stretch.size(); ++k) {
+        if (distanceToSegment(centre, stretch[k], stretch[k + 1]) <= near) {
+          ++lost;
+          break;
+        }
+      }
+    }
   }
   return lost;
 }

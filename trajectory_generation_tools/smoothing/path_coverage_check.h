@@ -51,6 +51,16 @@ class PathCoverageCheck {
   std::vector<std::size_t> lostCells(const std::vector<PathPrimitive>& primitives,
                                      const std::vector<ReplacedStretch>& stretches);
 
+  /// The reachable cells within the sensor's reach of `stretch` that the sharp path sees
+  /// and would no longer see if its legs `first_leg` to `last_leg` (and the in-place
+  /// rotations between them) were driven as `replacement` instead, the rest of the path
+  /// staying sharp: the test of one guarded corner's smoothing (`replacement` runs from
+  /// the first leg's start to the last leg's end). Cheap: measured on a window of the
+  /// raster around the stretch, from the sharp primitives that can see into it.
+  std::size_t lostCellsReplacing(std::size_t first_leg, std::size_t last_leg,
+                                 const std::vector<PathPrimitive>& replacement,
+                                 const ReplacedStretch& stretch) const;
+
   /// Area (m^2) of one cell of the raster.
   double cellArea() const { return raster_ ? raster_->cellArea() : 0.0; }
 
@@ -67,6 +77,10 @@ class PathCoverageCheck {
   std::optional<CoverageRaster> raster_;
   CellMask reachable_;
   std::optional<SeenArea> sharp_;
+  /// The sharp path as primitives: leg k from waypoint k to k + 1, and the in-place
+  /// rotation at waypoint k (1 to legs - 1; none at a waypoint where the heading keeps).
+  std::vector<PathPrimitive> legs_;
+  std::vector<std::optional<PathPrimitive>> rotations_;
   std::size_t tolerated_lost_cells_ = 0;
 
   /// A stretch measured by an earlier call: its neighbourhood and its lost cells.
