@@ -15,6 +15,7 @@ packages=(
   libnav-msgs-dev ros-nav-msgs python3-nav-msgs
   libvisualization-msgs-dev ros-visualization-msgs python3-visualization-msgs python3-rosservice
   libtf2-ros-dev libtf2-geometry-msgs-dev tf2-tools rosbash
+  python3-rosnode python3-roswtf python3-rosbag
   libcgal-dev libeigen3-dev libyaml-cpp-dev libgtest-dev libbenchmark-dev libcairo2-dev
   librviz-dev rviz pluginlib-dev qtbase5-dev
   xvfb xauth xdotool x11-utils imagemagick

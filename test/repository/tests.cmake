@@ -1,5 +1,6 @@
-# Repository-wide checks: nothing outside the repository is used, and the figures in
-# docs/ are what their commands print (scripts/doc_figures.py; CI reruns the ci= rows).
+# Repository-wide checks: nothing outside the repository is used, the figures in docs/
+# are what their commands print (scripts/doc_figures.py; CI reruns the ci= rows), and every
+# key of package.xml is a rosdep key for Noetic on focal and for bookworm.
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
 add_test(NAME self_contained COMMAND ${PROJECT_SOURCE_DIR}/test/repository/self_contained_test.sh
   ${PROJECT_SOURCE_DIR})
@@ -8,3 +9,5 @@ add_test(NAME doc_figures COMMAND ${Python3_EXECUTABLE}
 set_tests_properties(doc_figures PROPERTIES TIMEOUT 1500)
 add_test(NAME doc_figures_checker COMMAND ${Python3_EXECUTABLE}
   ${PROJECT_SOURCE_DIR}/test/repository/doc_figures_test.py)
+add_test(NAME rosdep_keys COMMAND ${Python3_EXECUTABLE}
+  ${PROJECT_SOURCE_DIR}/test/repository/rosdep_keys_test.py)
