@@ -70,6 +70,53 @@ bool samePrimitives(const std::vector<PathPrimitive>& a, const std::vector<PathP
                     });
 }
 
+/// The cells of `raster` (rows and columns, inclusive) under `box`.
+struct CellWindow {
+  int first_column = 0;
+  int last_column = -1;
+  int first_row = 0;
+  int last_row = -1;
+
+  bool empty() const { return first_column > last_column || first_row > last_row; }
+};
+
+CellWindow cellWindow(const CoverageRaster& raster, const Box& box) {
+  const double cell = raster.cellSize();
+  const Point2& origin = raster.origin();
+  CellWindow window;
+  window.first_column =
+      std::max(0, static_cast<int>(std::floor((box.min().x() - origin.x()) / cell)));
+  window.last_column = std::min(raster.columns() - 1,
+                                static_cast<int>(std::floor((box.max().x() - origin.x()) / cell)));
+  window.first_row = std::max(0, static_cast<int>(std::floor((box.min().y() - origin.y()) / cell)));
+  window.last_row = std::min(raster.rows() - 1,
+                             static_cast<int>(std::floor((box.max().y() - origin.y()) / cell)));
+  return window;
+}
+
+/// The cells of `window` that are reachable, that `sharp` sees and `seen_now(row, column)`
+/// does not, and whose centres lie within `near` of `stretch`.
+template <typename SeenNow>
+std::size_t lostCellsIn(const CoverageRaster& raster, const CellWindow& window,
+                        const CellMask& reachable, const SeenArea& sharp,
+                        const ReplacedStretch& stretch, double near, SeenNow seen_now) {
+  std::size_t lost = 0;
+  for (int row = window.first_row; row <= window.last_row; ++row) {
+    for (int column = window.first_column; column <= window.last_column; ++column) {
+      const std::size_t i = raster.index(row, column);
+      if (reachable[i] == 0 || !sharp.seen(i) || seen_now(row, column)) continue;
+      const Point2 centre = raster.cellCentre(i);
+      for (std::size_t k = 0; k + 1 < stretch.size(); ++k) {
+        if (distanceToSegment(centre, stretch[k], stretch[k + 1]) <= near) {
+          ++lost;
+          break;
+        }
+      }
+    }
+  }
+  return lost;
+}
+
 }  // namespace
 
 PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
@@ -199,33 +246,11 @@ std::vector<std::size_t> PathCoverageCheck::lostCells(
                                          primitives.begin() + static_cast<std::ptrdiff_t>(k));
     smoothed.addSweptPath(sweptPoses(run, raster_->cellSize(), reach_), sensor_);
   }
-  const double cell = raster_->cellSize();
-  const Point2 origin = raster_->origin();
   for (const std::size_t s : unmeasured) {
-    const Box& box = boxes[s];
-    const int first_column =
-        std::max(0, static_cast<int>(std::floor((box.min().x() - origin.x()) / cell)));
-    const int last_column = std::min(
-        raster_->columns() - 1, static_cast<int>(std::floor((box.max().x() - origin.x()) / cell)));
-    const int first_row =
-        std::max(0, static_cast<int>(std::floor((box.min().y() - origin.y()) / cell)));
-    const int last_row = std::min(
-        raster_->rows() - 1, static_cast<int>(std::floor((box.max().y() - origin.y()) / cell)));
-    const ReplacedStretch& stretch = stretches[s];
-    for (int row = first_row; row <= last_row; ++row) {
-      for (int column = first_column; column <= last_column; ++column) {
-        const std::size_t i = raster_->index(row, column);
-        if (reachable_[i] == 0 || !sharp_->seen(i) || smoothed.seen(i)) continue;
-        const Point2 centre = raster_->cellCentre(i);
-        for (std::size_t k = 0; k + 1 < stretch.size(); ++k) {
-          if (distanceToSegment(centre, stretch[k], stretch[k + 1]) <= near) {
-            ++lost[s];
-            break;
-          }
-        }
-      }
-    }
-    measured_.push_back({stretch, std::move(nearby[s]), lost[s]});
+    lost[s] = lostCellsIn(
+        *raster_, cellWindow(*raster_, boxes[s]), reachable_, *sharp_, stretches[s], near,
+        [&](int row, int column) { return smoothed.seen(raster_->index(row, column)); });
+    measured_.push_back({stretches[s], std::move(nearby[s]), lost[s]});
   }
   return lost;
 }
@@ -240,19 +265,12 @@ std::size_t PathCoverageCheck::lostCellsReplacing(std::size_t first_leg, std::si
   box = grown(box, near);
 
   // A window of the raster around the stretch, its cells aligned with the raster's.
+  const CellWindow cells = cellWindow(*raster_, box);
+  if (cells.empty()) return 0;
   const double cell = raster_->cellSize();
-  const Point2 origin = raster_->origin();
-  const int first_column =
-      std::max(0, static_cast<int>(std::floor((box.min().x() - origin.x()) / cell)));
-  const int last_column = std::min(
-      raster_->columns() - 1, static_cast<int>(std::floor((box.max().x() - origin.x()) / cell)));
-  const int first_row =
-      std::max(0, static_cast<int>(std::floor((box.min().y() - origin.y()) / cell)));
-  const int last_row = std::min(raster_->rows() - 1,
-                                static_cast<int>(std::floor((box.max().y() - origin.y()) / cell)));
-  if (first_column > last_column || first_row > last_row) return 0;
-  const CoverageRaster window(origin + cell * Point2(first_column, first_row), cell,
-                              last_column - first_column + 1, last_row - first_row + 1);
+  const CoverageRaster window(
+      raster_->origin() + cell * Point2(cells.first_column, cells.first_row), cell,
+      cells.last_column - cells.first_column + 1, cells.last_row - cells.first_row + 1);
 
   // What the path sees there with the replacement: the replacement, and every other sharp
   // leg and rotation that can see into the window, each its own pass.
@@ -270,24 +288,9 @@ std::size_t PathCoverageCheck::lostCellsReplacing(std::size_t first_leg, std::si
     if (rotations_[k] && (k <= first_leg || k > last_leg)) add(*rotations_[k]);
   }
 
-  std::size_t lost = 0;
-  for (int row = first_row; row <= last_row; ++row) {
-    for (int column = first_column; column <= last_column; ++column) {
-      const std::size_t i = raster_->index(row, column);
-      if (reachable_[i] == 0 || !sharp_->seen(i) ||
-          seen.seen(window.index(row - first_row, column - first_column))) {
-        continue;
-      }
-      const Point2 centre = raster_->cellCentre(i);
-      for (std::size_t k = 0; k + 1 < stretch.size(); ++k) {
-        if (distanceToSegment(centre, stretch[k], stretch[k + 1]) <= near) {
-          ++lost;
-          break;
-        }
-      }
-    }
-  }
-  return lost;
+  return lostCellsIn(*raster_, cells, reachable_, *sharp_, stretch, near, [&](int row, int column) {
+    return seen.seen(window.index(row - cells.first_row, column - cells.first_column));
+  });
 }
 
 }  // namespace kinematic_coverage::core
