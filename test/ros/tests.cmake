@@ -17,10 +17,15 @@ if(catkin_FOUND)
   # GUI test of the rviz tools: needs a DISPLAY (xvfb-run). Registered as add_rostest
   # does, through gui_rostest.sh, which without a DISPLAY writes the result as skipped and
   # exits 77: ctest reports it skipped, catkin_test_results counts it skipped.
+  find_program(KINEMATIC_COVERAGE_ROSTEST rostest)
+  if(NOT KINEMATIC_COVERAGE_ROSTEST)
+    message(FATAL_ERROR "rostest not found: source your ROS setup or run "
+      "scripts/install_dependencies.sh")
+  endif()
   catkin_run_tests_target("rostest" test_ros_rviz_tool.test rostest-test_ros_rviz_tool.xml
     COMMAND "${PROJECT_SOURCE_DIR}/test/ros/gui_rostest.sh \
 ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/rostest-test_ros_rviz_tool.xml \
-${PYTHON_EXECUTABLE} /usr/bin/rostest --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} \
+${PYTHON_EXECUTABLE} ${KINEMATIC_COVERAGE_ROSTEST} --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} \
 --results-filename test_ros_rviz_tool.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" \
 ${PROJECT_SOURCE_DIR}/test/ros/rviz_tool.test"
     DEPENDENCIES ${KC_NODE_TARGETS} kinematic_coverage_rviz_plugins)
