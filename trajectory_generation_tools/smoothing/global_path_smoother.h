@@ -10,7 +10,6 @@
 #include "trajectory_generation_tools/smoothing/corner_coverage_check.h"
 #include "trajectory_generation_tools/smoothing/corner_smoothing.h"
 #include "trajectory_generation_tools/smoothing/global_smoothing_options.h"
-#include "trajectory_generation_tools/smoothing/path_coverage_check.h"
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
 
 namespace kinematic_coverage::core {
@@ -63,6 +62,7 @@ struct GlobalSmoothingPlan {
 };
 
 class GlobalPathSmoother;
+class PathCoverageCheck;
 
 /// The global strategy's optimisation problem for one path: the candidates of every corner,
 /// the feasibility and objective of any choice among them (evaluate), and the dynamic

@@ -59,6 +59,13 @@ Box extentOf(const PathPrimitive& primitive) {
   return box;
 }
 
+/// The box holding `stretch`, grown by `near`: where its lost cells can lie.
+Box nearBox(const ReplacedStretch& stretch, double near) {
+  Box box;
+  for (const Point2& p : stretch) box.extend(p);
+  return grown(box, near);
+}
+
 /// True when the two lists hold the same primitives, exactly.
 bool samePrimitives(const std::vector<PathPrimitive>& a, const std::vector<PathPrimitive>& b) {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(),
@@ -197,11 +204,7 @@ std::vector<std::size_t> PathCoverageCheck::lostCells(
   // can see them.
   const double near = reach_ + raster_->cellSize();
   std::vector<Box> boxes;
-  for (const ReplacedStretch& stretch : stretches) {
-    Box box;
-    for (const Point2& p : stretch) box.extend(p);
-    boxes.push_back(grown(box, near));
-  }
+  for (const ReplacedStretch& stretch : stretches) boxes.push_back(nearBox(stretch, near));
   std::vector<Box> primitive_boxes;
   for (const PathPrimitive& primitive : primitives) {
     primitive_boxes.push_back(grown(extentOf(primitive), near));
@@ -260,9 +263,7 @@ std::size_t PathCoverageCheck::lostCellsReplacing(std::size_t first_leg, std::si
                                                   const ReplacedStretch& stretch) const {
   if (!raster_ || stretch.empty()) return 0;
   const double near = reach_ + raster_->cellSize();
-  Box box;
-  for (const Point2& p : stretch) box.extend(p);
-  box = grown(box, near);
+  const Box box = nearBox(stretch, near);
 
   // A window of the raster around the stretch, its cells aligned with the raster's.
   const CellWindow cells = cellWindow(*raster_, box);
