@@ -47,6 +47,7 @@ const std::vector<ParameterField>& parameterFields() {
       {"turning_radius", &P::turning_radius},
       {"smoothing_strategy", &P::smoothing_strategy},
       {"min_turning_radius", &P::min_turning_radius},
+      {"max_turning_radius", &P::max_turning_radius},
       {"coverage_preserving", &P::coverage_preserving},
       {"segment_sampling_distance", &P::segment_sampling_distance},
       {"arc_sampling_distance", &P::arc_sampling_distance},

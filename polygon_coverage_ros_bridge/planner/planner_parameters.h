@@ -31,7 +31,10 @@ struct PlannerParameters {
   /// corner's smoothing chosen jointly, minimising traversal time; "local": the thesis's
   /// Algorithm 1, corner by corner.
   std::string smoothing_strategy = "coverage_safe";
-  double min_turning_radius = 0.0;         ///< m, global only; 0: equal to turning_radius
+  double min_turning_radius = 0.0;  ///< m, global only; 0: equal to turning_radius
+  /// m, coverage_safe only: the largest radius a corner may use, so that an arc is driven
+  /// at up to v_max; 0: max(turning_radius, v_max / yaw_rate_max).
+  double max_turning_radius = 0.0;
   bool coverage_preserving = false;        ///< global only: smooth only where nothing goes unseen
   double segment_sampling_distance = 0.5;  ///< m
   double arc_sampling_distance = 0.1;      ///< m

@@ -66,6 +66,13 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
         " is out of range: it must be in (0, turning_radius = " + formatNumber(p.turning_radius) +
         "], or 0 for equal to turning_radius (m)");
   }
+  if (!(std::isfinite(p.max_turning_radius) &&
+        (p.max_turning_radius == 0.0 || p.max_turning_radius >= p.turning_radius))) {
+    throw InvalidInputError(
+        "max_turning_radius = " + formatNumber(p.max_turning_radius) +
+        " is out of range: it must be at least turning_radius = " + formatNumber(p.turning_radius) +
+        ", or 0 for max(turning_radius, v_max / yaw_rate_max) (m)");
+  }
   requirePositive("segment_sampling_distance", p.segment_sampling_distance, "m");
   requirePositive("arc_sampling_distance", p.arc_sampling_distance, "m");
   requirePositive("rotation_sampling_angle", p.rotation_sampling_angle, "rad");

@@ -84,6 +84,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"turning_radius", "3.5"},
       {"smoothing_strategy", "local"},
       {"min_turning_radius", "1.5"},
+      {"max_turning_radius", "4"},
       {"coverage_preserving", "true"},
       {"segment_sampling_distance", "0.25"},
       {"arc_sampling_distance", "0.05"},
@@ -126,6 +127,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.turning_radius, 3.5);
   EXPECT_EQ(p.smoothing_strategy, "local");
   EXPECT_EQ(p.min_turning_radius, 1.5);
+  EXPECT_EQ(p.max_turning_radius, 4.0);
   EXPECT_TRUE(p.coverage_preserving);
   EXPECT_EQ(p.segment_sampling_distance, 0.25);
   EXPECT_EQ(p.arc_sampling_distance, 0.05);

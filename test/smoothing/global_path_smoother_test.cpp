@@ -46,6 +46,11 @@ TEST(GlobalPathSmoother, RejectsInvalidOptions) {
   GlobalSmoothingOptions slow = options(1.0, 1.0);
   slow.a_max = 0.0;
   EXPECT_THROW(GlobalPathSmoother({}, slow), InvalidInputError);
+  for (const double wider : {nan, -1.0, std::numeric_limits<double>::infinity()}) {
+    GlobalSmoothingOptions bad = options(1.0, 1.0);
+    bad.max_turning_radius = wider;
+    EXPECT_THROW(GlobalPathSmoother({}, bad), InvalidInputError);
+  }
   const GlobalPathSmoother smoother({}, options(1.0, 1.0));
   EXPECT_THROW(smoother.smooth(std::vector<Point2>{{0, 0}, {nan, 1}}), InvalidInputError);
 }
@@ -310,6 +315,53 @@ TEST(GlobalPathSmoother, CoverageSafeTakesAGuardedCornerByAnArcThatLosesOnlyUnre
   taken.exit_distance = radius;
   const BoundaryEdgeIndex index(room);
   EXPECT_FALSE(CornerCoverageCheck(index, sensor).preserves(corner, taken));
+}
+
+TEST(GlobalPathSmoother, CoverageSafeTakesTurnsAtTheWiderRadiusWhereTheTightOneCrawls) {
+  // Lanes 2 m apart under a 4 m wide footprint, a robot that turns as tight as 0.3 m but
+  // drives an arc at yaw_rate_max * radius: 0.15 m/s at 0.3 m. With max_turning_radius
+  // 1 m (v_max / yaw_rate_max, the fromParameters default) every U-turn is a half circle
+  // at full speed, which the neighbouring lanes' footprints see round; the path is faster
+  // and sees what the sharp path sees.
+  const FrustumSensor sensor(4.0, 3.0, 0.0);
+  GlobalSmoothingOptions tight = options(0.3, 0.3);
+  tight.makeCoverageSafe(sensor, 5.0);
+  GlobalSmoothingOptions wider = tight;
+  wider.max_turning_radius = wider.v_max / wider.yaw_rate_max;
+  const PolygonWithHoles area = lanesHull(20, 2.0);
+  const std::vector<Point2> points = lanes(20, 2.0);
+  const SmoothedPath slow = GlobalPathSmoother(area, tight).smooth(points);
+  const SmoothedPath fast = GlobalPathSmoother(area, wider).smooth(points);
+  testing::expectContinuousPath(fast, 100.0);
+  int wide_arcs = 0;
+  for (const PathPrimitive& p : fast.primitives) {
+    if (p.kind() != PrimitiveKind::kArc) continue;
+    EXPECT_GE(p.radius(), 0.3 - 1e-12);
+    EXPECT_LE(p.radius(), 1.0 + 1e-12);
+    EXPECT_GT(testing::sampledArcClearance(area, p, 0.005), 1e-9);
+    if (p.radius() > 0.99) ++wide_arcs;
+  }
+  EXPECT_GE(wide_arcs, 30);
+  EXPECT_LT(GlobalPathSmoother(area, wider).programme(points).plan().time,
+            0.95 * GlobalPathSmoother(area, tight).programme(points).plan().time);
+  EXPECT_LT(lostReachable(area, 5.0, points, fast, sensor), 0.05);
+  EXPECT_GE(fast.statistics.turns_smoothed, slow.statistics.turns_smoothed);
+}
+
+TEST(GlobalSmoothingOptions, CoverageSafeTriesTheRadiusOfAnArcAtFullSpeed) {
+  PlannerParameters parameters;
+  parameters.turning_radius = 0.3;
+  parameters.v_max = 0.6;
+  parameters.yaw_rate_max = 0.5;
+  EXPECT_DOUBLE_EQ(GlobalSmoothingOptions::fromParameters(parameters).max_turning_radius, 1.2);
+  parameters.max_turning_radius = 2.0;
+  EXPECT_DOUBLE_EQ(GlobalSmoothingOptions::fromParameters(parameters).max_turning_radius, 2.0);
+  parameters.max_turning_radius = 0.0;
+  parameters.turning_radius = 1.5;  // wider than the full-speed radius: nothing to add
+  EXPECT_DOUBLE_EQ(GlobalSmoothingOptions::fromParameters(parameters).max_turning_radius, 1.5);
+  parameters.smoothing_strategy = "global";  // global keeps the candidates it was measured with
+  parameters.turning_radius = 0.3;
+  EXPECT_EQ(GlobalSmoothingOptions::fromParameters(parameters).max_turning_radius, 0.0);
 }
 
 }  // namespace

@@ -69,6 +69,24 @@ TEST(ParameterValidator, RejectsANegativeWallDistance) {
             "wall_distance = -0.1 is out of range: it must be a finite number >= 0 (m)");
 }
 
+TEST(ParameterValidator, ChecksTheTurningRadii) {
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.max_turning_radius = 1.0; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.max_turning_radius = 2.5; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.max_turning_radius = 0.5; }),
+            "max_turning_radius = 0.5 is out of range: it must be at least turning_radius = 1, "
+            "or 0 for max(turning_radius, v_max / yaw_rate_max) (m)");
+  for (const double bad :
+       {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    const std::string message =
+        errorOf([bad](PlannerParameters& p) { p.max_turning_radius = bad; });
+    EXPECT_EQ(message.rfind("max_turning_radius = ", 0), 0u) << message;
+  }
+  EXPECT_EQ(errorOf([](PlannerParameters& p) {
+              p.min_turning_radius = 1.5;
+            }).rfind("min_turning_radius = 1.5 is out of range", 0),
+            0u);
+}
+
 TEST(ParameterValidator, RejectsOverlapOutsideZeroToOne) {
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.lateral_overlap = 1.0; }),
             "lateral_overlap = 1 is out of range: it must be in [0, 1)");

@@ -34,6 +34,10 @@ constexpr double kSameEntryTolerance = 1e-9;
 /// variant fits, but a time-minimising choice would take everywhere.
 constexpr double kMaxTangentReachRadii = 4.0;
 
+/// A larger radius (GlobalSmoothingOptions::max_turning_radius) is tried only when it is
+/// wider than turning_radius by more than this fraction.
+constexpr double kWiderRadiusMargin = 0.01;
+
 /// Coverage-safe smoothing: a guarded corner's smoothing that loses at most this many
 /// cells of PathCoverageCheck's raster keeps coverage (the sharp path and the smoothing are
 /// rasterized differently: swept rotation sectors against sampled arcs).
@@ -99,12 +103,19 @@ GlobalPathSmoother::GlobalPathSmoother(const PolygonWithHoles& free_area,
         "min_turning_radius = " + std::to_string(options.min_turning_radius) +
         " must not exceed turning_radius = " + std::to_string(options.turning_radius));
   }
+  if (!std::isfinite(options.max_turning_radius) || options.max_turning_radius < 0.0) {
+    throw InvalidInputError("max_turning_radius must be a finite number >= 0, got " +
+                            std::to_string(options.max_turning_radius));
+  }
   const double span = options.turning_radius - options.min_turning_radius;
   const int levels = span > 0.0 ? kRadiusLevels : 1;
   for (int level = 0; level < levels; ++level) {
     radii_.push_back(level + 1 == levels && levels > 1
                          ? options.min_turning_radius
                          : options.turning_radius - span * level / std::max(1, levels - 1));
+  }
+  if (options.max_turning_radius > options.turning_radius * (1.0 + kWiderRadiusMargin)) {
+    radii_.insert(radii_.begin(), options.max_turning_radius);
   }
 }
 

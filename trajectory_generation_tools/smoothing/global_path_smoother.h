@@ -189,9 +189,9 @@ class GlobalSmoothingProgramme {
 /// corner-by-corner decisions as a limit): every corner's smoothing, among none (an
 /// in-place rotation), inner, outer at the bisector boundary, outer at the tangent
 /// intersection boundary (Alg. 2 to 8) and reverse curves, each at a few radii between
-/// min_turning_radius and turning_radius, is chosen jointly by dynamic programming over the
-/// corner sequence (GlobalSmoothingProgramme), minimising the traversal time under the
-/// velocity model of GlobalSmoothingOptions.
+/// min_turning_radius and turning_radius (and at max_turning_radius where that is wider),
+/// is chosen jointly by dynamic programming over the corner sequence (GlobalSmoothingProgramme),
+/// minimising the traversal time under the velocity model of GlobalSmoothingOptions.
 class GlobalPathSmoother {
  public:
   /// Radii tried per corner when min_turning_radius < turning_radius, evenly spaced
@@ -200,8 +200,9 @@ class GlobalPathSmoother {
 
   /// Collisions are checked against the raw hull and holes of `free_area` (an empty hull:
   /// the unbounded plane). Throws InvalidInputError for radii that are not positive and
-  /// finite with min_turning_radius <= turning_radius, a velocity limit that is not
-  /// positive and finite, or a non-finite coordinate.
+  /// finite with min_turning_radius <= turning_radius, a max_turning_radius that is negative
+  /// or not finite, a velocity limit that is not positive and finite, or a non-finite
+  /// coordinate.
   GlobalPathSmoother(const PolygonWithHoles& free_area, const GlobalSmoothingOptions& options);
 
   /// The smoothed path through `waypoints`, of the same form as PathSmoother's (duplicate

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <optional>
 
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
@@ -14,6 +15,10 @@ struct GlobalSmoothingOptions {
   /// The smallest radius a corner may use instead (m, in (0, turning_radius]); a tighter
   /// arc is driven slower, at min(v_max, yaw_rate_max * radius).
   double min_turning_radius = 1.0;
+  /// A larger radius a corner may also use (m; at most turning_radius: none). An arc is
+  /// driven at min(v_max, yaw_rate_max * radius): where the preferred radius is tighter
+  /// than v_max / yaw_rate_max, a wider arc keeps more speed through the turn.
+  double max_turning_radius = 0.0;
   /// The velocity model of trajectory timing that the traversal time is minimised under.
   double v_max = 0.5;
   double a_max = 0.2;
@@ -38,7 +43,8 @@ struct GlobalSmoothingOptions {
 
   /// The options that `parameters` give: `min_turning_radius` 0 means equal to
   /// `turning_radius`; `coverage_preserving` sets the preserved sensor, the strategy
-  /// `coverage_safe` the safe sensor, of `parameters`.
+  /// `coverage_safe` the safe sensor, of `parameters`, and its largest radius
+  /// (`max_turning_radius`, 0: the radius of an arc at v_max if that is wider).
   static GlobalSmoothingOptions fromParameters(const PlannerParameters& parameters) {
     GlobalSmoothingOptions options;
     options.turning_radius = parameters.turning_radius;
@@ -52,6 +58,10 @@ struct GlobalSmoothingOptions {
     }
     if (parameters.smoothing_strategy == "coverage_safe") {
       options.makeCoverageSafe(FrustumSensor::fromParameters(parameters), parameters.wall_distance);
+      options.max_turning_radius =
+          parameters.max_turning_radius > 0.0
+              ? parameters.max_turning_radius
+              : std::max(parameters.turning_radius, parameters.v_max / parameters.yaw_rate_max);
     }
     return options;
   }
