@@ -22,10 +22,10 @@
 #include <vector>
 
 #include "fuzz/fuzz_check.h"
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
 #include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
 
 namespace {

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
@@ -190,8 +191,7 @@ int run(const BenchmarkOptions& options) {
     const auto started = std::chrono::steady_clock::now();
     const GeneratedTrajectory trajectory =
         TrajectoryGenerator(mission.parameters).generate(planned.plan.waypoints, mission.polygon);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const double seconds = secondsSince(started);
     std::printf("| smoothing | %.3f | %.1f | %zu primitives, %zu poses, %.1f m, %.0f s |\n",
                 seconds, peakRssMiB(), trajectory.path.size(), trajectory.poses.size(),
                 trajectory.trajectory_length_m, trajectory.traversal_time_s);

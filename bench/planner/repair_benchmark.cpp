@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bench/support/median.h"
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "test/support/hard_map_generator.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
@@ -30,6 +31,7 @@ using kinematic_coverage::core::CoverageEvaluator;
 using kinematic_coverage::core::FrustumSensor;
 using kinematic_coverage::core::Mission;
 using kinematic_coverage::core::PlannedMission;
+using kinematic_coverage::core::secondsSince;
 namespace testing = kinematic_coverage::core::testing;
 
 /// The share of the reachable area a path must see.
@@ -68,10 +70,6 @@ Options parseOptions(int argc, char** argv) {
     }
   }
   return options;
-}
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 /// Reachable coverage (percent) of a plan's waypoint path, as metrics.json measures it.

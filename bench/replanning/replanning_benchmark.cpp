@@ -13,16 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "test/replanning/drift_scenario.h"
 #include "trajectory_generation_tools/replanning/replanner.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 }  // namespace
 
@@ -49,12 +46,12 @@ int main(int argc, char** argv) {
         const Clock::time_point start = Clock::now();
         replanned =
             Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
-        replan_ms.push_back(millisecondsSince(start));
+        replan_ms.push_back(1000.0 * secondsSince(start));
         const Clock::time_point smooth_start = Clock::now();
         const GeneratedTrajectory trajectory =
             TrajectoryGenerator(parameters).generate(replanned.plan.waypoints, replanned.free_area);
-        smooth_ms.push_back(millisecondsSince(smooth_start));
-        total_ms.push_back(millisecondsSince(start));
+        smooth_ms.push_back(1000.0 * secondsSince(smooth_start));
+        total_ms.push_back(1000.0 * secondsSince(start));
       }
       auto median = [](std::vector<double> times) {
         std::sort(times.begin(), times.end());

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
@@ -183,8 +184,7 @@ int run(const ComparisonOptions& options) {
     for (StrategyFigures& total : totals) total.coverage_loss_percent /= planned_maps;
     printRows(std::to_string(planned_maps) + " random maps (sum; mean loss)", totals);
   }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double seconds = secondsSince(started);
   std::printf("\n%zu named maps, %d random maps planned, %d refused; %.1f s\n", files.size(),
               planned_maps, refused_maps, seconds);
   if (slower.empty()) {

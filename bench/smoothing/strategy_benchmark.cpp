@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "bench/support/median.h"
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
@@ -194,7 +195,7 @@ MapRuns runMap(const Mission& mission, const std::string& out_dir) {
   MapRuns result;
   const auto planning_started = Clock::now();
   const PlannedMission planned = planMission(mission);
-  const double planning_s = std::chrono::duration<double>(Clock::now() - planning_started).count();
+  const double planning_s = secondsSince(planning_started);
   result.time_cost_s = planned.plan.time_cost_s;
   for (int s = 0; s < kStrategies; ++s) {
     const PlannerParameters parameters = withStrategy(mission.parameters, Strategy(s));
@@ -219,7 +220,7 @@ MapRuns runMap(const Mission& mission, const std::string& out_dir) {
     const auto started = Clock::now();
     const PlanOutputs outputs = writePlanOutputs(request, out_dir, progress);
     Run& run = result.runs[s];
-    run.wall_s = planning_s + std::chrono::duration<double>(Clock::now() - started).count();
+    run.wall_s = planning_s + secondsSince(started);
     run.reachable_percent = outputs.coverage.reachable_coverage_percent;
     run.traversal_time_s = outputs.traversal_time_s;
     run.turns_smoothed = outputs.turns.turns_smoothed;

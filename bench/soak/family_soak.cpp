@@ -45,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
@@ -212,8 +213,7 @@ MapResult runMap(const testing::HardMap& map, const Options& options) {
   try {
     const auto started = std::chrono::steady_clock::now();
     const PlannedMission planned = planMission(map.mission);
-    result.planning_time_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    result.planning_time_s = secondsSince(started);
     const CoveragePlan& plan = planned.plan;
     result.split = plan.offset_parts.size() > 1;
     double scale = 1.0;

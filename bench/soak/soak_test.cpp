@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
@@ -118,8 +119,7 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
     const auto started = std::chrono::steady_clock::now();
     const CoveragePlan plan =
         CoveragePlanner(mission.parameters).plan(mission.polygon, mission.start, mission.goal);
-    planning_times_s.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    planning_times_s.push_back(secondsSince(started));
     const GeneratedTrajectory trajectory =
         TrajectoryGenerator(mission.parameters).generate(plan.waypoints, mission.polygon);
     if (!(trajectory.min_obstacle_clearance_m > 0.0)) {

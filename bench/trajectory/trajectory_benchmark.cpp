@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "trajectory_generation_tools/smoothing/global_path_smoother.h"
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
 #include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
@@ -26,10 +27,7 @@ namespace {
 constexpr int kCoverageSafeRuns = 3;
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using kinematic_coverage::core::secondsSince;
 
 struct Summary {
   double median, min, max;
@@ -90,19 +88,19 @@ int main(int argc, char** argv) {
     sampler.sample(path.primitives, poses);
     const Clock::time_point sampled = Clock::now();
     traversal_time_s = timing.assignTimes(path.primitives, poses);
-    time_ms.push_back(millisecondsSince(sampled));
-    sample_ms.push_back(std::chrono::duration<double, std::milli>(sampled - smoothed).count());
-    smooth_ms.push_back(std::chrono::duration<double, std::milli>(smoothed - start).count());
-    total_ms.push_back(millisecondsSince(start));
+    time_ms.push_back(1000.0 * secondsSince(sampled));
+    sample_ms.push_back(1000.0 * std::chrono::duration<double>(sampled - smoothed).count());
+    smooth_ms.push_back(1000.0 * std::chrono::duration<double>(smoothed - start).count());
+    total_ms.push_back(1000.0 * secondsSince(start));
     const Clock::time_point global_start = Clock::now();
     global_path =
         kinematic_coverage::core::GlobalPathSmoother(area, global_options).smooth(waypoints);
-    global_ms.push_back(millisecondsSince(global_start));
+    global_ms.push_back(1000.0 * secondsSince(global_start));
     if (run < kCoverageSafeRuns) {
       const Clock::time_point safe_start = Clock::now();
       safe_path =
           kinematic_coverage::core::GlobalPathSmoother(area, safe_options).smooth(waypoints);
-      safe_ms.push_back(millisecondsSince(safe_start));
+      safe_ms.push_back(1000.0 * secondsSince(safe_start));
     }
   }
   std::vector<kinematic_coverage::core::TrajectoryPose> safe_poses;

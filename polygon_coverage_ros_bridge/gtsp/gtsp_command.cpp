@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsplib_reader.h"
@@ -63,8 +64,7 @@ int runGtspCommand(const std::vector<std::string>& args, std::ostream& out, std:
     const GtsplibProblem problem = GtsplibReader::readFile(parsed.path);
     const auto start = std::chrono::steady_clock::now();
     const GtspSolution solution = solveGtsp(problem.instance, parsed.options);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = secondsSince(start);
     std::ostringstream line;
     line << "{\"cost\": " << std::llround(solution.cost) << ", \"time_s\": " << seconds
          << ", \"tour\": [";

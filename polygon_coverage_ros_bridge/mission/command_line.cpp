@@ -5,6 +5,8 @@
 #include <sstream>
 #include <system_error>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 
@@ -77,17 +79,6 @@ void createOutputDirectory(const std::string& dir) {
     throw InvalidInputError("cannot create the output directory " + dir +
                             (code ? ": " + code.message() : ""));
   }
-}
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::string formatSeconds(double seconds) {
-  std::ostringstream out;
-  out.precision(3);
-  out << std::fixed << seconds << " s";
-  return out.str();
 }
 
 }  // namespace kinematic_coverage::core

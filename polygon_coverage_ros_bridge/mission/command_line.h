@@ -47,10 +47,4 @@ Mission loadMission(const CommandArguments& arguments, std::ostream& out);
 /// Creates the output directory `dir` and its parents; InvalidInputError when it cannot.
 void createOutputDirectory(const std::string& dir);
 
-/// Seconds since `start` on the steady clock, for stage timings.
-double secondsSince(std::chrono::steady_clock::time_point start);
-
-/// A duration for progress lines, to the millisecond: "0.016 s".
-std::string formatSeconds(double seconds);
-
 }  // namespace kinematic_coverage::core

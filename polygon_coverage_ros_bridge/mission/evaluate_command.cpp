@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/command_line.h"

@@ -10,9 +10,9 @@
 #include <type_traits>
 #include <variant>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
-#include "polygon_coverage_ros_bridge/validation/point_format.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
 namespace kinematic_coverage::core {

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
@@ -11,10 +12,6 @@ namespace kinematic_coverage::core {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 }  // namespace
 

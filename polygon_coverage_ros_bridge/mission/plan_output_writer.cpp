@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
@@ -12,7 +14,6 @@
 #include "polygon_coverage_ros_bridge/mission/json_object.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
-#include "polygon_coverage_ros_bridge/validation/point_format.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
 #include "trajectory_generation_tools/trajectory/trajectory_csv_writer.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"

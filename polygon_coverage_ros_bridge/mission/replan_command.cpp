@@ -3,12 +3,12 @@
 #include <filesystem>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
+#include "polygon_coverage_ros_bridge/base/text_file_writer.h"
 #include "polygon_coverage_ros_bridge/mission/command_line.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
-#include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
-#include "polygon_coverage_ros_bridge/mission/text_file_writer.h"
 #include "trajectory_generation_tools/replanning/replanner.h"
 
 namespace kinematic_coverage::core {

@@ -4,13 +4,14 @@
 #include <filesystem>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/base/number_format.h"
+#include "polygon_coverage_ros_bridge/base/text_file_writer.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/command_line.h"
 #include "polygon_coverage_ros_bridge/mission/json_object.h"
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
-#include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
-#include "polygon_coverage_ros_bridge/mission/text_file_writer.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 
 namespace kinematic_coverage::core {
@@ -26,8 +27,7 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
   SeenArea seen(CoverageRaster::covering(free_area, drawing));
   seen.addTrajectory(poses, sensor);
   coverage.heatmap = seen.heatmap();
-  coverage.duration_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  coverage.duration_s = secondsSince(start);
   return coverage;
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -42,10 +43,6 @@ constexpr int kGtspMaxPopulation = 50;
 /// Parts of a coverage region smaller than this share of a square sweep distance are
 /// left out: rounding leftovers of the Boolean operations, not area to sweep.
 constexpr double kMinPartShare = 1e-4;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 std::string formatPoint(const Point2& p) {
   std::ostringstream out;

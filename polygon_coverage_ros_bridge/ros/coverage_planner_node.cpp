@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "kinematic_coverage/PlanStatus.h"
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
@@ -17,6 +18,8 @@
 
 namespace kinematic_coverage::nodes {
 namespace {
+
+using core::secondsSince;
 
 /// How long a start or goal in another frame waits for its transform.
 const ros::Duration kTransformTimeout(0.5);
@@ -30,10 +33,6 @@ std::string nextStage(const std::string& finished) {
     if (kStages[i] == finished) return kStages[i + 1];
   }
   return finished.empty() ? kStages.front() : finished;
-}
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace

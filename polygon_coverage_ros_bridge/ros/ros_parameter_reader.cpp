@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
 
 namespace kinematic_coverage::nodes {
 namespace {

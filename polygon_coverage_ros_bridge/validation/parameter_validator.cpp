@@ -5,8 +5,8 @@
 #include <tuple>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/validation/point_format.h"
 
 namespace kinematic_coverage::core {
 namespace {

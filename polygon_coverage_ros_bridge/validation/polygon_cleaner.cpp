@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/validation/point_format.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
 namespace kinematic_coverage::core {

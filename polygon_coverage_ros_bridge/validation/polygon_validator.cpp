@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/validation/point_format.h"
 
 namespace kinematic_coverage::core {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "test/support/hard_map_generator.h"
 
 namespace kinematic_coverage::core {

@@ -4,10 +4,11 @@
 #include <cmath>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
-#include "polygon_coverage_ros_bridge/validation/point_format.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
@@ -19,10 +20,6 @@ using Clock = std::chrono::steady_clock;
 /// A start moved out of a hole is placed this far (relative to the map's scale) outside
 /// it, so that it is not on the hole's boundary.
 constexpr double kRelativeClearance = 1e-7;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// The last visited pose, moved out of a hole that now covers it (see Replanner).
 Point2 replanStart(const PolygonWithHoles& free_area, const Point2& last, double wall_distance) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "kinematic_coverage/PlanStatus.h"
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/plan_markers.h"
@@ -16,9 +17,7 @@
 namespace kinematic_coverage::nodes {
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using core::secondsSince;
 
 bool samePose(const geometry_msgs::Pose& a, const geometry_msgs::Pose& b) {
   return a.position.x == b.position.x && a.position.y == b.position.y &&

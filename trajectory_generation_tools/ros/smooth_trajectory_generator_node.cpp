@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "kinematic_coverage/PlanStatus.h"
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
@@ -23,9 +24,7 @@
 namespace kinematic_coverage::nodes {
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using core::secondsSince;
 
 }  // namespace
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <utility>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
-#include "polygon_coverage_ros_bridge/validation/point_format.h"
 #include "trajectory_generation_tools/simulation/path_distance.h"
 #include "trajectory_generation_tools/simulation/trajectory_follower.h"
 

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
+#include "polygon_coverage_ros_bridge/base/text_file_writer.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/round_trip_number.h"
-#include "polygon_coverage_ros_bridge/mission/text_file_writer.h"
 
 namespace kinematic_coverage::core {
 
