@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""scripts/stage_graph.py --check: the repository passes, and each kind of violation in a
+copy of it fails (an include beyond a stage's floor, a known violation that is gone, a ROS
+header in the core, CGAL reaching node code, the core included by rviz_plugins/)."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+FOLDERS = ('polygon_coverage_ros_bridge', 'trajectory_generation_tools', 'rviz_plugins')
+
+
+def run_check(root):
+    return subprocess.run([sys.executable, os.path.join(root, 'scripts', 'stage_graph.py'),
+                           '--check'], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          text=True)
+
+
+class StageGraphTest(unittest.TestCase):
+    def setUp(self):
+        self.directory = tempfile.mkdtemp()
+        os.makedirs(os.path.join(self.directory, 'scripts'))
+        shutil.copy(os.path.join(ROOT, 'scripts', 'stage_graph.py'),
+                    os.path.join(self.directory, 'scripts'))
+        for folder in FOLDERS:
+            shutil.copytree(os.path.join(ROOT, folder), os.path.join(self.directory, folder))
+
+    def tearDown(self):
+        shutil.rmtree(self.directory)
+
+    def append(self, path, line):
+        with open(os.path.join(self.directory, path), 'a', encoding='utf-8') as source:
+            source.write(line + '\n')
+
+    def assert_fails_with(self, words):
+        result = run_check(self.directory)
+        self.assertEqual(result.returncode, 1, result.stderr)
+        self.assertIn(words, result.stderr)
+
+    def test_the_repository_passes(self):
+        result = run_check(ROOT)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertEqual(run_check(self.directory).returncode, 0)
+
+    def test_an_include_beyond_the_floor_fails(self):
+        self.append('polygon_coverage_ros_bridge/geometry/planar_geometry.cpp',
+                    '#include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"')
+        self.assert_fails_with('geometry includes polygon_coverage_ros_bridge/gtsp, '
+                               'which is not below it')
+
+    def test_a_known_violation_that_is_gone_fails(self):
+        path = os.path.join(self.directory, 'polygon_coverage_ros_bridge', 'sweeps')
+        for name in os.listdir(path):
+            with open(os.path.join(path, name), encoding='utf-8') as source:
+                text = source.read()
+            with open(os.path.join(path, name), 'w', encoding='utf-8') as source:
+                source.write(text.replace('polygon_coverage_ros_bridge/planner/', 'planner/'))
+        self.assert_fails_with('sweeps no longer includes polygon_coverage_ros_bridge/planner')
+
+    def test_a_ros_header_in_the_core_fails(self):
+        self.append('trajectory_generation_tools/smoothing/corner.h', '#include <ros/ros.h>')
+        self.assert_fails_with('corner.h includes a ROS, rviz or Qt header in the core')
+
+    def test_cgal_reaching_node_code_fails(self):
+        self.append('polygon_coverage_ros_bridge/geometry/polygon_with_holes.h',
+                    '#include <CGAL/Polygon_2.h>')
+        self.assert_fails_with('polygon_with_holes.h includes CGAL and node code includes it')
+
+    def test_the_core_in_rviz_plugins_fails(self):
+        self.append('rviz_plugins/goal_tool.cpp',
+                    '#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"')
+        self.assert_fails_with('goal_tool.cpp includes the core')
+
+
+if __name__ == '__main__':
+    unittest.main()
