@@ -282,6 +282,329 @@ std::vector<Point2> simplifiedPath(const std::vector<Point2>& path, const std::v
   return result;
 }
 
+/// What the stages of one planning run share: the request, the plan being built and the
+/// listener that hears of each stage as it finishes.
+struct PlanningRun {
+  const PlannerParameters& parameters;
+  const PolygonWithHoles& free_area;
+  const Point2& start;
+  const Point2& goal;
+  const StageCallback& on_stage;
+  CoveragePlan& plan;
+  double tolerance = 0.0;  ///< a point this close to the offset free area is inside it
+
+  /// Records the stage `name` begun at `since`, and tells the listener.
+  void stage(const std::string& name, Clock::time_point since, std::string summary) const {
+    plan.stages.push_back({name, secondsSince(since), std::move(summary)});
+    if (on_stage) on_stage(plan.stages.back());
+  }
+};
+
+/// The wall offset's result: the parts of the offset free area to plan and where the
+/// start and goal enter it.
+struct OffsetStage {
+  std::vector<PolygonWithHoles> planned_parts;
+  Point2 start_inside = Point2::Zero();
+  Point2 goal_inside = Point2::Zero();
+};
+
+/// Wall offset (docs/REFERENCE.md, Geometry and input rules): the offset free area, its
+/// parts to plan joined into the route area, and the start's and goal's entry points.
+OffsetStage offsetStage(const PlanningRun& run) {
+  const Clock::time_point t = Clock::now();
+  CoveragePlan& plan = run.plan;
+  plan.offset_parts = computeOffsetFreeArea(run.free_area, run.parameters.wall_distance).parts;
+  OffsetStage offset;
+  offset.planned_parts = partsToPlan(run.free_area, run.parameters, run.start, &plan);
+  offset.start_inside = entryPoint(run.free_area, plan.route_area, offset.planned_parts, run.start,
+                                   "start", run.tolerance);
+  offset.goal_inside = entryPoint(run.free_area, plan.route_area, offset.planned_parts, run.goal,
+                                  "goal", run.tolerance);
+  std::size_t holes = 0;
+  for (const PolygonWithHoles& part : plan.offset_parts) holes += part.holes.size();
+  std::ostringstream summary;
+  summary << "offset free area " << area(plan.offset_parts) << " m^2 with " << holes << " holes";
+  if (plan.offset_parts.size() > 1) {
+    summary << " in " << plan.offset_parts.size() << " parts, " << offset.planned_parts.size()
+            << " planned, joined through " << plan.gaps.size() << " gaps";
+  }
+  run.stage("offset", t, summary.str());
+  return offset;
+}
+
+/// The parts of the planned parts inside the coverage region (replanning).
+std::vector<PolygonWithHoles> regionStage(const PlanningRun& run,
+                                          const std::vector<PolygonWithHoles>& planned_parts,
+                                          const std::vector<PolygonWithHoles>& coverage_region) {
+  const Clock::time_point t = Clock::now();
+  const FrustumSensor region_sensor = FrustumSensor::fromParameters(run.parameters);
+  std::vector<PolygonWithHoles> parts;
+  for (const PolygonWithHoles& part : planned_parts) {
+    for (PolygonWithHoles& inside : intersectWithRegions(
+             part, coverage_region,
+             kMinPartShare * region_sensor.sweepDistance() * region_sensor.sweepDistance())) {
+      parts.push_back(std::move(inside));
+    }
+  }
+  double parts_area = 0.0;
+  for (const PolygonWithHoles& part : parts) parts_area += area(part);
+  std::ostringstream summary;
+  summary << parts.size() << " parts of the offset free area to cover, " << parts_area << " m^2";
+  run.stage("region", t, summary.str());
+  return parts;
+}
+
+/// Cell decomposition over candidate directions, per part, within the size limits.
+std::vector<Decomposition> decomposeStage(const PlanningRun& run,
+                                          const std::vector<PolygonWithHoles>& parts) {
+  const Clock::time_point t = Clock::now();
+  const DecompositionType type = run.parameters.decomposition_type == "trapezoidal"
+                                     ? DecompositionType::kTrapezoidal
+                                     : DecompositionType::kBoustrophedon;
+  std::vector<Decomposition> decompositions;
+  std::size_t directions_tried = 0;
+  std::size_t cell_count = 0;
+  for (const PolygonWithHoles& part : parts) {
+    decompositions.push_back(computeBestDecomposition(part, type));
+    directions_tried = std::max(directions_tried, decompositions.back().directions_tried);
+    cell_count += decompositions.back().cells.size();
+    for (const Cell& cell : decompositions.back().cells) run.plan.cells.push_back(cell.polygon);
+  }
+  std::ostringstream summary;
+  summary << cell_count << " " << run.parameters.decomposition_type << " cells, best of "
+          << directions_tried << " directions";
+  run.stage("decompose", t, summary.str());
+
+  // Size limits, before anything of their size is built.
+  checkCellLimit(decompositions, run.parameters);
+  if (const std::size_t dropped = fitDirectionsToGtspLimit(decompositions); dropped > 0) {
+    run.plan.warnings.push_back(
+        "kept only the best lane directions of the cells: " + std::to_string(dropped) +
+        " of their other directions would have taken the generalized TSP over " +
+        std::to_string(kMaxGtspNodes) + " nodes");
+  }
+  checkLaneLimit(decompositions, run.parameters);
+  return decompositions;
+}
+
+/// The sweep patterns of every cell and direction, and the GTSP's clusters: start, goal,
+/// then one per cell with the nodes of its patterns.
+struct SweepStage {
+  std::vector<SweepPattern> patterns;
+  std::vector<std::vector<int>> clusters;
+};
+
+/// Warns when the footprint is longer than wide: lanes see W/2 beside them, but the
+/// reachable area reaches L/2 from the offset free area, so along walls parallel to the
+/// lanes what lies between stays unseen.
+void warnOfALongFootprint(const FrustumSensor& sensor, CoveragePlan* plan) {
+  if (sensor.length() <= sensor.width()) return;
+  std::ostringstream warning;
+  warning << "the footprint is longer (L " << sensor.length() << " m) than wide (W "
+          << sensor.width() << " m): along walls parallel to the lanes a band up to "
+          << 0.5 * (sensor.length() - sensor.width())
+          << " m wide of the reachable area stays unseen (see unseen_reachable_area_m2)";
+  plan->warnings.push_back(warning.str());
+}
+
+/// Sweep patterns per cell and direction, spaced by the sensor's footprint (begun at
+/// `since`, which includes building the visibility graph).
+SweepStage sweepStage(const PlanningRun& run, Clock::time_point since,
+                      const std::vector<PolygonWithHoles>& parts,
+                      const std::vector<Decomposition>& decompositions, const FrustumSensor& sensor,
+                      const VisibilityGraph& graph) {
+  warnOfALongFootprint(sensor, &run.plan);
+  const TransitionPath transition = [&](const Point2& a, const Point2& b) {
+    return graph.shortestPath(a, b);
+  };
+  SweepStage sweeps;
+  sweeps.clusters = {{0}, {1}};  // start, goal
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const SweepPatternGenerator generator(
+        sensor, SweepPatternGenerator::laneEndInset(sensor, run.parameters.wall_distance),
+        parts[k]);
+    for (const Cell& cell : decompositions[k].cells) {
+      std::vector<int> cluster;
+      for (double direction : cell.sweep_directions) {
+        for (SweepPattern& pattern : generator.patterns(cell.polygon, direction, transition)) {
+          cluster.push_back(static_cast<int>(sweeps.patterns.size()) + 2);
+          sweeps.patterns.push_back(std::move(pattern));
+        }
+      }
+      sweeps.clusters.push_back(std::move(cluster));
+    }
+  }
+  std::ostringstream summary;
+  summary << sweeps.patterns.size() << " sweep patterns";
+  run.stage("sweeps", since, summary.str());
+  return sweeps;
+}
+
+/// The generalized TSP instance: transition costs between every pattern end and every
+/// pattern start (shortest paths in the route area), plus the cost of the pattern entered.
+GtspInstance transitionStage(const PlanningRun& run, const SweepStage& sweeps,
+                             const OffsetStage& offset, const VisibilityGraph& graph,
+                             const SegmentCost& segment_cost) {
+  const Clock::time_point t = Clock::now();
+  std::vector<Point2> sources = {offset.start_inside};
+  std::vector<Point2> targets = {offset.goal_inside};
+  for (const SweepPattern& pattern : sweeps.patterns) {
+    sources.push_back(pattern.end());
+    targets.push_back(pattern.start());
+  }
+  const std::vector<double> transition_costs = graph.costMatrix(sources, targets);
+  const std::size_t n = sweeps.patterns.size() + 2;
+  GtspInstance instance;
+  instance.node_count = static_cast<int>(n);
+  instance.clusters = sweeps.clusters;
+  instance.start_cluster = 0;
+  instance.goal_cluster = 1;
+  instance.reverse_nodes = reverseNodes(sweeps.patterns, sweeps.clusters);
+  instance.costs.assign(n * n, 0.0);
+  std::vector<double> pattern_costs;
+  for (const SweepPattern& pattern : sweeps.patterns) {
+    pattern_costs.push_back(segment_cost.pathCost(pattern.path));
+  }
+  // Node 0 (start) is source row 0; node 1 (goal) is target column 0; pattern k is
+  // node k + 2, source row k + 1 and target column k + 1.
+  auto sourceRow = [](std::size_t node) { return node == 0 ? 0 : node - 1; };
+  for (std::size_t from = 0; from < n; ++from) {
+    if (from == 1) continue;  // nothing leaves the goal
+    for (std::size_t to = 1; to < n; ++to) {
+      if (from == to) continue;
+      const std::size_t column = to == 1 ? 0 : to - 1;
+      const double entering = to == 1 ? 0.0 : pattern_costs[to - 2];
+      instance.costs[from * n + to] =
+          transition_costs[sourceRow(from) * targets.size() + column] + entering;
+    }
+  }
+  std::ostringstream summary;
+  summary << sources.size() * targets.size() << " transition costs";
+  run.stage("transitions", t, summary.str());
+  return instance;
+}
+
+/// The generalized TSP over the patterns, from start to goal.
+GtspSolution solveStage(const PlanningRun& run, const GtspInstance& instance) {
+  const Clock::time_point t = Clock::now();
+  GtspOptions options;
+  options.exact_cluster_limit = kExactClusterLimit;
+  options.max_population = kGtspMaxPopulation;
+  options.focused_search = true;
+  const GtspSolution solution = solveGtsp(instance, options);
+  std::ostringstream summary;
+  summary << "visiting order of " << instance.clusters.size() - 2 << " cells, cost "
+          << solution.cost;
+  run.stage("solve", t, summary.str());
+  return solution;
+}
+
+/// The waypoint path: the route through the patterns in the solution's order, with
+/// which of its points must stay (start, goal, the entry and exit of the offset free
+/// area), before and after jog removal and simplification.
+struct WaypointRoute {
+  std::vector<Point2> path;  ///< the full route, before jog removal
+  std::vector<bool> keep;    ///< per point of `path`: must stay
+  std::vector<Point2> waypoints;
+  double duplicate_tolerance = 0.0;
+};
+
+/// Sets the plan's first_inside and last_inside for `waypoints`: the waypoints where the
+/// path enters and leaves the offset free area (the start and goal may lie outside it).
+void markInsideEnds(const PlanningRun& run, const OffsetStage& offset,
+                    const std::vector<Point2>& waypoints) {
+  CoveragePlan& plan = run.plan;
+  plan.first_inside =
+      (waypoints.size() > 1 && (run.start - offset.start_inside).norm() > run.tolerance) ? 1 : 0;
+  plan.last_inside = waypoints.size() - 1;
+  if (waypoints.size() > 1 && (run.goal - offset.goal_inside).norm() > run.tolerance) {
+    plan.last_inside -= 1;
+  }
+}
+
+/// The route in the solution's order, its jogs removed and its straight or repeated
+/// waypoints dropped.
+WaypointRoute pathStage(const PlanningRun& run, const OffsetStage& offset, const SweepStage& sweeps,
+                        const GtspSolution& solution, const VisibilityGraph& graph,
+                        const JogRemoval& jog_removal, double scale) {
+  WaypointRoute route;
+  route.path = {run.start};
+  route.keep = {true};
+  auto append = [&](const std::vector<Point2>& points, bool keep_first) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      route.path.push_back(points[i]);
+      route.keep.push_back(i == 0 && keep_first);
+    }
+  };
+  append({offset.start_inside}, true);
+  Point2 position = offset.start_inside;
+  for (int node : solution.nodes) {
+    if (node < 2) continue;
+    const SweepPattern& pattern = sweeps.patterns[static_cast<std::size_t>(node - 2)];
+    append(graph.shortestPath(position, pattern.start()), false);
+    append(pattern.path, false);
+    position = pattern.end();
+  }
+  append(graph.shortestPath(position, offset.goal_inside), false);
+  route.keep.back() = true;
+  append({run.goal}, true);
+  std::vector<bool> kept;
+  const std::vector<Point2> without_jogs = jog_removal.apply(route.path, route.keep, &kept);
+  route.duplicate_tolerance =
+      std::max(kDuplicateWaypointTolerance, kRelativeDuplicateTolerance * scale);
+  route.waypoints = simplifiedPath(without_jogs, kept, route.duplicate_tolerance);
+  markInsideEnds(run, offset, route.waypoints);
+  return route;
+}
+
+/// Coverage repair: where the sweeps leave reachable area unseen, the jogs removed near it
+/// are put back, then patches are driven (UnseenAreaRepair). Returns the summary line.
+std::string repairStage(const PlanningRun& run, const OffsetStage& offset,
+                        const std::vector<PolygonWithHoles>* coverage_region,
+                        const FrustumSensor& sensor, const VisibilityGraph& graph,
+                        const SegmentCost& segment_cost, const JogRemoval& jog_removal,
+                        double max_jog_shift, WaypointRoute* route) {
+  CoveragePlan& plan = run.plan;
+  const UnseenAreaRepair repair(run.free_area, offset.planned_parts, sensor, graph, segment_cost,
+                                coverage_region);
+  // Jogs whose removal shifted a lane off what it had to see are put back first: near
+  // a wall that the lane's footprint reaches exactly, any shift inward leaves a band.
+  std::size_t jogs_restored = 0;
+  const UnseenAreaRepair::Unseen unseen = repair.unseen(route->waypoints);
+  if (!unseen.samples.empty()) {
+    const double reach = 0.5 * std::hypot(sensor.width(), sensor.length()) + max_jog_shift;
+    std::vector<bool> pinned(route->path.size(), false);
+    for (std::size_t i = 0; i < route->path.size(); ++i) {
+      for (const Point2& p : unseen.samples) {
+        if ((p - route->path[i]).norm() <= reach) {
+          pinned[i] = true;
+          break;
+        }
+      }
+    }
+    std::vector<bool> pinned_kept;
+    const std::vector<Point2> with_jogs =
+        simplifiedPath(jog_removal.apply(route->path, route->keep, &pinned_kept, &pinned),
+                       pinned_kept, route->duplicate_tolerance);
+    if (repair.unseen(with_jogs).area_m2 < unseen.area_m2) {
+      jogs_restored = with_jogs.size() - std::min(with_jogs.size(), route->waypoints.size());
+      route->waypoints = with_jogs;
+      markInsideEnds(run, offset, route->waypoints);
+    }
+  }
+  RepairedPath repaired = repair.repair(route->waypoints, plan.first_inside, plan.last_inside);
+  std::vector<bool> protect(repaired.waypoints.size(), false);
+  protect.front() = protect.back() = true;
+  protect[plan.first_inside] = protect[repaired.last_inside] = true;
+  route->waypoints = simplifiedPath(repaired.waypoints, protect, route->duplicate_tolerance);
+  markInsideEnds(run, offset, route->waypoints);
+  std::ostringstream summary;
+  summary << jogs_restored << " jog waypoints restored, " << repaired.patches
+          << " patches, unseen reachable area " << repaired.unseen_before_m2 << " -> "
+          << repaired.unseen_after_m2 << " m^2 of " << repaired.reachable_m2 << " m^2; ";
+  return summary.str();
+}
+
 }  // namespace
 
 CoveragePlanner::CoveragePlanner(PlannerParameters parameters)
@@ -305,284 +628,65 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
                                         const StageCallback& on_stage) const {
   const Clock::time_point planning_start = Clock::now();
   CoveragePlan plan;
-  auto stage = [&](const std::string& name, Clock::time_point since, std::string summary) {
-    plan.stages.push_back({name, secondsSince(since), std::move(summary)});
-    if (on_stage) on_stage(plan.stages.back());
-  };
-
   double scale = 1.0;
   for (const Point2& p : free_area.hull) scale = std::max(scale, p.cwiseAbs().maxCoeff());
-  const double tolerance = kRelativeInsideTolerance * scale;
+  const PlanningRun run{
+      parameters_, free_area, start, goal, on_stage, plan, kRelativeInsideTolerance * scale};
 
-  // Wall offset (docs/REFERENCE.md, Geometry and input rules).
-  Clock::time_point t = Clock::now();
-  plan.offset_parts = computeOffsetFreeArea(free_area, parameters_.wall_distance).parts;
-  const std::vector<PolygonWithHoles> planned_parts =
-      partsToPlan(free_area, parameters_, start, &plan);
-  const PolygonWithHoles& area = plan.route_area;
-  const Point2 start_inside = entryPoint(free_area, area, planned_parts, start, "start", tolerance);
-  const Point2 goal_inside = entryPoint(free_area, area, planned_parts, goal, "goal", tolerance);
-  {
-    std::size_t holes = 0;
-    for (const PolygonWithHoles& part : plan.offset_parts) holes += part.holes.size();
-    std::ostringstream summary;
-    summary << "offset free area " << kinematic_coverage::core::area(plan.offset_parts)
-            << " m^2 with " << holes << " holes";
-    if (plan.offset_parts.size() > 1) {
-      summary << " in " << plan.offset_parts.size() << " parts, " << planned_parts.size()
-              << " planned, joined through " << plan.gaps.size() << " gaps";
-    }
-    stage("offset", t, summary.str());
-  }
-
+  const OffsetStage offset = offsetStage(run);
   // The parts to cover: the planned parts of the offset free area, or their parts inside
   // the region.
-  std::vector<PolygonWithHoles> parts;
-  if (coverage_region == nullptr) {
-    parts = planned_parts;
-  } else {
-    t = Clock::now();
-    const FrustumSensor region_sensor = FrustumSensor::fromParameters(parameters_);
-    for (const PolygonWithHoles& part : planned_parts) {
-      for (PolygonWithHoles& inside : intersectWithRegions(
-               part, *coverage_region,
-               kMinPartShare * region_sensor.sweepDistance() * region_sensor.sweepDistance())) {
-        parts.push_back(std::move(inside));
-      }
-    }
-    double parts_area = 0.0;
-    for (const PolygonWithHoles& part : parts) parts_area += kinematic_coverage::core::area(part);
-    std::ostringstream summary;
-    summary << parts.size() << " parts of the offset free area to cover, " << parts_area << " m^2";
-    stage("region", t, summary.str());
-  }
+  const std::vector<PolygonWithHoles> parts =
+      coverage_region == nullptr ? offset.planned_parts
+                                 : regionStage(run, offset.planned_parts, *coverage_region);
 
   // A stage that fails from here on failed on valid input (a bug), unless the input is
   // over a size limit.
   const char* failing_stage = "decompose";
   try {
-    // Cell decomposition over candidate directions, per part.
-    t = Clock::now();
-    const DecompositionType type = parameters_.decomposition_type == "trapezoidal"
-                                       ? DecompositionType::kTrapezoidal
-                                       : DecompositionType::kBoustrophedon;
-    std::vector<Decomposition> decompositions;
-    std::size_t directions_tried = 0;
-    std::size_t cell_count = 0;
-    for (const PolygonWithHoles& part : parts) {
-      decompositions.push_back(computeBestDecomposition(part, type));
-      directions_tried = std::max(directions_tried, decompositions.back().directions_tried);
-      cell_count += decompositions.back().cells.size();
-      for (const Cell& cell : decompositions.back().cells) plan.cells.push_back(cell.polygon);
-    }
-    {
-      std::ostringstream summary;
-      summary << cell_count << " " << parameters_.decomposition_type << " cells, best of "
-              << directions_tried << " directions";
-      stage("decompose", t, summary.str());
-    }
+    const std::vector<Decomposition> decompositions = decomposeStage(run, parts);
 
-    // Size limits, before anything of their size is built.
-    checkCellLimit(decompositions, parameters_);
-    if (const std::size_t dropped = fitDirectionsToGtspLimit(decompositions); dropped > 0) {
-      plan.warnings.push_back(
-          "kept only the best lane directions of the cells: " + std::to_string(dropped) +
-          " of their other directions would have taken the generalized TSP over " +
-          std::to_string(kMaxGtspNodes) + " nodes");
-    }
-    checkLaneLimit(decompositions, parameters_);
-
-    // Sweep patterns per cell and direction.
-    t = Clock::now();
+    const Clock::time_point sweeps_start = Clock::now();
     failing_stage = "sweeps";
     const SegmentCost segment_cost(parameters_);
-    const VisibilityGraph graph(area, segment_cost);
+    const VisibilityGraph graph(plan.route_area, segment_cost);
     const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
-    if (sensor.length() > sensor.width()) {
-      // Lanes see W/2 beside them, but the reachable area reaches L/2 from the offset free
-      // area: along walls parallel to the lanes, what lies between stays unseen.
-      std::ostringstream warning;
-      warning << "the footprint is longer (L " << sensor.length() << " m) than wide (W "
-              << sensor.width() << " m): along walls parallel to the lanes a band up to "
-              << 0.5 * (sensor.length() - sensor.width())
-              << " m wide of the reachable area stays unseen (see unseen_reachable_area_m2)";
-      plan.warnings.push_back(warning.str());
-    }
-    const TransitionPath transition = [&](const Point2& a, const Point2& b) {
-      return graph.shortestPath(a, b);
-    };
-    std::vector<SweepPattern> patterns;
-    std::vector<std::vector<int>> clusters = {{0}, {1}};  // start, goal
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-      const SweepPatternGenerator generator(
-          sensor, SweepPatternGenerator::laneEndInset(sensor, parameters_.wall_distance), parts[k]);
-      for (const Cell& cell : decompositions[k].cells) {
-        std::vector<int> cluster;
-        for (double direction : cell.sweep_directions) {
-          for (SweepPattern& pattern : generator.patterns(cell.polygon, direction, transition)) {
-            cluster.push_back(static_cast<int>(patterns.size()) + 2);
-            patterns.push_back(std::move(pattern));
-          }
-        }
-        clusters.push_back(std::move(cluster));
-      }
-    }
-    {
-      std::ostringstream summary;
-      summary << patterns.size() << " sweep patterns";
-      stage("sweeps", t, summary.str());
-    }
+    const SweepStage sweeps = sweepStage(run, sweeps_start, parts, decompositions, sensor, graph);
 
-    // Transition costs between every pattern end and every pattern start.
-    t = Clock::now();
     failing_stage = "transitions";
-    std::vector<Point2> sources = {start_inside};
-    std::vector<Point2> targets = {goal_inside};
-    for (const SweepPattern& pattern : patterns) {
-      sources.push_back(pattern.end());
-      targets.push_back(pattern.start());
-    }
-    const std::vector<double> transition_costs = graph.costMatrix(sources, targets);
-    const std::size_t n = patterns.size() + 2;
-    GtspInstance instance;
-    instance.node_count = static_cast<int>(n);
-    instance.clusters = clusters;
-    instance.start_cluster = 0;
-    instance.goal_cluster = 1;
-    instance.reverse_nodes = reverseNodes(patterns, clusters);
-    instance.costs.assign(n * n, 0.0);
-    std::vector<double> pattern_costs;
-    for (const SweepPattern& pattern : patterns)
-      pattern_costs.push_back(segment_cost.pathCost(pattern.path));
-    // Node 0 (start) is source row 0; node 1 (goal) is target column 0; pattern k is
-    // node k + 2, source row k + 1 and target column k + 1.
-    auto sourceRow = [](std::size_t node) { return node == 0 ? 0 : node - 1; };
-    for (std::size_t from = 0; from < n; ++from) {
-      if (from == 1) continue;  // nothing leaves the goal
-      for (std::size_t to = 1; to < n; ++to) {
-        if (from == to) continue;
-        const std::size_t column = to == 1 ? 0 : to - 1;
-        const double entering = to == 1 ? 0.0 : pattern_costs[to - 2];
-        instance.costs[from * n + to] =
-            transition_costs[sourceRow(from) * targets.size() + column] + entering;
-      }
-    }
-    {
-      std::ostringstream summary;
-      summary << sources.size() * targets.size() << " transition costs";
-      stage("transitions", t, summary.str());
-    }
+    const GtspInstance instance = transitionStage(run, sweeps, offset, graph, segment_cost);
 
-    // Generalized TSP over the patterns, from start to goal.
-    t = Clock::now();
     failing_stage = "solve";
-    GtspOptions options;
-    options.exact_cluster_limit = kExactClusterLimit;
-    options.max_population = kGtspMaxPopulation;
-    options.focused_search = true;
-    const GtspSolution solution = solveGtsp(instance, options);
-    {
-      std::ostringstream summary;
-      summary << "visiting order of " << clusters.size() - 2 << " cells, cost " << solution.cost;
-      stage("solve", t, summary.str());
-    }
+    const GtspSolution solution = solveStage(run, instance);
 
-    // The waypoint path.
-    t = Clock::now();
+    Clock::time_point t = Clock::now();
     failing_stage = "path";
-    std::vector<Point2> path = {start};
-    std::vector<bool> keep = {true};
-    auto append = [&](const std::vector<Point2>& points, bool keep_first) {
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        path.push_back(points[i]);
-        keep.push_back(i == 0 && keep_first);
-      }
-    };
-    append({start_inside}, true);
-    Point2 position = start_inside;
-    for (int node : solution.nodes) {
-      if (node < 2) continue;
-      const SweepPattern& pattern = patterns[static_cast<std::size_t>(node - 2)];
-      append(graph.shortestPath(position, pattern.start()), false);
-      append(pattern.path, false);
-      position = pattern.end();
-    }
-    append(graph.shortestPath(position, goal_inside), false);
-    keep.back() = true;
-    append({goal}, true);
     // Jogs shorter than a turning radius would stay sharp turns in smoothing; a shift within
     // half the lateral overlap keeps what the neighbouring lanes rely on seen.
     const double max_jog_shift = 0.5 * (sensor.width() - sensor.sweepDistance());
     const JogRemoval jog_removal(graph, parameters_.turning_radius, max_jog_shift);
-    std::vector<bool> kept;
-    const std::vector<Point2> without_jogs = jog_removal.apply(path, keep, &kept);
-    const double duplicate_tolerance =
-        std::max(kDuplicateWaypointTolerance, kRelativeDuplicateTolerance * scale);
-    std::vector<Point2> waypoints = simplifiedPath(without_jogs, kept, duplicate_tolerance);
-    const auto findInside = [&] {
-      plan.first_inside =
-          (waypoints.size() > 1 && (start - start_inside).norm() > tolerance) ? 1 : 0;
-      plan.last_inside = waypoints.size() - 1;
-      if (waypoints.size() > 1 && (goal - goal_inside).norm() > tolerance) plan.last_inside -= 1;
-    };
-    findInside();
+    WaypointRoute route = pathStage(run, offset, sweeps, solution, graph, jog_removal, scale);
     PlannerParameters time_parameters = parameters_;
     time_parameters.cost_function = "time";
     const SegmentCost time_cost(time_parameters);
-    {
+    const auto describe = [&](const std::vector<Point2>& waypoints) {
       std::ostringstream summary;
       summary << waypoints.size() << " waypoints, " << pathLength(waypoints) << " m, time cost "
               << time_cost.pathCost(waypoints) << " s";
-      stage("path", t, summary.str());
-    }
+      return summary.str();
+    };
+    run.stage("path", t, describe(route.waypoints));
 
-    // Patches where the sweeps leave reachable area unseen.
     if (parameters_.coverage_repair) {
       t = Clock::now();
       failing_stage = "repair";
-      const UnseenAreaRepair repair(free_area, planned_parts, sensor, graph, segment_cost,
-                                    coverage_region);
-      // Jogs whose removal shifted a lane off what it had to see are put back first: near
-      // a wall that the lane's footprint reaches exactly, any shift inward leaves a band.
-      std::size_t jogs_restored = 0;
-      const UnseenAreaRepair::Unseen unseen = repair.unseen(waypoints);
-      if (!unseen.samples.empty()) {
-        const double reach = 0.5 * std::hypot(sensor.width(), sensor.length()) + max_jog_shift;
-        std::vector<bool> pinned(path.size(), false);
-        for (std::size_t i = 0; i < path.size(); ++i) {
-          for (const Point2& p : unseen.samples) {
-            if ((p - path[i]).norm() <= reach) {
-              pinned[i] = true;
-              break;
-            }
-          }
-        }
-        std::vector<bool> pinned_kept;
-        const std::vector<Point2> with_jogs = simplifiedPath(
-            jog_removal.apply(path, keep, &pinned_kept, &pinned), pinned_kept, duplicate_tolerance);
-        if (repair.unseen(with_jogs).area_m2 < unseen.area_m2) {
-          jogs_restored = with_jogs.size() - std::min(with_jogs.size(), waypoints.size());
-          waypoints = with_jogs;
-          findInside();
-        }
-      }
-      RepairedPath repaired = repair.repair(waypoints, plan.first_inside, plan.last_inside);
-      std::vector<bool> protect(repaired.waypoints.size(), false);
-      protect.front() = protect.back() = true;
-      protect[plan.first_inside] = protect[repaired.last_inside] = true;
-      waypoints = simplifiedPath(repaired.waypoints, protect, duplicate_tolerance);
-      findInside();
-      std::ostringstream summary;
-      summary << jogs_restored << " jog waypoints restored, " << repaired.patches
-              << " patches, unseen reachable area " << repaired.unseen_before_m2 << " -> "
-              << repaired.unseen_after_m2 << " m^2 of " << repaired.reachable_m2 << " m^2; "
-              << waypoints.size() << " waypoints, " << pathLength(waypoints) << " m, time cost "
-              << time_cost.pathCost(waypoints) << " s";
-      stage("repair", t, summary.str());
+      const std::string repaired = repairStage(run, offset, coverage_region, sensor, graph,
+                                               segment_cost, jog_removal, max_jog_shift, &route);
+      run.stage("repair", t, repaired + describe(route.waypoints));
     }
-    plan.waypoints = legHeadingPoses(waypoints);
-    plan.path_length_m = pathLength(waypoints);
-    plan.time_cost_s = time_cost.pathCost(waypoints);
+    plan.waypoints = legHeadingPoses(route.waypoints);
+    plan.path_length_m = pathLength(route.waypoints);
+    plan.time_cost_s = time_cost.pathCost(route.waypoints);
   } catch (const SizeLimitError&) {
     throw;
   } catch (const InvalidInputError& error) {
