@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
@@ -20,17 +21,17 @@
 
 namespace kinematic_coverage::core {
 
-PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string& out_dir,
-                             std::ostream& out) {
-  const PlannerParameters& parameters = *request.parameters;
-  const PolygonWithHoles& free_area = *request.free_area;
-  const CoveragePlan& plan = *request.plan;
+namespace {
 
+/// The smoothed (or segment-only) trajectory of the plan, with its progress line. The
+/// plan and the parameters are valid here: a failure is the package's.
+GeneratedTrajectory generateTrajectory(const PlanOutputRequest& request, std::ostream& out) {
+  const PlannerParameters& parameters = *request.parameters;
   const auto stage_start = std::chrono::steady_clock::now();
-  // The plan and the parameters are valid here: a failure below is the package's.
   GeneratedTrajectory trajectory;
   try {
-    trajectory = TrajectoryGenerator(parameters).generate(plan.waypoints, free_area);
+    trajectory =
+        TrajectoryGenerator(parameters).generate(request.plan->waypoints, *request.free_area);
   } catch (const SizeLimitError&) {
     throw;
   } catch (const InvalidInputError& error) {
@@ -44,17 +45,16 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
       << turns.kept_for_coverage << "), " << trajectory.poses.size() << " poses, "
       << formatNumber(trajectory.traversal_time_s) << " s ("
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
+  return trajectory;
+}
 
-  // Coverage of the poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so
-  // that `coverage_tool evaluate` of that file reports the same figures.
-  std::vector<Pose2> poses;
-  poses.reserve(trajectory.poses.size());
-  for (const TrajectoryPose& pose : trajectory.poses) {
-    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
-  }
+/// The coverage of `poses`, with its progress line; a failure is the package's.
+TrajectoryCoverage measureCoverage(const PlanOutputRequest& request,
+                                   const std::vector<Pose2>& poses, std::ostream& out) {
   TrajectoryCoverage coverage;
   try {
-    coverage = measureTrajectoryCoverage(free_area, plan.offset_parts, parameters, poses);
+    coverage = measureTrajectoryCoverage(*request.free_area, request.plan->offset_parts,
+                                         *request.parameters, poses);
   } catch (const SizeLimitError&) {
     throw;
   } catch (const InvalidInputError& error) {
@@ -62,23 +62,15 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   }
   out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
       << ")" << std::endl;
-  std::optional<TrajectoryCoverage> combined;
-  if (request.visited) {
-    std::vector<Pose2> all = *request.visited;
-    all.insert(all.end(), poses.begin(), poses.end());
-    combined = measureTrajectoryCoverage(free_area, plan.offset_parts, parameters, all);
-    out << "combined coverage: visited and new trajectory: " << coverageSummary(*combined) << " ("
-        << formatSeconds(combined->duration_s) << ")" << std::endl;
-  }
+  return coverage;
+}
 
-  createOutputDirectory(out_dir);
-  const std::filesystem::path dir(out_dir);
-  const std::string waypoints_path = (dir / "waypoints.csv").string();
-  const std::string trajectory_path = (dir / "trajectory.csv").string();
-  const std::string metrics_path = (dir / "metrics.json").string();
-  const std::string plot_path = (dir / "plot.png").string();
-  WaypointCsvWriter().write(waypoints_path, plan.waypoints);
-  TrajectoryCsvWriter().write(trajectory_path, trajectory.poses);
+/// metrics.json (docs/REFERENCE.md, Metrics).
+JsonObject planMetrics(const PlanOutputRequest& request, const GeneratedTrajectory& trajectory,
+                       const TrajectoryCoverage& coverage,
+                       const std::optional<TrajectoryCoverage>& combined) {
+  const CoveragePlan& plan = *request.plan;
+  const SmoothingStatistics& turns = trajectory.statistics;
   JsonObject metrics;
   metrics.set("planning_time_s", request.planning_time_s)
       .set("cells", static_cast<double>(plan.cells.size()))
@@ -101,13 +93,20 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   if (std::isfinite(trajectory.min_obstacle_clearance_m)) {
     metrics.set("min_obstacle_clearance_m", trajectory.min_obstacle_clearance_m);
   }
-  metrics.write(metrics_path);
+  return metrics;
+}
 
+/// plot.png's content: the areas, the heatmap (with the visited poses when replanning),
+/// the paths and the title with the figures shown.
+CoveragePlotData planPlot(const PlanOutputRequest& request, const std::vector<Pose2>& poses,
+                          const GeneratedTrajectory& trajectory, const TrajectoryCoverage& coverage,
+                          const std::optional<TrajectoryCoverage>& combined) {
+  const SmoothingStatistics& turns = trajectory.statistics;
   CoveragePlotData plot;
-  plot.free_area = free_area;
-  plot.offset_parts = plan.offset_parts;
+  plot.free_area = *request.free_area;
+  plot.offset_parts = request.plan->offset_parts;
   plot.heatmap = combined ? combined->heatmap : coverage.heatmap;
-  plot.waypoints = plan.waypoints;
+  plot.waypoints = request.plan->waypoints;
   plot.trajectory = poses;
   plot.start = request.start;
   plot.goal = request.goal;
@@ -119,6 +118,44 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
           << " of " << turns.turns_total << " turns smoothed  |  " << trajectory.trajectory_length_m
           << " m  |  " << trajectory.traversal_time_s << " s";
   plot.title_lines = {request.title, figures.str()};
+  return plot;
+}
+
+}  // namespace
+
+PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string& out_dir,
+                             std::ostream& out) {
+  const GeneratedTrajectory trajectory = generateTrajectory(request, out);
+
+  // Coverage of the poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so
+  // that `coverage_tool evaluate` of that file reports the same figures.
+  std::vector<Pose2> poses;
+  poses.reserve(trajectory.poses.size());
+  for (const TrajectoryPose& pose : trajectory.poses) {
+    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
+  }
+  const TrajectoryCoverage coverage = measureCoverage(request, poses, out);
+  std::optional<TrajectoryCoverage> combined;
+  if (request.visited) {
+    std::vector<Pose2> all = *request.visited;
+    all.insert(all.end(), poses.begin(), poses.end());
+    combined = measureTrajectoryCoverage(*request.free_area, request.plan->offset_parts,
+                                         *request.parameters, all);
+    out << "combined coverage: visited and new trajectory: " << coverageSummary(*combined) << " ("
+        << formatSeconds(combined->duration_s) << ")" << std::endl;
+  }
+
+  createOutputDirectory(out_dir);
+  const std::filesystem::path dir(out_dir);
+  const std::string waypoints_path = (dir / "waypoints.csv").string();
+  const std::string trajectory_path = (dir / "trajectory.csv").string();
+  const std::string metrics_path = (dir / "metrics.json").string();
+  const std::string plot_path = (dir / "plot.png").string();
+  WaypointCsvWriter().write(waypoints_path, request.plan->waypoints);
+  TrajectoryCsvWriter().write(trajectory_path, trajectory.poses);
+  planMetrics(request, trajectory, coverage, combined).write(metrics_path);
+
+  CoveragePlotData plot = planPlot(request, poses, trajectory, coverage, combined);
   PlanOutputs outputs;
   // Replanning: what the visited poses and the new trajectory see together.
   const TrajectoryCoverage& searched = combined ? *combined : coverage;
@@ -130,7 +167,7 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   CoveragePlot().writePng(plot, plot_path);
   outputs.files = {waypoints_path, trajectory_path, metrics_path, plot_path};
   outputs.coverage = coverage.report;
-  outputs.turns = turns;
+  outputs.turns = trajectory.statistics;
   outputs.traversal_time_s = trajectory.traversal_time_s;
   return outputs;
 }

@@ -40,6 +40,51 @@ JsonObject percentileObject(const TrackingErrorStatistics& tracking) {
   return percentiles;
 }
 
+/// The poses the robot model reached, one per recorded step.
+std::vector<Pose2> actualPoses(const SimulationResult& simulation) {
+  std::vector<Pose2> actual;
+  actual.reserve(simulation.steps.size());
+  for (const SimulationStep& step : simulation.steps) actual.push_back(step.pose);
+  return actual;
+}
+
+/// metrics.json of `simulate` (docs/REFERENCE.md, Metrics).
+JsonObject simulationMetrics(const SimulationResult& simulation,
+                             const TrajectoryCoverage& coverage) {
+  const TrackingErrorStatistics& tracking = simulation.tracking;
+  JsonObject metrics;
+  metrics.set("traversal_time_s", simulation.traversal_time_s)
+      .set("tracking_error_sum_m", tracking.sum_m)
+      .set("tracking_error_mean_m", tracking.mean_m)
+      .set("tracking_error_percentiles_m", percentileObject(tracking));
+  setCoverageMetrics(coverage.report, metrics);
+  return metrics;
+}
+
+/// plot.png of `simulate` without its areas and first title line: the heatmap of the
+/// actual poses, the desired trajectory, the actual path coloured by tracking error and
+/// the figures line.
+CoveragePlotData simulationPlot(const SimulationResult& simulation,
+                                const TrajectoryCoverage& coverage,
+                                const std::vector<Pose2>& desired) {
+  const TrackingErrorStatistics& tracking = simulation.tracking;
+  CoveragePlotData plot;
+  plot.heatmap = coverage.heatmap;
+  plot.trajectory = desired;
+  plot.actual_path = actualPoses(simulation);
+  plot.actual_errors.reserve(simulation.steps.size());
+  for (const SimulationStep& step : simulation.steps) {
+    plot.actual_errors.push_back(step.tracking_error_m);
+  }
+  std::ostringstream figures;
+  figures.precision(4);
+  figures << simulation.traversal_time_s << " s  |  tracking error sum " << tracking.sum_m
+          << " m, mean " << tracking.mean_m << " m, p99 " << tracking.percentiles_m.back()
+          << " m  |  coverage " << coverage.report.coverage_percent << " %";
+  plot.title_lines = {figures.str()};
+  return plot;
+}
+
 }  // namespace
 
 std::string SimulateCommand::usage() {
@@ -97,16 +142,8 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
       << " m, 99th percentile " << tracking.percentiles_m.back() << " m ("
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
-  std::vector<Pose2> actual;
-  std::vector<double> errors;
-  actual.reserve(simulation.steps.size());
-  errors.reserve(simulation.steps.size());
-  for (const SimulationStep& step : simulation.steps) {
-    actual.push_back(step.pose);
-    errors.push_back(step.tracking_error_m);
-  }
-  const TrajectoryCoverage coverage =
-      measureTrajectoryCoverage(cleaned.free_area, offset.parts, mission.parameters, actual);
+  const TrajectoryCoverage coverage = measureTrajectoryCoverage(
+      cleaned.free_area, offset.parts, mission.parameters, actualPoses(simulation));
   out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
       << ")" << std::endl;
 
@@ -116,30 +153,14 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const std::string metrics_path = (dir / "metrics.json").string();
   const std::string plot_path = (dir / "plot.png").string();
   writeTextFile(actual_path, actualCsv(simulation.steps));
-  JsonObject metrics;
-  metrics.set("traversal_time_s", simulation.traversal_time_s)
-      .set("tracking_error_sum_m", tracking.sum_m)
-      .set("tracking_error_mean_m", tracking.mean_m)
-      .set("tracking_error_percentiles_m", percentileObject(tracking));
-  setCoverageMetrics(coverage.report, metrics);
-  metrics.write(metrics_path);
-
-  CoveragePlotData plot;
+  simulationMetrics(simulation, coverage).write(metrics_path);
+  CoveragePlotData plot = simulationPlot(simulation, coverage, desired);
   plot.free_area = cleaned.free_area;
   plot.offset_parts = offset.parts;
-  plot.heatmap = coverage.heatmap;
-  plot.trajectory = desired;
-  plot.actual_path = actual;
-  plot.actual_errors = errors;
-  std::ostringstream figures;
-  figures.precision(4);
-  figures << simulation.traversal_time_s << " s  |  tracking error sum " << tracking.sum_m
-          << " m, mean " << tracking.mean_m << " m, p99 " << tracking.percentiles_m.back()
-          << " m  |  coverage " << coverage.report.coverage_percent << " %";
-  plot.title_lines = {"Simulated robot on " +
-                          std::filesystem::path(trajectory_path).filename().string() + " (" +
-                          std::filesystem::path(arguments.mission_path).filename().string() + ")",
-                      figures.str()};
+  plot.title_lines.insert(
+      plot.title_lines.begin(),
+      "Simulated robot on " + std::filesystem::path(trajectory_path).filename().string() + " (" +
+          std::filesystem::path(arguments.mission_path).filename().string() + ")");
   CoveragePlot().writePng(plot, plot_path);
 
   std::ostringstream notes;
