@@ -42,78 +42,86 @@ class Parser {
   }
 
   GtsplibProblem run() {
-    bool have_coordinates = false;
-    bool have_weights = false;
-    bool have_sets = false;
     while (current_ < lines_.size()) {
       const std::string line = trim(lines_[current_]);
       const int line_number = static_cast<int>(current_) + 1;
       ++current_;
       if (line.empty()) continue;
-      std::string key;
-      std::string value;
-      const auto colon = line.find(':');
-      if (colon != std::string::npos) {
-        key = upper(trim(line.substr(0, colon)));
-        value = trim(line.substr(colon + 1));
-      } else {
-        const auto blank = line.find_first_of(" \t");
-        key = upper(line.substr(0, blank));
-        value = blank == std::string::npos ? "" : trim(line.substr(blank));
-      }
+      const auto [key, value] = keyAndValue(line);
       if (key == "EOF") break;
       if (!std::isalpha(static_cast<unsigned char>(key[0]))) {
         fail(line_number, "data '" + line + "' outside a section");
       }
-      if (key == "NAME") {
-        problem_.name = value;
-      } else if (key == "COMMENT") {
-      } else if (key == "TYPE") {
-        problem_.type = upper(value);
-        if (problem_.type != "GTSP" && problem_.type != "AGTSP") {
-          fail(line_number, "TYPE '" + value + "' is not GTSP or AGTSP");
-        }
-      } else if (key == "DIMENSION") {
-        dimension_ = positiveInteger(value, line_number, "DIMENSION");
-        if (dimension_ > kMaxDimension) {
-          fail(line_number, "DIMENSION " + value + " exceeds " + std::to_string(kMaxDimension));
-        }
-      } else if (key == "GTSP_SETS") {
-        set_count_ = positiveInteger(value, line_number, "GTSP_SETS");
-      } else if (key == "EDGE_WEIGHT_TYPE") {
-        weight_type_ = upper(value);
-        if (weight_type_ != "EUC_2D" && weight_type_ != "EXPLICIT") {
-          fail(line_number, "EDGE_WEIGHT_TYPE '" + value + "' is not supported (EUC_2D, EXPLICIT)");
-        }
-      } else if (key == "EDGE_WEIGHT_FORMAT") {
-        weight_format_ = upper(value);
-      } else if (key == "NODE_COORD_TYPE" || key == "DISPLAY_DATA_TYPE") {
-      } else if (key == "NODE_COORD_SECTION") {
-        readCoordinates(line_number);
-        have_coordinates = true;
-      } else if (key == "EDGE_WEIGHT_SECTION") {
-        readWeights(line_number);
-        have_weights = true;
-      } else if (key == "GTSP_SET_SECTION") {
-        readSets(line_number);
-        have_sets = true;
-      } else if (key == "DISPLAY_DATA_SECTION") {
-        requireDimension(line_number, key);
-        const std::vector<NumberToken> numbers = readNumbers();
-        if (numbers.size() != static_cast<std::size_t>(3 * dimension_)) {
-          fail(line_number, "DISPLAY_DATA_SECTION has " + std::to_string(numbers.size()) +
-                                " numbers, expected 3 per node");
-        }
-      } else {
-        fail(line_number, "unknown keyword '" + key + "'");
-      }
+      readKeyword(key, value, line_number);
     }
+    return finish();
+  }
+
+ private:
+  /// "KEY: value" or "KEY value", the key in upper case.
+  static std::pair<std::string, std::string> keyAndValue(const std::string& line) {
+    const auto colon = line.find(':');
+    if (colon != std::string::npos) {
+      return {upper(trim(line.substr(0, colon))), trim(line.substr(colon + 1))};
+    }
+    const auto blank = line.find_first_of(" \t");
+    return {upper(line.substr(0, blank)),
+            blank == std::string::npos ? "" : trim(line.substr(blank))};
+  }
+
+  /// One specification keyword, or a section read from the lines after it.
+  void readKeyword(const std::string& key, const std::string& value, int line_number) {
+    if (key == "NAME") {
+      problem_.name = value;
+    } else if (key == "COMMENT" || key == "NODE_COORD_TYPE" || key == "DISPLAY_DATA_TYPE") {
+    } else if (key == "TYPE") {
+      problem_.type = upper(value);
+      if (problem_.type != "GTSP" && problem_.type != "AGTSP") {
+        fail(line_number, "TYPE '" + value + "' is not GTSP or AGTSP");
+      }
+    } else if (key == "DIMENSION") {
+      dimension_ = positiveInteger(value, line_number, "DIMENSION");
+      if (dimension_ > kMaxDimension) {
+        fail(line_number, "DIMENSION " + value + " exceeds " + std::to_string(kMaxDimension));
+      }
+    } else if (key == "GTSP_SETS") {
+      set_count_ = positiveInteger(value, line_number, "GTSP_SETS");
+    } else if (key == "EDGE_WEIGHT_TYPE") {
+      weight_type_ = upper(value);
+      if (weight_type_ != "EUC_2D" && weight_type_ != "EXPLICIT") {
+        fail(line_number, "EDGE_WEIGHT_TYPE '" + value + "' is not supported (EUC_2D, EXPLICIT)");
+      }
+    } else if (key == "EDGE_WEIGHT_FORMAT") {
+      weight_format_ = upper(value);
+    } else if (key == "NODE_COORD_SECTION") {
+      readCoordinates(line_number);
+      have_coordinates_ = true;
+    } else if (key == "EDGE_WEIGHT_SECTION") {
+      readWeights(line_number);
+      have_weights_ = true;
+    } else if (key == "GTSP_SET_SECTION") {
+      readSets(line_number);
+      have_sets_ = true;
+    } else if (key == "DISPLAY_DATA_SECTION") {
+      requireDimension(line_number, key);
+      const std::vector<NumberToken> numbers = readNumbers();
+      if (numbers.size() != static_cast<std::size_t>(3 * dimension_)) {
+        fail(line_number, "DISPLAY_DATA_SECTION has " + std::to_string(numbers.size()) +
+                              " numbers, expected 3 per node");
+      }
+    } else {
+      fail(line_number, "unknown keyword '" + key + "'");
+    }
+  }
+
+  /// The problem once every line is read: what is missing, the costs, the instance checks.
+  GtsplibProblem finish() {
     if (dimension_ < 0) fail(0, "DIMENSION missing");
     if (set_count_ < 0) fail(0, "GTSP_SETS missing");
     if (weight_type_.empty()) fail(0, "EDGE_WEIGHT_TYPE missing");
-    if (!have_sets) fail(0, "GTSP_SET_SECTION missing");
-    if (weight_type_ == "EUC_2D" && !have_coordinates) fail(0, "NODE_COORD_SECTION missing");
-    if (weight_type_ == "EXPLICIT" && !have_weights) fail(0, "EDGE_WEIGHT_SECTION missing");
+    if (!have_sets_) fail(0, "GTSP_SET_SECTION missing");
+    if (weight_type_ == "EUC_2D" && !have_coordinates_) fail(0, "NODE_COORD_SECTION missing");
+    if (weight_type_ == "EXPLICIT" && !have_weights_) fail(0, "EDGE_WEIGHT_SECTION missing");
     if (weight_type_ == "EUC_2D") computeEuclideanCosts();
     GtspInstance& instance = problem_.instance;
     instance.node_count = static_cast<int>(dimension_);
@@ -125,7 +133,6 @@ class Parser {
     return problem_;
   }
 
- private:
   [[noreturn]] void fail(int line, const std::string& message) const {
     std::ostringstream text;
     text << source_;
@@ -342,6 +349,9 @@ class Parser {
   long long set_count_ = -1;
   std::string weight_type_;
   std::string weight_format_;
+  bool have_coordinates_ = false;
+  bool have_weights_ = false;
+  bool have_sets_ = false;
   std::vector<double> x_;
   std::vector<double> y_;
 };

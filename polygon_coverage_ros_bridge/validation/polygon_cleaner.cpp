@@ -176,25 +176,28 @@ std::string disconnectedMessage(std::size_t parts) {
          "disconnected): one connected area is needed";
 }
 
-}  // namespace
-
-CleanedPolygon PolygonCleaner::clean(const PolygonWithHoles& raw) const {
-  CleanedPolygon cleaned;
+/// The rings (hull first) without repeated consecutive vertices; a warning per ring that
+/// had some.
+std::vector<std::vector<EPoint>> ringsWithoutDuplicates(const PolygonWithHoles& raw,
+                                                        std::vector<std::string>* warnings) {
   std::vector<std::vector<EPoint>> rings;
   for (std::size_t r = 0; r <= raw.holes.size(); ++r) {
     const Ring& input = r == 0 ? raw.hull : raw.holes[r - 1];
     rings.push_back(dropDuplicateVertices(input));
     const std::size_t dropped = input.size() - rings.back().size();
     if (dropped > 0) {
-      cleaned.warnings.push_back(ringName(r) + ": " + std::to_string(dropped) +
-                                 (dropped == 1 ? " duplicate consecutive vertex dropped"
-                                               : " duplicate consecutive vertices dropped"));
+      warnings->push_back(ringName(r) + ": " + std::to_string(dropped) +
+                          (dropped == 1 ? " duplicate consecutive vertex dropped"
+                                        : " duplicate consecutive vertices dropped"));
     }
   }
-  std::vector<EPolygon> polygons;
-  for (const auto& ring : rings) polygons.push_back(counterClockwise(ring));
+  return rings;
+}
 
-  // Warnings: which holes merge, which cut the hull back.
+/// A warning per cleaning step the rings need: holes that cross or touch the hull (which
+/// is cut back), holes that overlap, touch or nest (which are merged).
+void contactWarnings(const std::vector<std::vector<EPoint>>& rings,
+                     const std::vector<EPolygon>& polygons, std::vector<std::string>* warnings) {
   const auto contacts = findContacts(rings);
   for (const auto& [pair, contact] : contacts) {
     const auto [a, b] = pair;
@@ -203,22 +206,22 @@ CleanedPolygon PolygonCleaner::clean(const PolygonWithHoles& raw) const {
       std::vector<EPolygonWithHoles> inside;
       CGAL::intersection(polygons[0], polygons[b], std::back_inserter(inside));
       if (exactArea(inside) < CGAL::abs(polygons[b].area())) {
-        cleaned.warnings.push_back(ringName(b) +
-                                   " crosses the hull: its part outside the hull is cut off "
-                                   "and the hull is cut back");
+        warnings->push_back(ringName(b) +
+                            " crosses the hull: its part outside the hull is cut off "
+                            "and the hull is cut back");
       } else if (contact.along_edge || several_points) {
-        cleaned.warnings.push_back(ringName(b) + " touches the hull " +
-                                   (contact.along_edge ? "along an edge" : "at several points") +
-                                   ": the hull is cut back");
+        warnings->push_back(ringName(b) + " touches the hull " +
+                            (contact.along_edge ? "along an edge" : "at several points") +
+                            ": the hull is cut back");
       }
       continue;
     }
     if (CGAL::do_intersect(polygons[a], polygons[b], CGAL::Tag_false())) {
-      cleaned.warnings.push_back(ringName(a) + " and " + ringName(b) + " overlap: merged");
+      warnings->push_back(ringName(a) + " and " + ringName(b) + " overlap: merged");
     } else if (contact.along_edge || several_points) {
-      cleaned.warnings.push_back(ringName(a) + " and " + ringName(b) + " touch " +
-                                 (contact.along_edge ? "along an edge" : "at several points") +
-                                 ": merged");
+      warnings->push_back(ringName(a) + " and " + ringName(b) + " touch " +
+                          (contact.along_edge ? "along an edge" : "at several points") +
+                          ": merged");
     }
   }
   std::vector<CGAL::Bbox_2> boxes;
@@ -230,12 +233,21 @@ CleanedPolygon PolygonCleaner::clean(const PolygonWithHoles& raw) const {
                           boxes[b].ymin() <= boxes[a].ymin() && boxes[a].ymax() <= boxes[b].ymax();
       if (!nested || contacts.count(std::minmax(a, b)) > 0) continue;
       if (polygons[b].bounded_side(polygons[a][0]) == CGAL::ON_BOUNDED_SIDE) {
-        cleaned.warnings.push_back(ringName(a) + " lies inside " + ringName(b) + ": merged");
+        warnings->push_back(ringName(a) + " lies inside " + ringName(b) + ": merged");
       }
     }
   }
+}
 
-  // The free area: the hull minus the union of the holes.
+/// The free area's boundary loops: its one hull loop first, then its hole loops.
+struct FreeAreaLoops {
+  std::vector<EPoint> hull;
+  std::vector<std::vector<EPoint>> holes;
+};
+
+/// The hull minus the union of the holes, as simple loops (split where a boundary
+/// repeats a vertex). InvalidInputError when it is empty or not one connected area.
+FreeAreaLoops freeAreaLoops(const std::vector<EPolygon>& polygons) {
   EPolygonSet holes;
   holes.join(polygons.begin() + 1, polygons.end());
   EPolygonSet free_area(polygons[0]);
@@ -267,21 +279,34 @@ CleanedPolygon PolygonCleaner::clean(const PolygonWithHoles& raw) const {
   if (const std::size_t cycles = touchingCycles(loops); cycles > 0) {
     throw InvalidInputError(disconnectedMessage(1 + cycles));
   }
+  return {std::move(hulls[0]), std::move(hole_loops)};
+}
 
-  const PolygonValidator validator;
-  auto finish = [&](const std::vector<EPoint>& loop, const std::string& name) {
-    Ring ring = toRing(loop);
-    try {
-      validator.validateRing(ring, name);
-    } catch (const InvalidInputError& error) {
-      throw InvalidInputError(std::string("after cleaning, the ") + error.what() +
-                              ": the input has features below floating-point resolution");
-    }
-    return ring;
-  };
-  cleaned.free_area.hull = finish(hulls[0], "hull");
-  for (std::size_t h = 0; h < hole_loops.size(); ++h) {
-    cleaned.free_area.holes.push_back(finish(hole_loops[h], "cleaned hole " + std::to_string(h)));
+/// A cleaned loop as a ring, checked again: rounding to doubles must not break it.
+Ring validatedRing(const std::vector<EPoint>& loop, const std::string& name) {
+  Ring ring = toRing(loop);
+  try {
+    PolygonValidator().validateRing(ring, name);
+  } catch (const InvalidInputError& error) {
+    throw InvalidInputError(std::string("after cleaning, the ") + error.what() +
+                            ": the input has features below floating-point resolution");
+  }
+  return ring;
+}
+
+}  // namespace
+
+CleanedPolygon PolygonCleaner::clean(const PolygonWithHoles& raw) const {
+  CleanedPolygon cleaned;
+  const std::vector<std::vector<EPoint>> rings = ringsWithoutDuplicates(raw, &cleaned.warnings);
+  std::vector<EPolygon> polygons;
+  for (const auto& ring : rings) polygons.push_back(counterClockwise(ring));
+  contactWarnings(rings, polygons, &cleaned.warnings);
+  const FreeAreaLoops loops = freeAreaLoops(polygons);
+  cleaned.free_area.hull = validatedRing(loops.hull, "hull");
+  for (std::size_t h = 0; h < loops.holes.size(); ++h) {
+    cleaned.free_area.holes.push_back(
+        validatedRing(loops.holes[h], "cleaned hole " + std::to_string(h)));
   }
   return cleaned;
 }
