@@ -685,6 +685,147 @@ void drawErrorBar(cairo_t* cr, const CoveragePlotData& data, double x, double y,
   }
 }
 
+/// A column of legend rows right of the box: each row's sample at x, its label beside it.
+struct LegendColumn {
+  cairo_t* cr;
+  const Scale& scale;
+  double x;
+  double sample_width;
+  double label_x;
+  double row_height;
+  double y;  ///< the middle of the next row
+
+  /// Writes the current row's label and moves to the next row.
+  void label(const std::string& text) {
+    selectFont(cr, scale.legend, false);
+    setColour(cr, kTextColour);
+    showText(cr, text, label_x, y, Align::kStart);
+    y += row_height;
+  }
+};
+
+/// The keys to the lines: trajectory, actual path, waypoint path, offset free area.
+void drawLineKeys(LegendColumn& column, const CoveragePlotData& data) {
+  cairo_t* cr = column.cr;
+  const double f = column.scale.factor;
+  const double x = column.x;
+  const double sample_width = column.sample_width;
+  if (data.trajectory.size() > 1) {
+    setColour(cr, kTrajectoryColour);
+    cairo_move_to(cr, x, column.y);
+    cairo_line_to(cr, x + sample_width, column.y);
+    cairo_set_line_width(cr, 1.8 * f);
+    cairo_stroke(cr);
+    arrowPath(cr, Point2(x + 0.5 * sample_width, column.y), 0.0, column.scale);
+    cairo_fill(cr);
+    column.label("trajectory");
+  }
+  if (data.actual_path.size() > 1) {
+    cairo_set_line_width(cr, 2.4 * f);
+    for (int piece = 0; piece < 4; ++piece) {
+      setColour(cr, CoveragePlot::errorColour(piece / 3.0));
+      cairo_move_to(cr, x + piece * sample_width / 4.0, column.y);
+      cairo_line_to(cr, x + (piece + 1) * sample_width / 4.0, column.y);
+      cairo_stroke(cr);
+    }
+    column.label("actual path");
+  }
+  if (!data.waypoints.empty()) {
+    setColour(cr, kWaypointColour);
+    cairo_move_to(cr, x, column.y);
+    cairo_line_to(cr, x + sample_width, column.y);
+    cairo_set_line_width(cr, 1.3 * f);
+    setDash(cr, 6.0 * f, 4.0 * f);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+    for (const double dot_x : {x + 2.0 * f, x + sample_width - 2.0 * f}) {
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, dot_x, column.y, 2.8 * f, 0.0, 2.0 * M_PI);
+    }
+    cairo_fill(cr);
+    column.label("waypoint path");
+  }
+  if (!data.offset_parts.empty()) {
+    setColour(cr, kOffsetAreaColour);
+    cairo_move_to(cr, x, column.y);
+    cairo_line_to(cr, x + sample_width, column.y);
+    cairo_set_line_width(cr, 1.1 * f);
+    setDash(cr, 7.0 * f, 4.0 * f);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+    column.label("offset free area");
+  }
+}
+
+/// The keys to the outlined and filled shapes: the largest unseen region, obstacles, the
+/// start and the goal.
+void drawShapeKeys(LegendColumn& column, const CoveragePlotData& data) {
+  cairo_t* cr = column.cr;
+  const double f = column.scale.factor;
+  const double x = column.x;
+  const double sample_width = column.sample_width;
+  if (data.unseen_region) {
+    cairo_rectangle(cr, x + 0.5 * (sample_width - 16.0 * f), column.y - 8.0 * f, 16.0 * f,
+                    16.0 * f);
+    setColour(cr, kUnseenRegionColour);
+    cairo_set_line_width(cr, 2.2 * f);
+    cairo_stroke(cr);
+    column.label("largest unseen region");
+  }
+  if (!data.free_area.holes.empty()) {
+    cairo_rectangle(cr, x + 0.5 * (sample_width - 16.0 * f), column.y - 8.0 * f, 16.0 * f,
+                    16.0 * f);
+    setColour(cr, kObstacleColour);
+    cairo_fill_preserve(cr);
+    setColour(cr, kOutlineColour);
+    cairo_set_line_width(cr, 1.2 * f);
+    cairo_stroke(cr);
+    column.label("obstacle");
+  }
+  if (data.start) {
+    startMarkerPath(cr, Point2(x + 0.5 * sample_width, column.y), column.scale);
+    fillMarker(cr, kStartColour, column.scale);
+    column.label("start");
+  }
+  if (data.goal) {
+    goalMarkerPath(cr, Point2(x + 0.5 * sample_width, column.y), column.scale);
+    fillMarker(cr, kGoalColour, column.scale);
+    column.label("goal");
+  }
+}
+
+/// The colour bar of the heatmap's visit counts, under a "visits" heading.
+void drawVisitKey(LegendColumn& column) {
+  cairo_t* cr = column.cr;
+  const double f = column.scale.factor;
+  const double x = column.x;
+  column.y += 0.6 * column.row_height;
+  selectFont(cr, column.scale.legend, true);
+  setColour(cr, kTextColour);
+  showText(cr, "visits", x, column.y, Align::kStart);
+  column.y += 0.8 * column.row_height;
+  const double swatch_width = 22.0 * f;
+  const double swatch_height = 24.0 * f;
+  const std::array<const char*, kVisitColours.size()> names{"0  unseen", "1  seen once", "2", "3",
+                                                            "4+"};
+  const double bar_top = column.y;
+  selectFont(cr, column.scale.legend, false);
+  for (std::size_t i = kVisitColours.size(); i-- > 0;) {
+    cairo_rectangle(cr, x, column.y, swatch_width, swatch_height);
+    setColour(cr, kVisitColours[i]);
+    cairo_fill(cr);
+    setColour(cr, kTextColour);
+    showText(cr, names[i], x + swatch_width + 8.0 * f, column.y + 0.5 * swatch_height,
+             Align::kStart);
+    column.y += swatch_height;
+  }
+  setColour(cr, kOutlineColour);
+  cairo_set_line_width(cr, 1.0 * f);
+  cairo_rectangle(cr, x, bar_top, swatch_width, column.y - bar_top);
+  cairo_stroke(cr);
+  column.y += 0.6 * column.row_height;
+}
+
 /// The key to the lines and markers, then the colour bars of the heatmap and of the
 /// tracking error, right of the box.
 void drawLegend(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
@@ -692,114 +833,20 @@ void drawLegend(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlo
   const double f = scale.factor;
   const double x = layout.box_left + layout.box_width + 24.0 * f;
   const double sample_width = 34.0 * f;
-  const double label_x = x + sample_width + 10.0 * f;
   const double row_height = 25.0 * f;
-  double y = layout.box_top + 0.5 * row_height;
-  auto label = [&](const std::string& text) {
-    selectFont(cr, scale.legend, false);
-    setColour(cr, kTextColour);
-    showText(cr, text, label_x, y, Align::kStart);
-    y += row_height;
-  };
-
-  if (data.trajectory.size() > 1) {
-    setColour(cr, kTrajectoryColour);
-    cairo_move_to(cr, x, y);
-    cairo_line_to(cr, x + sample_width, y);
-    cairo_set_line_width(cr, 1.8 * f);
-    cairo_stroke(cr);
-    arrowPath(cr, Point2(x + 0.5 * sample_width, y), 0.0, scale);
-    cairo_fill(cr);
-    label("trajectory");
-  }
+  LegendColumn column{cr,
+                      scale,
+                      x,
+                      sample_width,
+                      x + sample_width + 10.0 * f,
+                      row_height,
+                      layout.box_top + 0.5 * row_height};
+  drawLineKeys(column, data);
+  drawShapeKeys(column, data);
+  if (data.heatmap) drawVisitKey(column);
   if (data.actual_path.size() > 1) {
-    cairo_set_line_width(cr, 2.4 * f);
-    for (int piece = 0; piece < 4; ++piece) {
-      setColour(cr, CoveragePlot::errorColour(piece / 3.0));
-      cairo_move_to(cr, x + piece * sample_width / 4.0, y);
-      cairo_line_to(cr, x + (piece + 1) * sample_width / 4.0, y);
-      cairo_stroke(cr);
-    }
-    label("actual path");
+    drawErrorBar(cr, data, x, column.y + 0.6 * row_height, scale);
   }
-  if (!data.waypoints.empty()) {
-    setColour(cr, kWaypointColour);
-    cairo_move_to(cr, x, y);
-    cairo_line_to(cr, x + sample_width, y);
-    cairo_set_line_width(cr, 1.3 * f);
-    setDash(cr, 6.0 * f, 4.0 * f);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
-    for (const double dot_x : {x + 2.0 * f, x + sample_width - 2.0 * f}) {
-      cairo_new_sub_path(cr);
-      cairo_arc(cr, dot_x, y, 2.8 * f, 0.0, 2.0 * M_PI);
-    }
-    cairo_fill(cr);
-    label("waypoint path");
-  }
-  if (!data.offset_parts.empty()) {
-    setColour(cr, kOffsetAreaColour);
-    cairo_move_to(cr, x, y);
-    cairo_line_to(cr, x + sample_width, y);
-    cairo_set_line_width(cr, 1.1 * f);
-    setDash(cr, 7.0 * f, 4.0 * f);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
-    label("offset free area");
-  }
-  if (data.unseen_region) {
-    cairo_rectangle(cr, x + 0.5 * (sample_width - 16.0 * f), y - 8.0 * f, 16.0 * f, 16.0 * f);
-    setColour(cr, kUnseenRegionColour);
-    cairo_set_line_width(cr, 2.2 * f);
-    cairo_stroke(cr);
-    label("largest unseen region");
-  }
-  if (!data.free_area.holes.empty()) {
-    cairo_rectangle(cr, x + 0.5 * (sample_width - 16.0 * f), y - 8.0 * f, 16.0 * f, 16.0 * f);
-    setColour(cr, kObstacleColour);
-    cairo_fill_preserve(cr);
-    setColour(cr, kOutlineColour);
-    cairo_set_line_width(cr, 1.2 * f);
-    cairo_stroke(cr);
-    label("obstacle");
-  }
-  if (data.start) {
-    startMarkerPath(cr, Point2(x + 0.5 * sample_width, y), scale);
-    fillMarker(cr, kStartColour, scale);
-    label("start");
-  }
-  if (data.goal) {
-    goalMarkerPath(cr, Point2(x + 0.5 * sample_width, y), scale);
-    fillMarker(cr, kGoalColour, scale);
-    label("goal");
-  }
-  if (data.heatmap) {
-    y += 0.6 * row_height;
-    selectFont(cr, scale.legend, true);
-    setColour(cr, kTextColour);
-    showText(cr, "visits", x, y, Align::kStart);
-    y += 0.8 * row_height;
-    const double swatch_width = 22.0 * f;
-    const double swatch_height = 24.0 * f;
-    const std::array<const char*, kVisitColours.size()> names{"0  unseen", "1  seen once", "2", "3",
-                                                              "4+"};
-    const double bar_top = y;
-    selectFont(cr, scale.legend, false);
-    for (std::size_t i = kVisitColours.size(); i-- > 0;) {
-      cairo_rectangle(cr, x, y, swatch_width, swatch_height);
-      setColour(cr, kVisitColours[i]);
-      cairo_fill(cr);
-      setColour(cr, kTextColour);
-      showText(cr, names[i], x + swatch_width + 8.0 * f, y + 0.5 * swatch_height, Align::kStart);
-      y += swatch_height;
-    }
-    setColour(cr, kOutlineColour);
-    cairo_set_line_width(cr, 1.0 * f);
-    cairo_rectangle(cr, x, bar_top, swatch_width, y - bar_top);
-    cairo_stroke(cr);
-    y += 0.6 * row_height;
-  }
-  if (data.actual_path.size() > 1) drawErrorBar(cr, data, x, y + 0.6 * row_height, scale);
 }
 
 }  // namespace
