@@ -37,6 +37,86 @@ std::vector<double> touchingDistances(const Point2& base, const Point2& directio
   return distances;
 }
 
+/// One end of a bulb turn: the arc between a leg and the arc onto (or off) the middle
+/// leg's line, which touch at `touch`.
+struct BulbEnd {
+  double distance;      ///< from the corner along the leg to where the end arc meets it
+  Point2 leg_point;     ///< that point
+  Point2 centre;        ///< the end arc's centre
+  Point2 touch;         ///< where the end arc and the middle arc touch
+  double end_sweep;     ///< |sweep| of the end arc, turning against the corners
+  double middle_sweep;  ///< |sweep| of the middle arc, turning with them
+};
+
+/// The feasible entries: the arc leaving the incoming leg (direction `d1`, corner `b1`)
+/// against the corners' way `side`, touching the arc onto the middle line at `run_start`.
+std::vector<BulbEnd> bulbEntries(const Point2& b1, const Point2& d1, const Point2& onto_centre,
+                                 const Point2& run_start, double side, double r) {
+  std::vector<BulbEnd> entries;
+  for (const double entry :
+       touchingDistances(b1 - side * r * leftNormal(d1), -d1, onto_centre, r)) {
+    const Point2 entry_point = b1 - entry * d1;
+    const Point2 entry_centre = entry_point - side * r * leftNormal(d1);
+    const Point2 onto_touch = 0.5 * (entry_centre + onto_centre);
+    const double entry_sweep = sweepBetween(polarAngle(entry_point - entry_centre),
+                                            polarAngle(onto_touch - entry_centre), -side);
+    const double onto_sweep = sweepBetween(polarAngle(onto_touch - onto_centre),
+                                           polarAngle(run_start - onto_centre), side);
+    if (entry_sweep >= M_PI || onto_sweep > kMaxMiddleSweep) continue;
+    entries.push_back({entry, entry_point, entry_centre, onto_touch, entry_sweep, onto_sweep});
+  }
+  return entries;
+}
+
+/// The feasible exits: the arc off the middle line at `run_end`, touching the arc that
+/// joins the outgoing leg (direction `d3`, corner `b2`) against the corners' way.
+std::vector<BulbEnd> bulbExits(const Point2& b2, const Point2& d3, const Point2& off_centre,
+                               const Point2& run_end, double side, double r) {
+  std::vector<BulbEnd> exits;
+  for (const double exit : touchingDistances(b2 - side * r * leftNormal(d3), d3, off_centre, r)) {
+    const Point2 exit_point = b2 + exit * d3;
+    const Point2 exit_centre = exit_point - side * r * leftNormal(d3);
+    const Point2 off_touch = 0.5 * (exit_centre + off_centre);
+    const double off_sweep =
+        sweepBetween(polarAngle(run_end - off_centre), polarAngle(off_touch - off_centre), side);
+    const double exit_sweep = sweepBetween(polarAngle(off_touch - exit_centre),
+                                           polarAngle(exit_point - exit_centre), -side);
+    if (exit_sweep >= M_PI || off_sweep > kMaxMiddleSweep) continue;
+    exits.push_back({exit, exit_point, exit_centre, off_touch, exit_sweep, off_sweep});
+  }
+  return exits;
+}
+
+/// The turn's primitives: entry arc, arc onto the line, the run along it (when it has a
+/// length), arc off it, exit arc; arcs of zero sweep left out.
+CornerSmoothing bulbSmoothing(const BulbEnd& entry, const BulbEnd& exit, const Point2& onto_centre,
+                              const Point2& off_centre, const Point2& run_start,
+                              const Point2& run_end, bool has_run, double side, double r) {
+  CornerSmoothing smoothing;
+  smoothing.variant = SmoothingVariant::kBulb;
+  smoothing.corners = 2;
+  smoothing.entry_distance = entry.distance;
+  smoothing.exit_distance = exit.distance;
+  const std::array<PathPrimitive, 2> onto{
+      PathPrimitive::arc(entry.centre, r, polarAngle(entry.leg_point - entry.centre),
+                         -side * entry.end_sweep),
+      PathPrimitive::arc(onto_centre, r, polarAngle(entry.touch - onto_centre),
+                         side * entry.middle_sweep)};
+  for (const PathPrimitive& arc : onto) {
+    if (arc.sweep() != 0.0) smoothing.arcs.push_back(arc);
+  }
+  if (has_run) smoothing.arcs.push_back(PathPrimitive::segment(run_start, run_end));
+  const std::array<PathPrimitive, 2> off{
+      PathPrimitive::arc(off_centre, r, polarAngle(run_end - off_centre), side * exit.middle_sweep),
+      PathPrimitive::arc(exit.centre, r, polarAngle(exit.touch - exit.centre),
+                         -side * exit.end_sweep)};
+  for (const PathPrimitive& arc : off) {
+    if (arc.sweep() != 0.0) smoothing.arcs.push_back(arc);
+  }
+  for (PathPrimitive& primitive : smoothing.arcs) primitive.withVariant(SmoothingVariant::kBulb);
+  return smoothing;
+}
+
 }  // namespace
 
 std::optional<CornerSmoothing> BulbTurnSmoothing::compute(const Point2& a, const Point2& b1,
@@ -73,57 +153,21 @@ std::optional<CornerSmoothing> BulbTurnSmoothing::compute(const Point2& a, const
   const Point2 onto_centre = run_start + side * r * leftNormal(d2);
   const Point2 off_centre = run_end + side * r * leftNormal(d2);
 
+  const std::vector<BulbEnd> exits = bulbExits(b2, d3, off_centre, run_end, side, r);
   std::optional<CornerSmoothing> best;
   double best_length = std::numeric_limits<double>::infinity();
-  for (const double entry :
-       touchingDistances(b1 - side * r * leftNormal(d1), -d1, onto_centre, r)) {
-    const Point2 entry_point = b1 - entry * d1;
-    const Point2 entry_centre = entry_point - side * r * leftNormal(d1);
-    const Point2 onto_touch = 0.5 * (entry_centre + onto_centre);
-    const double entry_sweep = sweepBetween(polarAngle(entry_point - entry_centre),
-                                            polarAngle(onto_touch - entry_centre), -side);
-    const double onto_sweep = sweepBetween(polarAngle(onto_touch - onto_centre),
-                                           polarAngle(run_start - onto_centre), side);
-    if (entry_sweep >= M_PI || onto_sweep > kMaxMiddleSweep) continue;
-    for (const double exit : touchingDistances(b2 - side * r * leftNormal(d3), d3, off_centre, r)) {
-      const Point2 exit_point = b2 + exit * d3;
-      const Point2 exit_centre = exit_point - side * r * leftNormal(d3);
-      const Point2 off_touch = 0.5 * (exit_centre + off_centre);
-      const double off_sweep =
-          sweepBetween(polarAngle(run_end - off_centre), polarAngle(off_touch - off_centre), side);
-      const double exit_sweep = sweepBetween(polarAngle(off_touch - exit_centre),
-                                             polarAngle(exit_point - exit_centre), -side);
-      if (exit_sweep >= M_PI || off_sweep > kMaxMiddleSweep) continue;
-      const double turning = side * (onto_sweep + off_sweep - entry_sweep - exit_sweep);
+  for (const BulbEnd& entry : bulbEntries(b1, d1, onto_centre, run_start, side, r)) {
+    for (const BulbEnd& exit : exits) {
+      const double turning =
+          side * (entry.middle_sweep + exit.middle_sweep - entry.end_sweep - exit.end_sweep);
       if (std::abs(turning - (first_turn + second_turn)) > kTurnTolerance) continue;
-      const double length = r * (entry_sweep + onto_sweep + off_sweep + exit_sweep) +
-                            (run_to - run_from) * middle_length;
+      const double length =
+          r * (entry.end_sweep + entry.middle_sweep + exit.middle_sweep + exit.end_sweep) +
+          (run_to - run_from) * middle_length;
       if (length >= best_length) continue;
       best_length = length;
-      CornerSmoothing smoothing;
-      smoothing.variant = SmoothingVariant::kBulb;
-      smoothing.corners = 2;
-      smoothing.entry_distance = entry;
-      smoothing.exit_distance = exit;
-      const std::array<PathPrimitive, 2> onto{
-          PathPrimitive::arc(entry_centre, r, polarAngle(entry_point - entry_centre),
-                             -side * entry_sweep),
-          PathPrimitive::arc(onto_centre, r, polarAngle(onto_touch - onto_centre),
-                             side * onto_sweep)};
-      for (const PathPrimitive& arc : onto) {
-        if (arc.sweep() != 0.0) smoothing.arcs.push_back(arc);
-      }
-      if (run_to > run_from) smoothing.arcs.push_back(PathPrimitive::segment(run_start, run_end));
-      const std::array<PathPrimitive, 2> off{
-          PathPrimitive::arc(off_centre, r, polarAngle(run_end - off_centre), side * off_sweep),
-          PathPrimitive::arc(exit_centre, r, polarAngle(off_touch - exit_centre),
-                             -side * exit_sweep)};
-      for (const PathPrimitive& arc : off) {
-        if (arc.sweep() != 0.0) smoothing.arcs.push_back(arc);
-      }
-      for (PathPrimitive& primitive : smoothing.arcs)
-        primitive.withVariant(SmoothingVariant::kBulb);
-      best = std::move(smoothing);
+      best = bulbSmoothing(entry, exit, onto_centre, off_centre, run_start, run_end,
+                           run_to > run_from, side, r);
     }
   }
   return best;
