@@ -103,91 +103,100 @@ std::vector<int> ExactGtspSolver::backtrack(int last) const {
 }
 
 GtspSolution ExactGtspSolver::solve() {
+  GtspSolution best = instance_.isPath() ? solvePath() : solveTour();
+  if (!free_nodes_.empty()) best.cost = gtspTourCost(instance_, best.nodes);
+  return best;
+}
+
+void ExactGtspSolver::fillLocalCosts() {
+  const std::size_t n = free_nodes_.size();
+  local_costs_.resize(n * n);
+  for (std::size_t u = 0; u < n; ++u) {
+    for (std::size_t w = 0; w < n; ++w) {
+      local_costs_[u * n + w] = instance_.cost(free_nodes_[u], free_nodes_[w]);
+    }
+  }
+}
+
+GtspSolution ExactGtspSolver::solvePath() {
+  const std::vector<int>& first = instance_.clusters[first_cluster_];
+  const std::vector<int>& goal = instance_.clusters[instance_.goal_cluster];
+  const std::size_t n = free_nodes_.size();
+  GtspSolution best;
+  best.cost = kInfinity;
+  if (free_nodes_.empty()) {
+    for (int s : first) {
+      for (int g : goal) {
+        if (instance_.cost(s, g) < best.cost) best = {{s, g}, instance_.cost(s, g)};
+      }
+    }
+    return best;
+  }
+  fillLocalCosts();
+  std::vector<double> source(n, kInfinity);
+  std::vector<int> source_node(n, -1);
+  for (std::size_t u = 0; u < n; ++u) {
+    for (int s : first) {
+      if (instance_.cost(s, free_nodes_[u]) < source[u]) {
+        source[u] = instance_.cost(s, free_nodes_[u]);
+        source_node[u] = s;
+      }
+    }
+  }
+  fillTable(source);
+  const double* full = &table_[static_cast<std::size_t>((1u << free_clusters_.size()) - 1u) * n];
+  double best_value = kInfinity;
+  int best_last = -1;
+  int best_goal = -1;
+  for (std::size_t u = 0; u < n; ++u) {
+    for (int g : goal) {
+      const double value = full[u] + instance_.cost(free_nodes_[u], g);
+      if (value < best_value) {
+        best_value = value;
+        best_last = static_cast<int>(u);
+        best_goal = g;
+      }
+    }
+  }
+  const std::vector<int> order = backtrack(best_last);
+  best.nodes = {source_node[order.front()]};
+  for (int u : order) best.nodes.push_back(free_nodes_[u]);
+  best.nodes.push_back(best_goal);
+  return best;
+}
+
+GtspSolution ExactGtspSolver::solveTour() {
   const std::vector<int>& first = instance_.clusters[first_cluster_];
   const std::size_t n = free_nodes_.size();
   GtspSolution best;
   best.cost = kInfinity;
-  if (instance_.isPath()) {
-    const std::vector<int>& goal = instance_.clusters[instance_.goal_cluster];
-    if (free_nodes_.empty()) {
-      for (int s : first) {
-        for (int g : goal) {
-          if (instance_.cost(s, g) < best.cost) best = {{s, g}, instance_.cost(s, g)};
-        }
-      }
-      return best;
+  if (free_nodes_.empty()) {
+    for (int a : first) {
+      if (instance_.cost(a, a) < best.cost) best = {{a}, instance_.cost(a, a)};
     }
-    local_costs_.resize(n * n);
-    for (std::size_t u = 0; u < n; ++u) {
-      for (std::size_t w = 0; w < n; ++w) {
-        local_costs_[u * n + w] = instance_.cost(free_nodes_[u], free_nodes_[w]);
-      }
-    }
-    std::vector<double> source(n, kInfinity);
-    std::vector<int> source_node(n, -1);
-    for (std::size_t u = 0; u < n; ++u) {
-      for (int s : first) {
-        if (instance_.cost(s, free_nodes_[u]) < source[u]) {
-          source[u] = instance_.cost(s, free_nodes_[u]);
-          source_node[u] = s;
-        }
-      }
-    }
+    return best;
+  }
+  fillLocalCosts();
+  std::vector<double> source(n);
+  for (int a : first) {
+    for (std::size_t u = 0; u < n; ++u) source[u] = instance_.cost(a, free_nodes_[u]);
     fillTable(source);
     const double* full = &table_[static_cast<std::size_t>((1u << free_clusters_.size()) - 1u) * n];
     double best_value = kInfinity;
     int best_last = -1;
-    int best_goal = -1;
     for (std::size_t u = 0; u < n; ++u) {
-      for (int g : goal) {
-        const double value = full[u] + instance_.cost(free_nodes_[u], g);
-        if (value < best_value) {
-          best_value = value;
-          best_last = static_cast<int>(u);
-          best_goal = g;
-        }
+      const double value = full[u] + instance_.cost(free_nodes_[u], a);
+      if (value < best_value) {
+        best_value = value;
+        best_last = static_cast<int>(u);
       }
     }
-    const std::vector<int> order = backtrack(best_last);
-    best.nodes = {source_node[order.front()]};
-    for (int u : order) best.nodes.push_back(free_nodes_[u]);
-    best.nodes.push_back(best_goal);
-  } else {
-    if (free_nodes_.empty()) {
-      for (int a : first) {
-        if (instance_.cost(a, a) < best.cost) best = {{a}, instance_.cost(a, a)};
-      }
-      return best;
-    }
-    local_costs_.resize(n * n);
-    for (std::size_t u = 0; u < n; ++u) {
-      for (std::size_t w = 0; w < n; ++w) {
-        local_costs_[u * n + w] = instance_.cost(free_nodes_[u], free_nodes_[w]);
-      }
-    }
-    std::vector<double> source(n);
-    for (int a : first) {
-      for (std::size_t u = 0; u < n; ++u) source[u] = instance_.cost(a, free_nodes_[u]);
-      fillTable(source);
-      const double* full =
-          &table_[static_cast<std::size_t>((1u << free_clusters_.size()) - 1u) * n];
-      double best_value = kInfinity;
-      int best_last = -1;
-      for (std::size_t u = 0; u < n; ++u) {
-        const double value = full[u] + instance_.cost(free_nodes_[u], a);
-        if (value < best_value) {
-          best_value = value;
-          best_last = static_cast<int>(u);
-        }
-      }
-      if (best_value < best.cost) {
-        best.nodes = {a};
-        for (int u : backtrack(best_last)) best.nodes.push_back(free_nodes_[u]);
-        best.cost = best_value;
-      }
+    if (best_value < best.cost) {
+      best.nodes = {a};
+      for (int u : backtrack(best_last)) best.nodes.push_back(free_nodes_[u]);
+      best.cost = best_value;
     }
   }
-  best.cost = gtspTourCost(instance_, best.nodes);
   return best;
 }
 

@@ -24,6 +24,12 @@ class ExactGtspSolver {
   GtspSolution solve();
 
  private:
+  /// The path instance: from the start cluster through every free cluster to the goal.
+  GtspSolution solvePath();
+  /// The tour instance: a cycle through every cluster, from each node of the first.
+  GtspSolution solveTour();
+  /// local_costs_: the costs between the free clusters' nodes.
+  void fillLocalCosts();
   /// Runs the subset program from the given source costs (per free node) into table_.
   void fillTable(const std::vector<double>& source);
   /// Walks table_ back from free node `last` of the full subset; returns the free-node order.
