@@ -162,6 +162,69 @@ GtspSolution MemeticGtspSolver::toSolution(const Individual& individual) const {
   return solution;
 }
 
+bool MemeticGtspSolver::distinctCost(const std::vector<Individual>& members, double cost) {
+  for (const Individual& other : members) {
+    if (std::abs(other.cost - cost) <= kRelativeCostTolerance * std::max(1.0, std::abs(cost))) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<MemeticGtspSolver::Individual> MemeticGtspSolver::initialPopulation(int population_size,
+                                                                                bool trivial) {
+  std::vector<Individual> population;
+  if (!options_.warm_start.empty()) {
+    Individual warm{sequenceFromTour(options_.warm_start), 0.0};
+    warm.cost = search_.improve(warm.sequence, deadline_);
+    population.push_back(std::move(warm));
+  }
+  for (int attempt = 0;
+       attempt < 3 * population_size && static_cast<int>(population.size()) < population_size &&
+       (population.empty() || Clock::now() < deadline_);
+       ++attempt) {
+    Individual individual{randomSequence(), 0.0};
+    individual.cost = search_.improve(individual.sequence, deadline_);
+    if (distinctCost(population, individual.cost)) population.push_back(std::move(individual));
+    if (trivial) break;
+  }
+  std::sort(population.begin(), population.end(), byCost);
+  return population;
+}
+
+void MemeticGtspSolver::nextGeneration(std::vector<Individual>& population, int population_size) {
+  const int m = static_cast<int>(instance_.clusters.size());
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Individual> pool = population;
+  for (int k = 0; k < population_size; ++k) {
+    Individual child;
+    const std::size_t parent = tournament(population);
+    const std::vector<int>* second = nullptr;
+    if (population.size() >= 2 && unit(random_) < kCrossoverShare) {
+      second = &population[tournament(population)].sequence;
+      child.sequence = crossover(population[parent].sequence, *second);
+    } else {
+      child.sequence = population[parent].sequence;
+      mutate(child.sequence);
+    }
+    const std::vector<char>* focus = nullptr;
+    if (options_.focused_search && m > kFocusedSearchMinClusters) {
+      markNewEdges(child.sequence, population[parent].sequence, second);
+      focus = &focus_;
+    }
+    child.cost = search_.improve(child.sequence, deadline_, focus);
+    pool.push_back(std::move(child));
+  }
+  std::stable_sort(pool.begin(), pool.end(), byCost);
+  population.clear();
+  for (Individual& individual : pool) {
+    if (static_cast<int>(population.size()) < population_size &&
+        distinctCost(population, individual.cost)) {
+      population.push_back(std::move(individual));
+    }
+  }
+}
+
 GtspSolution MemeticGtspSolver::solve() {
   // A NaN, negative or huge limit must not overflow the clock: clamp it to [0, kMaxTimeLimit].
   const double limit =
@@ -177,65 +240,13 @@ GtspSolution MemeticGtspSolver::solve() {
       options_.stall_generations > 0
           ? options_.stall_generations
           : std::clamp(kStallBase + m / 3, kMinStallGenerations, kMaxStallGenerations);
-  std::vector<Individual> population;
-  auto distinct = [&](const std::vector<Individual>& members, double cost) {
-    for (const Individual& other : members) {
-      if (std::abs(other.cost - cost) <= kRelativeCostTolerance * std::max(1.0, std::abs(cost))) {
-        return false;
-      }
-    }
-    return true;
-  };
-  if (!options_.warm_start.empty()) {
-    Individual warm{sequenceFromTour(options_.warm_start), 0.0};
-    warm.cost = search_.improve(warm.sequence, deadline_);
-    population.push_back(std::move(warm));
-  }
   const bool trivial = static_cast<int>(randomSequence().size()) <= 3;
-  for (int attempt = 0;
-       attempt < 3 * population_size && static_cast<int>(population.size()) < population_size &&
-       (population.empty() || Clock::now() < deadline_);
-       ++attempt) {
-    Individual individual{randomSequence(), 0.0};
-    individual.cost = search_.improve(individual.sequence, deadline_);
-    if (distinct(population, individual.cost)) population.push_back(std::move(individual));
-    if (trivial) break;
-  }
-  auto byCost = [](const Individual& a, const Individual& b) { return a.cost < b.cost; };
-  std::sort(population.begin(), population.end(), byCost);
+  std::vector<Individual> population = initialPopulation(population_size, trivial);
   if (trivial) return toSolution(population.front());
   int stall = 0;
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   while (stall < stall_limit && Clock::now() < deadline_) {
-    std::vector<Individual> pool = population;
-    for (int k = 0; k < population_size; ++k) {
-      Individual child;
-      const std::size_t parent = tournament(population);
-      const std::vector<int>* second = nullptr;
-      if (population.size() >= 2 && unit(random_) < kCrossoverShare) {
-        second = &population[tournament(population)].sequence;
-        child.sequence = crossover(population[parent].sequence, *second);
-      } else {
-        child.sequence = population[parent].sequence;
-        mutate(child.sequence);
-      }
-      const std::vector<char>* focus = nullptr;
-      if (options_.focused_search && m > kFocusedSearchMinClusters) {
-        markNewEdges(child.sequence, population[parent].sequence, second);
-        focus = &focus_;
-      }
-      child.cost = search_.improve(child.sequence, deadline_, focus);
-      pool.push_back(std::move(child));
-    }
-    std::stable_sort(pool.begin(), pool.end(), byCost);
     const double previous_best = population.front().cost;
-    population.clear();
-    for (Individual& individual : pool) {
-      if (static_cast<int>(population.size()) < population_size &&
-          distinct(population, individual.cost)) {
-        population.push_back(std::move(individual));
-      }
-    }
+    nextGeneration(population, population_size);
     if (population.front().cost <
         previous_best - kRelativeCostTolerance * std::max(1.0, previous_best)) {
       stall = 0;

@@ -60,6 +60,16 @@ class MemeticGtspSolver {
   std::size_t tournament(const std::vector<Individual>& population);
   std::size_t randomIndex(std::size_t bound) { return bound <= 1 ? 0 : random_() % bound; }
   GtspSolution toSolution(const Individual& individual) const;
+  static bool byCost(const Individual& a, const Individual& b) { return a.cost < b.cost; }
+  /// True when no member's cost equals `cost` (relatively): the population keeps one
+  /// individual per cost.
+  static bool distinctCost(const std::vector<Individual>& members, double cost);
+  /// The warm start, if any, and locally optimised random individuals of distinct costs,
+  /// cheapest first (one only for a `trivial` instance, which has one order).
+  std::vector<Individual> initialPopulation(int population_size, bool trivial);
+  /// One generation: children by crossover or mutation, locally optimised, and the best
+  /// of parents and children with distinct costs kept, cheapest first.
+  void nextGeneration(std::vector<Individual>& population, int population_size);
 
   const GtspInstance& instance_;
   GtspOptions options_;
