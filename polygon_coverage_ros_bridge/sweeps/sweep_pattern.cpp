@@ -213,6 +213,215 @@ FlankGap flankGap(const std::vector<std::pair<Point2, Point2>>& flanks,
   return gap;
 }
 
+/// Where lanes cross a cell (sweep frame: lanes vertical, at increasing x), and the moves
+/// and extra lanes that make every corner of the area and every flank seen while keeping
+/// the placement's rules: neighbours at most one sweep distance apart, outer lanes within
+/// the margin of the cell's sides.
+class LanePlacement {
+ public:
+  /// The limits of a placement in `frame` (the cell in the sweep frame).
+  struct Limits {
+    double x_min;
+    double x_max;
+    double inset;  ///< how far inside the cell a lane stays
+    double margin;
+    double spacing;
+    double half_width;
+    double half_length;
+    double tolerance;
+  };
+
+  LanePlacement(const Ring& frame, std::vector<double> positions, const Limits& limits,
+                std::vector<std::pair<Point2, Point2>> flanks)
+      : frame_(frame),
+        limits_(limits),
+        flanks_(std::move(flanks)),
+        positions_(std::move(positions)),
+        pinned_(positions_.size(), false) {
+    refresh();
+  }
+
+  /// Corners that no lane's swept footprint reaches get a lane through them: the nearest
+  /// lane moves there when it can without breaking the placement's rules and without
+  /// leaving more of the flanks unseen, otherwise an extra lane is added. Moving beats
+  /// adding: an extra lane beside a lane a few centimetres away makes a pattern that
+  /// doubles back on itself and a jog no turning radius can smooth. A moved lane stays
+  /// where it was moved.
+  ///
+  /// A move can uncover a corner or a flank checked before, so both are checked again until
+  /// all are seen; each change leaves one more corner or flank point on a lane that never
+  /// moves again. A flank found unseen gets the move or the extra lane (through one end of
+  /// its first unseen part, or half a footprint width beside it) that leaves the least of
+  /// the flanks unseen; a move wins a tie. Every change makes the unseen part shorter or
+  /// sees one more corner; the bound on changes only guards against endless rounding.
+  /// `area_corner[i]`: frame vertex i is a corner of the area, which must be seen.
+  void seeCornersAndFlanks(const std::vector<bool>& area_corner) {
+    int changes_left = kChangesPerVertex * static_cast<int>(frame_.size() + positions_.size());
+    bool changed = true;
+    while (changed && changes_left > 0) {
+      const int corner_changes = seeCorners(area_corner);
+      changes_left -= corner_changes;
+      changed = corner_changes > 0;
+      if (changed || gap_.length <= limits_.tolerance) continue;
+      if (!seeFlank()) break;
+      changed = true;
+      --changes_left;
+    }
+  }
+
+  const std::vector<double>& positions() const { return positions_; }
+  /// The lanes' vertical extents in the cell.
+  const std::vector<Interval>& spans() const { return spans_; }
+
+ private:
+  std::vector<Interval> intervalsAt(const std::vector<double>& xs) const {
+    std::vector<Interval> result;
+    for (double x : xs) result.push_back(verticalInterval(frame_, x, limits_.inset));
+    return result;
+  }
+  FlankGap flankGapAt(const std::vector<double>& xs) const {
+    return flankGap(flanks_, xs, intervalsAt(xs), limits_.half_width, limits_.half_length,
+                    limits_.tolerance);
+  }
+  void refresh() {
+    spans_ = intervalsAt(positions_);
+    gap_ = flankGapAt(positions_);
+  }
+  bool movable(std::size_t k, double x) const {
+    if (pinned_[k]) return false;
+    const double below = k == 0 ? limits_.x_min : positions_[k - 1];
+    const double above = k + 1 == positions_.size() ? limits_.x_max : positions_[k + 1];
+    const double limit_below = k == 0 ? limits_.margin : limits_.spacing;
+    const double limit_above = k + 1 == positions_.size() ? limits_.margin : limits_.spacing;
+    return x - below <= limit_below && above - x <= limit_above && x >= below && x <= above;
+  }
+  std::size_t nearestLane(double x) const {
+    const auto nearest =
+        std::min_element(positions_.begin(), positions_.end(),
+                         [&](double a, double b) { return std::abs(a - x) < std::abs(b - x); });
+    return static_cast<std::size_t>(nearest - positions_.begin());
+  }
+  std::vector<double> moved(std::size_t k, double x) const {
+    std::vector<double> result = positions_;
+    result[k] = x;
+    return result;
+  }
+  std::vector<double> added(double x) const {
+    std::vector<double> result = positions_;
+    result.insert(std::upper_bound(result.begin(), result.end(), x), x);
+    return result;
+  }
+  void move(std::size_t k, double x) {
+    positions_[k] = x;
+    pinned_[k] = true;
+  }
+  void add(double x) {
+    const auto at = std::upper_bound(positions_.begin(), positions_.end(), x);
+    pinned_.insert(pinned_.begin() + (at - positions_.begin()), true);
+    positions_.insert(at, x);
+  }
+  double clamped(double x) const {
+    return std::clamp(x, limits_.x_min + limits_.inset, limits_.x_max - limits_.inset);
+  }
+
+  /// One pass over the area's corners, moving or adding a lane for each unseen one;
+  /// returns the number of changes.
+  int seeCorners(const std::vector<bool>& area_corner) {
+    int changes = 0;
+    for (std::size_t i = 0; i < frame_.size(); ++i) {
+      const Point2& corner = frame_[i];
+      if (!area_corner[i]) continue;
+      bool seen = false;
+      for (std::size_t k = 0; k < positions_.size() && !seen; ++k) {
+        seen = std::abs(corner.x() - positions_[k]) <= limits_.half_width &&
+               corner.y() >= spans_[k].first - limits_.half_length &&
+               corner.y() <= spans_[k].second + limits_.half_length;
+      }
+      if (seen) continue;
+      const double x = clamped(corner.x());
+      const std::size_t k = nearestLane(x);
+      if (std::abs(positions_[k] - x) <= limits_.tolerance) continue;
+      if (movable(k, x) && flankGapAt(moved(k, x)).length <= gap_.length + limits_.tolerance) {
+        move(k, x);
+      } else {
+        add(x);
+      }
+      refresh();
+      ++changes;
+    }
+    return changes;
+  }
+
+  /// The move or extra lane that leaves the least of the flanks unseen, if it leaves less
+  /// than now; false when none does.
+  bool seeFlank() {
+    double best_move = std::numeric_limits<double>::infinity();
+    double best_add = best_move;
+    std::size_t move_lane = 0;
+    double move_x = 0.0;
+    double add_x = 0.0;
+    for (double end : {gap_.from.x(), gap_.to.x()}) {
+      for (double offset : {0.0, -limits_.half_width, limits_.half_width}) {
+        const double x = clamped(end + offset);
+        const std::size_t k = nearestLane(x);
+        if (std::abs(positions_[k] - x) <= limits_.tolerance) continue;
+        const double left_by_move = movable(k, x) ? flankGapAt(moved(k, x)).length
+                                                  : std::numeric_limits<double>::infinity();
+        if (left_by_move < best_move) {
+          best_move = left_by_move;
+          move_lane = k;
+          move_x = x;
+        }
+        const double left_by_add = flankGapAt(added(x)).length;
+        if (left_by_add < best_add) {
+          best_add = left_by_add;
+          add_x = x;
+        }
+      }
+    }
+    if (std::min(best_move, best_add) >= gap_.length - limits_.tolerance) return false;
+    if (best_move <= best_add + limits_.tolerance) {
+      move(move_lane, move_x);
+    } else {
+      add(add_x);
+    }
+    refresh();
+    return true;
+  }
+
+  const Ring& frame_;
+  const Limits limits_;
+  const std::vector<std::pair<Point2, Point2>> flanks_;
+  std::vector<double> positions_;
+  std::vector<bool> pinned_;
+  std::vector<Interval> spans_;
+  FlankGap gap_;
+};
+
+/// The fewest lanes across [x_min, x_max] whose outer margins stay within `margin` and
+/// whose spacing stays within `spacing`. The outer lanes go out to the margin, which
+/// shortens the joins between lanes, unless that crowds neighbours closer than half a
+/// sweep distance (no room to turn between them); then they are spread evenly.
+std::vector<double> evenLanePositions(double x_min, double x_max, double margin, double spacing) {
+  const double extent = x_max - x_min;
+  const int lane_count =
+      extent <= 2.0 * margin
+          ? 1
+          : 1 + std::max(1, static_cast<int>(std::ceil((extent - 2.0 * margin) / spacing - 1e-9)));
+  const bool crowded = lane_count > 1 && (extent - 2.0 * margin) / (lane_count - 1) < 0.5 * spacing;
+  const double lane_margin = crowded ? std::min(margin, 0.5 * extent / lane_count) : margin;
+  std::vector<double> positions;
+  if (lane_count == 1) {
+    positions.push_back(0.5 * (x_min + x_max));
+  } else {
+    const double span = extent - 2.0 * lane_margin;
+    for (int k = 0; k < lane_count; ++k) {
+      positions.push_back(x_min + lane_margin + span * k / (lane_count - 1));
+    }
+  }
+  return positions;
+}
+
 }  // namespace
 
 SweepPatternGenerator::SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
@@ -335,173 +544,44 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& 
     frame.push_back(toSweepFrame(p, direction));
     scale = std::max(scale, p.cwiseAbs().maxCoeff());
   }
-  double x_min = std::numeric_limits<double>::infinity();
-  double x_max = -x_min;
+  LanePlacement::Limits limits;
+  limits.x_min = std::numeric_limits<double>::infinity();
+  limits.x_max = -limits.x_min;
   for (const Point2& p : frame) {
-    x_min = std::min(x_min, p.x());
-    x_max = std::max(x_max, p.x());
+    limits.x_min = std::min(limits.x_min, p.x());
+    limits.x_max = std::max(limits.x_max, p.x());
   }
-  const double inset = kRelativeLaneInset * scale;
-  const double spacing = sensor_.sweepDistance();
-  const double half_width = 0.5 * sensor_.width();
-  const double half_length = 0.5 * sensor_.length();
-  const double margin = std::max(inset, std::min(0.5 * spacing, half_width - half_length));
+  limits.inset = kRelativeLaneInset * scale;
+  limits.spacing = sensor_.sweepDistance();
+  limits.half_width = 0.5 * sensor_.width();
+  limits.half_length = 0.5 * sensor_.length();
+  limits.margin = std::max(limits.inset,
+                           std::min(0.5 * limits.spacing, limits.half_width - limits.half_length));
+  limits.tolerance = kRelativeLaneMerge * scale;
 
-  // The fewest lanes whose outer margins stay within `margin` and whose spacing stays
-  // within the sweep distance. The outer lanes go out to the margin, which shortens the
-  // joins between lanes, unless that crowds neighbours closer than half a sweep
-  // distance (no room to turn between them); then they are spread evenly.
-  const double extent = x_max - x_min;
-  const int lane_count =
-      extent <= 2.0 * margin
-          ? 1
-          : 1 + std::max(1, static_cast<int>(std::ceil((extent - 2.0 * margin) / spacing - 1e-9)));
-  const bool crowded = lane_count > 1 && (extent - 2.0 * margin) / (lane_count - 1) < 0.5 * spacing;
-  const double lane_margin = crowded ? std::min(margin, 0.5 * extent / lane_count) : margin;
-  std::vector<double> positions;
-  if (lane_count == 1) {
-    positions.push_back(0.5 * (x_min + x_max));
-  } else {
-    const double span = extent - 2.0 * lane_margin;
-    for (int k = 0; k < lane_count; ++k) {
-      positions.push_back(x_min + lane_margin + span * k / (lane_count - 1));
-    }
-  }
-
-  auto intervalsAt = [&](const std::vector<double>& xs) {
-    std::vector<Interval> result;
-    for (double x : xs) result.push_back(verticalInterval(frame, x, inset));
-    return result;
-  };
   // The flanks of the lanes that their footprints must see (sweep frame): the parts of the
   // sides within kMaxFlankAngle of the lanes' direction, which the lanes run alongside.
   std::vector<std::pair<Point2, Point2>> flanks;
   const double max_flank_slope = std::tan(kMaxFlankAngle);
-  for (const auto& [a, b] : sidesToSee(cell, half_width - margin)) {
+  for (const auto& [a, b] : sidesToSee(cell, limits.half_width - limits.margin)) {
     const Point2 from = toSweepFrame(a, direction);
     const Point2 to = toSweepFrame(b, direction);
     if (std::abs(to.x() - from.x()) <= max_flank_slope * std::abs(to.y() - from.y())) {
       flanks.emplace_back(from, to);
     }
   }
-  const double tolerance = kRelativeLaneMerge * scale;
-  auto flankGapAt = [&](const std::vector<double>& xs) {
-    return flankGap(flanks, xs, intervalsAt(xs), half_width, half_length, tolerance);
-  };
+  LanePlacement placement(
+      frame, evenLanePositions(limits.x_min, limits.x_max, limits.margin, limits.spacing), limits,
+      std::move(flanks));
+  std::vector<bool> area_corner;
+  for (const Point2& corner : cell) area_corner.push_back(isAreaVertex(corner));
+  placement.seeCornersAndFlanks(area_corner);
+  return laneEnds(cell, direction, placement.positions(), placement.spans(), scale);
+}
 
-  // Corners that no lane's swept footprint reaches get a lane through them: the nearest
-  // lane moves there when it can without breaking the placement's rules (neighbours at
-  // most one sweep distance apart, outer lanes within the margin of the cell's sides)
-  // and without leaving more of the flanks unseen, otherwise an extra lane is added.
-  // Moving beats adding: an extra lane beside a lane a few centimetres away makes a
-  // pattern that doubles back on itself and a jog no turning radius can smooth.
-  // A moved lane stays where it was moved.
-  std::vector<Interval> spans = intervalsAt(positions);
-  FlankGap gap = flankGapAt(positions);
-  std::vector<bool> pinned(positions.size(), false);
-  auto movable = [&](std::size_t k, double x) {
-    if (pinned[k]) return false;
-    const double below = k == 0 ? x_min : positions[k - 1];
-    const double above = k + 1 == positions.size() ? x_max : positions[k + 1];
-    const double limit_below = k == 0 ? margin : spacing;
-    const double limit_above = k + 1 == positions.size() ? margin : spacing;
-    return x - below <= limit_below && above - x <= limit_above && x >= below && x <= above;
-  };
-  auto nearestLane = [&](double x) {
-    const auto nearest =
-        std::min_element(positions.begin(), positions.end(),
-                         [&](double a, double b) { return std::abs(a - x) < std::abs(b - x); });
-    return static_cast<std::size_t>(nearest - positions.begin());
-  };
-  auto moved = [&](std::size_t k, double x) {
-    std::vector<double> result = positions;
-    result[k] = x;
-    return result;
-  };
-  auto added = [&](double x) {
-    std::vector<double> result = positions;
-    result.insert(std::upper_bound(result.begin(), result.end(), x), x);
-    return result;
-  };
-  auto move = [&](std::size_t k, double x) {
-    positions[k] = x;
-    pinned[k] = true;
-  };
-  auto add = [&](double x) {
-    const auto at = std::upper_bound(positions.begin(), positions.end(), x);
-    pinned.insert(pinned.begin() + (at - positions.begin()), true);
-    positions.insert(at, x);
-  };
-  // A move can uncover a corner or a flank checked before, so both are checked again until
-  // all are seen; each change leaves one more corner or flank point on a lane that never
-  // moves again. A flank found unseen gets the move or the extra lane (through one end of
-  // its first unseen part, or half a footprint width beside it) that leaves the least of
-  // the flanks unseen; a move wins a tie. Every change makes the unseen part shorter or
-  // sees one more corner; the bound on changes only guards against endless rounding.
-  int changes_left = kChangesPerVertex * static_cast<int>(frame.size() + positions.size());
-  bool changed = true;
-  while (changed && changes_left > 0) {
-    changed = false;
-    for (std::size_t i = 0; i < frame.size(); ++i) {
-      const Point2& corner = frame[i];
-      if (!isAreaVertex(cell[i])) continue;
-      bool seen = false;
-      for (std::size_t k = 0; k < positions.size() && !seen; ++k) {
-        seen = std::abs(corner.x() - positions[k]) <= half_width &&
-               corner.y() >= spans[k].first - half_length &&
-               corner.y() <= spans[k].second + half_length;
-      }
-      if (seen) continue;
-      const double x = std::clamp(corner.x(), x_min + inset, x_max - inset);
-      const std::size_t k = nearestLane(x);
-      if (std::abs(positions[k] - x) <= tolerance) continue;
-      if (movable(k, x) && flankGapAt(moved(k, x)).length <= gap.length + tolerance) {
-        move(k, x);
-      } else {
-        add(x);
-      }
-      spans = intervalsAt(positions);
-      gap = flankGapAt(positions);
-      changed = true;
-      --changes_left;
-    }
-    if (changed || gap.length <= tolerance) continue;
-    double best_move = std::numeric_limits<double>::infinity();
-    double best_add = best_move;
-    std::size_t move_lane = 0;
-    double move_x = 0.0;
-    double add_x = 0.0;
-    for (double end : {gap.from.x(), gap.to.x()}) {
-      for (double offset : {0.0, -half_width, half_width}) {
-        const double x = std::clamp(end + offset, x_min + inset, x_max - inset);
-        const std::size_t k = nearestLane(x);
-        if (std::abs(positions[k] - x) <= tolerance) continue;
-        const double left_by_move = movable(k, x) ? flankGapAt(moved(k, x)).length
-                                                  : std::numeric_limits<double>::infinity();
-        if (left_by_move < best_move) {
-          best_move = left_by_move;
-          move_lane = k;
-          move_x = x;
-        }
-        const double left_by_add = flankGapAt(added(x)).length;
-        if (left_by_add < best_add) {
-          best_add = left_by_add;
-          add_x = x;
-        }
-      }
-    }
-    if (std::min(best_move, best_add) >= gap.length - tolerance) break;
-    if (best_move <= best_add + tolerance) {
-      move(move_lane, move_x);
-    } else {
-      add(add_x);
-    }
-    spans = intervalsAt(positions);
-    gap = flankGapAt(positions);
-    changed = true;
-    --changes_left;
-  }
-
+std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::laneEnds(
+    const Ring& cell, double direction, const std::vector<double>& positions,
+    const std::vector<std::pair<double, double>>& spans, double scale) const {
   // Lane ends pulled in by the inset, never past the lane's middle. The corner and side
   // checks above use the full lanes: the inset only gives up what the footprint's onward
   // half-length still sees. An end that the corner tolerance of verticalInterval put a

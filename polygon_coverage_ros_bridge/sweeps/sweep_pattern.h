@@ -73,6 +73,12 @@ class SweepPatternGenerator {
  private:
   /// True when the corner may need an extra lane (see the constructors).
   bool isAreaVertex(const Point2& corner) const;
+  /// The lanes at `positions` (sweep frame) with vertical extents `spans` in the cell, as
+  /// segments in the world frame: their ends pulled in by the lane-end inset and kept in
+  /// the cell and on the area's boundary where they are within rounding of it.
+  std::vector<std::pair<Point2, Point2>> laneEnds(
+      const Ring& cell, double direction, const std::vector<double>& positions,
+      const std::vector<std::pair<double, double>>& spans, double scale) const;
 
   /// The parts of the cell's edges that lie on the area's boundary (every edge without an
   /// area), less the points within `cut_reach` of the parts that are decomposition cuts.
