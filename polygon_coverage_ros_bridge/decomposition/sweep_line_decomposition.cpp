@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -66,31 +67,23 @@ Ring simplified(const Ring& ring, double tolerance) {
   return result;
 }
 
-}  // namespace
+/// The boundary edges that bound slabs (those not parallel to the lanes), with the slab
+/// positions: the vertices' x-coordinates, those within `tolerance` of each other snapped
+/// together (sweep frame).
+struct SlabEdges {
+  std::vector<Edge> edges;
+  std::vector<double> slab_x;
+};
 
-std::vector<Ring> SweepLineDecomposition::decompose(const PolygonWithHoles& polygon,
-                                                    double direction) const {
-  // Rings in the sweep frame.
-  std::vector<Ring> rings;
-  rings.push_back(polygon.hull);
-  rings.insert(rings.end(), polygon.holes.begin(), polygon.holes.end());
-  double scale = 1.0;
-  for (Ring& ring : rings) {
-    for (Point2& p : ring) {
-      p = toSweepFrame(p, direction);
-      scale = std::max(scale, p.cwiseAbs().maxCoeff());
-    }
-  }
-  const double tolerance = kRelativeSnapTolerance * scale;
-
-  // Snap vertex x-coordinates that are within the tolerance of each other.
+SlabEdges slabEdges(std::vector<Ring>& rings, double tolerance) {
   std::vector<double> all_x;
   for (const Ring& ring : rings) {
     for (const Point2& p : ring) all_x.push_back(p.x());
   }
   std::sort(all_x.begin(), all_x.end());
   std::vector<double> representative(all_x.size());
-  std::vector<double> slab_x;
+  SlabEdges slabs;
+  std::vector<double>& slab_x = slabs.slab_x;
   for (std::size_t i = 0; i < all_x.size(); ++i) {
     if (i == 0 || all_x[i] - slab_x.back() > tolerance) slab_x.push_back(all_x[i]);
     representative[i] = slab_x.back();
@@ -103,8 +96,6 @@ std::vector<Ring> SweepLineDecomposition::decompose(const PolygonWithHoles& poly
     return static_cast<std::size_t>(std::lower_bound(slab_x.begin(), slab_x.end(), x) -
                                     slab_x.begin());
   };
-
-  std::vector<Edge> edges;
   for (Ring& ring : rings) {
     for (Point2& p : ring) p.x() = snap(p.x());
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
@@ -116,21 +107,29 @@ std::vector<Ring> SweepLineDecomposition::decompose(const PolygonWithHoles& poly
       edge.right = a.x() < b.x() ? b : a;
       edge.left_slab = slabIndex(edge.left.x());
       edge.right_slab = slabIndex(edge.right.x());
-      edges.push_back(edge);
+      slabs.edges.push_back(edge);
     }
   }
-  if (slab_x.size() < 2) return {};
-  const std::size_t slab_count = slab_x.size() - 1;
+  return slabs;
+}
 
-  // Trapezoids of every slab, bottom to top.
+/// The trapezoids of every slab, bottom to top, and per slab the indices of its own.
+struct SlabTrapezoids {
+  std::vector<Trapezoid> trapezoids;
+  std::vector<std::vector<std::size_t>> of_slab;
+};
+
+SlabTrapezoids slabTrapezoids(const SlabEdges& slabs) {
+  const std::vector<Edge>& edges = slabs.edges;
+  const std::size_t slab_count = slabs.slab_x.size() - 1;
   std::vector<std::vector<std::size_t>> active(slab_count);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     for (std::size_t s = edges[e].left_slab; s < edges[e].right_slab; ++s) active[s].push_back(e);
   }
-  std::vector<Trapezoid> trapezoids;
-  std::vector<std::vector<std::size_t>> slab_trapezoids(slab_count);
+  SlabTrapezoids result;
+  result.of_slab.resize(slab_count);
   for (std::size_t s = 0; s < slab_count; ++s) {
-    const double x_mid = 0.5 * (slab_x[s] + slab_x[s + 1]);
+    const double x_mid = 0.5 * (slabs.slab_x[s] + slabs.slab_x[s + 1]);
     std::vector<std::size_t>& slab_edges = active[s];
     std::sort(slab_edges.begin(), slab_edges.end(), [&](std::size_t a, std::size_t b) {
       return yAt(edges[a], x_mid) < yAt(edges[b], x_mid);
@@ -147,16 +146,22 @@ std::vector<Ring> SweepLineDecomposition::decompose(const PolygonWithHoles& poly
       trapezoid.slab = s;
       trapezoid.bottom = slab_edges[k];
       trapezoid.top = slab_edges[k + 1];
-      slab_trapezoids[s].push_back(trapezoids.size());
-      trapezoids.push_back(trapezoid);
+      result.of_slab[s].push_back(result.trapezoids.size());
+      result.trapezoids.push_back(trapezoid);
     }
   }
+  return result;
+}
 
-  // Connections across each slab boundary: overlapping intervals on the shared line.
-  for (std::size_t s = 0; s + 1 < slab_count; ++s) {
-    const double x = slab_x[s + 1];
-    const auto& lefts = slab_trapezoids[s];
-    const auto& rights = slab_trapezoids[s + 1];
+/// Connects the trapezoids across each slab boundary whose intervals on the shared line
+/// overlap by more than `tolerance`.
+void connectAcrossSlabs(const SlabEdges& slabs, double tolerance, SlabTrapezoids* slab_trapezoids) {
+  std::vector<Trapezoid>& trapezoids = slab_trapezoids->trapezoids;
+  const std::vector<Edge>& edges = slabs.edges;
+  for (std::size_t s = 0; s + 2 < slabs.slab_x.size(); ++s) {
+    const double x = slabs.slab_x[s + 1];
+    const auto& lefts = slab_trapezoids->of_slab[s];
+    const auto& rights = slab_trapezoids->of_slab[s + 1];
     std::size_t i = 0;
     std::size_t j = 0;
     while (i < lefts.size() && j < rights.size()) {
@@ -177,17 +182,23 @@ std::vector<Ring> SweepLineDecomposition::decompose(const PolygonWithHoles& poly
       }
     }
   }
+}
 
-  // Join trapezoids into cells, left to right.
+/// Joins trapezoids into cells, left to right: a trapezoid continues its left neighbour's
+/// cell when each is the other's only neighbour (boustrophedon) and, for trapezoidal
+/// cells, when both lie between the same two edges. Returns the cells' trapezoids.
+std::vector<std::vector<std::size_t>> joinIntoCells(DecompositionType type,
+                                                    SlabTrapezoids* slab_trapezoids) {
+  std::vector<Trapezoid>& trapezoids = slab_trapezoids->trapezoids;
   std::vector<std::vector<std::size_t>> cells;
-  for (std::size_t s = 0; s < slab_count; ++s) {
-    for (std::size_t t : slab_trapezoids[s]) {
+  for (const std::vector<std::size_t>& slab : slab_trapezoids->of_slab) {
+    for (std::size_t t : slab) {
       Trapezoid& trapezoid = trapezoids[t];
       bool joined = false;
       if (trapezoid.left_neighbours.size() == 1) {
         const Trapezoid& left = trapezoids[trapezoid.left_neighbours.front()];
         joined = left.right_neighbours.size() == 1;
-        if (type_ == DecompositionType::kTrapezoidal) {
+        if (type == DecompositionType::kTrapezoidal) {
           joined = joined && left.bottom == trapezoid.bottom && left.top == trapezoid.top;
         }
         if (joined) trapezoid.cell = left.cell;
@@ -199,26 +210,53 @@ std::vector<Ring> SweepLineDecomposition::decompose(const PolygonWithHoles& poly
       cells[trapezoid.cell].push_back(t);
     }
   }
+  return cells;
+}
 
-  // Cell outlines: the bottom chain left to right, then the top chain right to left.
-  // Both ends of every trapezoid are kept: where a bounding edge ends on a slab
-  // boundary parallel to the lanes, the outline steps along that boundary.
+/// A cell's outline (sweep frame): the bottom chain left to right, then the top chain right
+/// to left. Both ends of every trapezoid are kept: where a bounding edge ends on a slab
+/// boundary parallel to the lanes, the outline steps along that boundary.
+Ring cellOutline(const std::vector<std::size_t>& cell, const SlabEdges& slabs,
+                 const std::vector<Trapezoid>& trapezoids) {
+  Ring ring;
+  for (std::size_t t : cell) {
+    const Trapezoid& trapezoid = trapezoids[t];
+    for (double x : {slabs.slab_x[trapezoid.slab], slabs.slab_x[trapezoid.slab + 1]}) {
+      ring.emplace_back(x, yAt(slabs.edges[trapezoid.bottom], x));
+    }
+  }
+  for (auto it = cell.rbegin(); it != cell.rend(); ++it) {
+    const Trapezoid& trapezoid = trapezoids[*it];
+    for (double x : {slabs.slab_x[trapezoid.slab + 1], slabs.slab_x[trapezoid.slab]}) {
+      ring.emplace_back(x, yAt(slabs.edges[trapezoid.top], x));
+    }
+  }
+  return ring;
+}
+
+}  // namespace
+
+std::vector<Ring> SweepLineDecomposition::decompose(const PolygonWithHoles& polygon,
+                                                    double direction) const {
+  // Rings in the sweep frame.
+  std::vector<Ring> rings;
+  rings.push_back(polygon.hull);
+  rings.insert(rings.end(), polygon.holes.begin(), polygon.holes.end());
+  double scale = 1.0;
+  for (Ring& ring : rings) {
+    for (Point2& p : ring) {
+      p = toSweepFrame(p, direction);
+      scale = std::max(scale, p.cwiseAbs().maxCoeff());
+    }
+  }
+  const double tolerance = kRelativeSnapTolerance * scale;
+  const SlabEdges slabs = slabEdges(rings, tolerance);
+  if (slabs.slab_x.size() < 2) return {};
+  SlabTrapezoids slab_trapezoids = slabTrapezoids(slabs);
+  connectAcrossSlabs(slabs, tolerance, &slab_trapezoids);
   std::vector<Ring> result;
-  for (const auto& cell : cells) {
-    Ring ring;
-    for (std::size_t t : cell) {
-      const Trapezoid& trapezoid = trapezoids[t];
-      for (double x : {slab_x[trapezoid.slab], slab_x[trapezoid.slab + 1]}) {
-        ring.emplace_back(x, yAt(edges[trapezoid.bottom], x));
-      }
-    }
-    for (auto it = cell.rbegin(); it != cell.rend(); ++it) {
-      const Trapezoid& trapezoid = trapezoids[*it];
-      for (double x : {slab_x[trapezoid.slab + 1], slab_x[trapezoid.slab]}) {
-        ring.emplace_back(x, yAt(edges[trapezoid.top], x));
-      }
-    }
-    ring = simplified(ring, tolerance);
+  for (const auto& cell : joinIntoCells(type_, &slab_trapezoids)) {
+    Ring ring = simplified(cellOutline(cell, slabs, slab_trapezoids.trapezoids), tolerance);
     if (ring.size() < 3) continue;
     for (Point2& p : ring) p = fromSweepFrame(p, direction);
     result.push_back(std::move(ring));
