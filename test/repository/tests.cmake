@@ -18,3 +18,10 @@ add_test(NAME stage_graph COMMAND ${Python3_EXECUTABLE}
   ${PROJECT_SOURCE_DIR}/scripts/stage_graph.py --check)
 add_test(NAME stage_graph_checker COMMAND ${Python3_EXECUTABLE}
   ${PROJECT_SOURCE_DIR}/test/repository/stage_graph_test.py)
+# No function of the core over 80 lines (clang-tidy's readability-function-size), where
+# this build's compile_commands.json is the package's own (not in a catkin workspace).
+if(KINEMATIC_COVERAGE_TOP_LEVEL)
+  add_test(NAME function_size COMMAND ${PROJECT_SOURCE_DIR}/scripts/check_function_size.sh
+    ${CMAKE_BINARY_DIR})
+  set_tests_properties(function_size PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900)
+endif()
