@@ -250,6 +250,13 @@ Where the numbers differ from the thesis, and why:
   the robot on the tight 0.3 m arcs, so it stays on them even with the lower gain. The real
   vehicle's heading dynamics (inertia, thruster lag), which make a low gain lag behind a
   curving path, are not modelled.
+- The planned times order the trajectories otherwise: {seconds(plan['lake_7_5_local']['traversal_time_s'])} (Algorithm 1),
+  {seconds(plan['lake_7_5_default']['traversal_time_s'])} (default) and {seconds(plan['lake_7_5_unsmoothed']['traversal_time_s'])} (unsmoothed) by the planner's velocity model, in
+  which an arc is driven at `yaw_rate_max` times its radius. The default strategy takes
+  its turns at up to `max_turning_radius` (1 m here, where that keeps coverage), which the
+  planner drives at full speed and full yaw rate; the robot model shares thrust between
+  surge and yaw and has no surge left at full yaw rate, so it slows to about half speed on
+  those arcs, and its set-point controller slows it towards every pose along them.
 - The coverage loss is a few percent here even for the planned trajectories: with the
   sensor 0.4 m above the bottom, the strips along the walls, the map's corners and a
   strip beside the obstacle lie beyond the footprints (the red cells); the thesis reports
