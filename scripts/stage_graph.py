@@ -39,7 +39,7 @@ FLOORS = {
                                             'sweeps', 'route', 'gtsp', 'repair'},
     'trajectory_generation_tools/smoothing': {'geometry', 'base', 'sweeps', 'path'},
     'trajectory_generation_tools/trajectory': {'geometry', 'base', 'path', 'smoothing'},
-    'trajectory_generation_tools/plot': {'geometry', 'base', 'coverage'},
+    'trajectory_generation_tools/plot': {'geometry', 'base', 'sweeps', 'coverage'},
     'trajectory_generation_tools/simulation': {'geometry', 'base', 'validation', 'path'},
     'trajectory_generation_tools/replanning': {'geometry', 'base', 'validation', 'sweeps',
                                                'coverage', 'planner'},
@@ -64,8 +64,6 @@ KNOWN_VIOLATIONS = {
         'PlannerParameters: the segment cost reads the flat parameter set; stage options instead',
     ('trajectory_generation_tools/smoothing', 'polygon_coverage_ros_bridge/planner'):
         'PlannerParameters: the smoothing options read the flat parameter set',
-    ('trajectory_generation_tools/smoothing', 'trajectory_generation_tools/coverage'):
-        'the seen-area raster belongs beside the sensor model (sweeps)',
     ('trajectory_generation_tools/trajectory', 'polygon_coverage_ros_bridge/planner'):
         'PlannerParameters: the trajectory generator reads the flat parameter set',
     ('trajectory_generation_tools/simulation', 'polygon_coverage_ros_bridge/planner'):

@@ -13,8 +13,8 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "polygon_coverage_ros_bridge/sweeps/reachable_area.h"
 #include "test/support/random_polygons.h"
-#include "trajectory_generation_tools/coverage/reachable_area.h"
 
 namespace kinematic_coverage::core {
 namespace {

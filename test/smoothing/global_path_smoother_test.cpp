@@ -7,8 +7,8 @@
 #include <random>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
 #include "test/smoothing/smoothing_oracle.h"
-#include "trajectory_generation_tools/coverage/seen_area.h"
 #include "trajectory_generation_tools/smoothing/corner_coverage_check.h"
 
 namespace kinematic_coverage::core {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "trajectory_generation_tools/coverage/reachable_area.h"
+#include "polygon_coverage_ros_bridge/sweeps/reachable_area.h"
 
 namespace kinematic_coverage::core {
 namespace {

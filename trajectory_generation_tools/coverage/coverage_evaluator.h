@@ -4,10 +4,10 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
-#include "trajectory_generation_tools/coverage/coverage_raster.h"
-#include "trajectory_generation_tools/coverage/seen_area.h"
-#include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
+#include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
+#include "polygon_coverage_ros_bridge/sweeps/waypoint_path_poses.h"
 
 namespace kinematic_coverage::core {
 

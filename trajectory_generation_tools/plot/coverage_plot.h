@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "trajectory_generation_tools/coverage/seen_area.h"
+#include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
 
 namespace kinematic_coverage::core {
 

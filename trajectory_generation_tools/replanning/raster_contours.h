@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "trajectory_generation_tools/coverage/coverage_raster.h"
+#include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
 
 namespace kinematic_coverage::core {
 

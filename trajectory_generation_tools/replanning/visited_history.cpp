@@ -6,9 +6,9 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/sweeps/waypoint_path_poses.h"
 #include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
-#include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
 
 namespace kinematic_coverage::core {
 namespace {

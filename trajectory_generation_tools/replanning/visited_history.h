@@ -10,8 +10,8 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
-#include "trajectory_generation_tools/coverage/coverage_raster.h"
 
 namespace kinematic_coverage::core {
 

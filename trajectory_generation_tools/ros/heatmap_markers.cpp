@@ -1,8 +1,8 @@
 #include "trajectory_generation_tools/ros/heatmap_markers.h"
 
+#include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
-#include "trajectory_generation_tools/coverage/coverage_raster.h"
-#include "trajectory_generation_tools/coverage/seen_area.h"
+#include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
 
 namespace kinematic_coverage::nodes {

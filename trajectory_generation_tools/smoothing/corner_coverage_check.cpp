@@ -5,8 +5,8 @@
 #include <limits>
 #include <vector>
 
-#include "trajectory_generation_tools/coverage/coverage_raster.h"
-#include "trajectory_generation_tools/coverage/seen_area.h"
+#include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
+#include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
 
 namespace kinematic_coverage::core {
 namespace {

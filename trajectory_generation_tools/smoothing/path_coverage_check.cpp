@@ -8,8 +8,8 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "trajectory_generation_tools/coverage/reachable_area.h"
-#include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
+#include "polygon_coverage_ros_bridge/sweeps/reachable_area.h"
+#include "polygon_coverage_ros_bridge/sweeps/waypoint_path_poses.h"
 
 namespace kinematic_coverage::core {
 namespace {

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
-#include "trajectory_generation_tools/coverage/coverage_raster.h"
-#include "trajectory_generation_tools/coverage/seen_area.h"
+#include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 
 namespace kinematic_coverage::core {

@@ -1,4 +1,4 @@
-#include "trajectory_generation_tools/coverage/seen_area.h"
+#include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
+#include "polygon_coverage_ros_bridge/sweeps/waypoint_path_poses.h"
 
 namespace kinematic_coverage::core {
 namespace {

@@ -1,4 +1,4 @@
-#include "trajectory_generation_tools/coverage/coverage_raster.h"
+#include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
 
 #include <gtest/gtest.h>
 

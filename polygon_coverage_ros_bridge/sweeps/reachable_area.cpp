@@ -1,4 +1,4 @@
-#include "trajectory_generation_tools/coverage/reachable_area.h"
+#include "polygon_coverage_ros_bridge/sweeps/reachable_area.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "trajectory_generation_tools/coverage/waypoint_path_poses.h"
+#include "polygon_coverage_ros_bridge/sweeps/waypoint_path_poses.h"
 
 #include <cmath>
 #include <sstream>
