@@ -17,8 +17,15 @@ config='{Checks: "-*,readability-function-size", CheckOptions: [{key: readabilit
 cd "$root"
 sources=$(find polygon_coverage_ros_bridge trajectory_generation_tools -name '*.cpp' \
   -not -path '*/ros/*' | sort)
-report="$(printf '%s\n' $sources | xargs -P "${JOBS:-2}" -n 4 \
-  "$tidy" -p "$build_dir" --quiet --config="$config" 2>/dev/null | grep 'warning:' || true)"
+output="$(printf '%s\n' $sources | xargs -P "${JOBS:-2}" -n 4 \
+  "$tidy" -p "$build_dir" --quiet --config="$config" 2>/dev/null || true)"
+# A source clang-tidy cannot compile is checked for nothing: that fails too.
+if errors="$(echo "$output" | grep 'error:')"; then
+  echo "$errors" >&2
+  echo "check_function_size: clang-tidy could not read every source" >&2
+  exit 1
+fi
+report="$(echo "$output" | grep 'warning:' || true)"
 if [ -n "$report" ]; then
   echo "$report" >&2
   echo "check_function_size: $(echo "$report" | wc -l) functions of the core over 80 lines" >&2
