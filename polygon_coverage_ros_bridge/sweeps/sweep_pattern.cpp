@@ -584,8 +584,8 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::laneEnds(
     const std::vector<std::pair<double, double>>& spans, double scale) const {
   // Lane ends pulled in by the inset, never past the lane's middle. The corner and flank
   // checks (LanePlacement) use the full lanes: the inset only gives up what the
-  // footprint's onward half-length still sees. An end that the corner tolerance of verticalInterval put a
-  // hair outside the cell (a lane through an acute corner) moves onto the cell's nearest
+  // footprint's onward half-length still sees. An end that the corner tolerance of verticalInterval
+  // put a hair outside the cell (a lane through an acute corner) moves onto the cell's nearest
   // boundary point, so that every lane end lies in the cell and so in the area
   // (planner_fuzzer: a lane end 1e-8 beyond a corner of the offset free area).
   // An end then within kRelativeBoundarySnap of the area's boundary moves onto it: the
