@@ -582,16 +582,15 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::lanes(const Ring& 
 std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::laneEnds(
     const Ring& cell, double direction, const std::vector<double>& positions,
     const std::vector<std::pair<double, double>>& spans, double scale) const {
-  // Lane ends pulled in by the inset, never past the lane's middle. The corner and flank
-  // checks (LanePlacement) use the full lanes: the inset only gives up what the
-  // footprint's onward half-length still sees. An end that the corner tolerance of verticalInterval
-  // put a hair outside the cell (a lane through an acute corner) moves onto the cell's nearest
-  // boundary point, so that every lane end lies in the cell and so in the area
-  // (planner_fuzzer: a lane end 1e-8 beyond a corner of the offset free area).
-  // An end then within kRelativeBoundarySnap of the area's boundary moves onto it: the
-  // cells follow the area's boundary only up to the decomposition's rounding, and a route
-  // point a hair outside a corner of the area sees nothing (planner_fuzzer: an offset free
-  // area 0.55 m across at x = 15 m, whose lane ends lay 1e-9 m beyond its corners).
+  // Lane ends pulled in by the inset, never past the lane's middle. The corner and flank checks
+  // (LanePlacement) use the full lanes: the inset only gives up what the footprint's onward half-
+  // length still sees. An end that the corner tolerance of verticalInterval put a hair outside the
+  // cell (a lane through an acute corner) moves onto the cell's nearest boundary point, so that
+  // every lane end lies in the cell and so in the area (planner_fuzzer: a lane end 1e-8 beyond a
+  // corner of the offset free area). An end then within kRelativeBoundarySnap of the area's
+  // boundary moves onto it: the cells follow the area's boundary only up to the decomposition's
+  // rounding, and a route point a hair outside a corner of the area sees nothing (planner_fuzzer:
+  // an offset free area 0.55 m across at x = 15 m, whose lane ends lay 1e-9 m beyond its corners).
   auto insideCell = [&](const Point2& end) {
     Point2 nearest = end;
     if (!insideRing(end, cell)) {
