@@ -66,12 +66,13 @@ JsonObject simulationMetrics(const SimulationResult& simulation,
 /// the figures line.
 CoveragePlotData simulationPlot(const SimulationResult& simulation,
                                 const TrajectoryCoverage& coverage,
-                                const std::vector<Pose2>& desired) {
+                                const std::vector<Pose2>& desired,
+                                const std::vector<Pose2>& actual) {
   const TrackingErrorStatistics& tracking = simulation.tracking;
   CoveragePlotData plot;
   plot.heatmap = coverage.heatmap;
   plot.trajectory = desired;
-  plot.actual_path = actualPoses(simulation);
+  plot.actual_path = actual;
   plot.actual_errors.reserve(simulation.steps.size());
   for (const SimulationStep& step : simulation.steps) {
     plot.actual_errors.push_back(step.tracking_error_m);
@@ -142,8 +143,9 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
       << " m, 99th percentile " << tracking.percentiles_m.back() << " m ("
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
-  const TrajectoryCoverage coverage = measureTrajectoryCoverage(
-      cleaned.free_area, offset.parts, mission.parameters, actualPoses(simulation));
+  const std::vector<Pose2> actual = actualPoses(simulation);
+  const TrajectoryCoverage coverage =
+      measureTrajectoryCoverage(cleaned.free_area, offset.parts, mission.parameters, actual);
   out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
       << ")" << std::endl;
 
@@ -154,7 +156,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const std::string plot_path = (dir / "plot.png").string();
   writeTextFile(actual_path, actualCsv(simulation.steps));
   simulationMetrics(simulation, coverage).write(metrics_path);
-  CoveragePlotData plot = simulationPlot(simulation, coverage, desired);
+  CoveragePlotData plot = simulationPlot(simulation, coverage, desired, actual);
   plot.free_area = cleaned.free_area;
   plot.offset_parts = offset.parts;
   plot.title_lines.insert(
