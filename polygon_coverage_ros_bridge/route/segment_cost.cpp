@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/trapezoidal_velocity_profile.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
@@ -41,13 +42,8 @@ double SegmentCost::ofLength(double length) const {
   switch (kind_) {
     case Kind::kDistance:
       return length;
-    case Kind::kTime: {
-      // Rest to rest: accelerate with a_max, cruise at v_max when the segment is long
-      // enough to reach it (length >= v^2/a), else a triangular profile.
-      const double cruise_length = v_max_ * v_max_ / a_max_;
-      if (length >= cruise_length) return length / v_max_ + v_max_ / a_max_;
-      return 2.0 * std::sqrt(length / a_max_);
-    }
+    case Kind::kTime:
+      return TrapezoidalVelocityProfile(VehicleLimits{v_max_, a_max_}).restToRestTime(length);
     case Kind::kWaypoints:
       return length <= kLengthTolerance ? 0.0 : 1.0;
   }

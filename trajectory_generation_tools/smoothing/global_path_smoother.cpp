@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/trapezoidal_velocity_profile.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "trajectory_generation_tools/smoothing/bulb_turn_smoothing.h"
 #include "trajectory_generation_tools/smoothing/corner_geometry.h"
@@ -49,31 +50,6 @@ constexpr std::size_t kGuardedToleratedCells = 2;
 /// the strip beyond the lanes' ends there).
 constexpr std::array<std::pair<double, double>, 3> kBulbRuns{
     {{0.5, 0.5}, {0.25, 0.75}, {0.0, 1.0}}};
-
-/// Fastest time (s) over a straight piece of `length` from speed v0 to speed v1 under
-/// v_max and a_max (the trapezoid of the velocity model). When the piece is too short to
-/// change between the two speeds, the faster end is slowed to the reachable speed and
-/// the time that costs on the neighbouring arc is approximated by the braking time.
-double pieceTime(double length, double v0, double v1, double v_max, double a_max) {
-  length = std::max(0.0, length);
-  double penalty = 0.0;
-  const double reachable_high =
-      std::sqrt(std::min(v0, v1) * std::min(v0, v1) + 2.0 * a_max * length);
-  if (std::max(v0, v1) > reachable_high) {
-    penalty = (std::max(v0, v1) - reachable_high) / a_max;
-    if (v0 > v1) {
-      v0 = reachable_high;
-    } else {
-      v1 = reachable_high;
-    }
-  }
-  const double peak = std::min(v_max, std::sqrt(a_max * length + 0.5 * (v0 * v0 + v1 * v1)));
-  if (peak <= 0.0) return penalty;
-  const double accelerating = std::max(0.0, (peak * peak - v0 * v0) / (2.0 * a_max));
-  const double braking = std::max(0.0, (peak * peak - v1 * v1) / (2.0 * a_max));
-  const double cruising = std::max(0.0, length - accelerating - braking);
-  return penalty + (peak - v0) / a_max + (peak - v1) / a_max + cruising / peak;
-}
 
 double arcsLength(const CornerSmoothing& smoothing) {
   double length = 0.0;
@@ -265,8 +241,10 @@ std::optional<double> GlobalSmoothingProgramme::legPiece(
       return std::nullopt;
     }
   }
-  return pieceTime(length - from - to, previous ? previous->speed : 0.0, next ? next->speed : 0.0,
-                   smoother_.options_.v_max, smoother_.options_.a_max);
+  const TrapezoidalVelocityProfile profile(
+      VehicleLimits{smoother_.options_.v_max, smoother_.options_.a_max});
+  return profile.pieceTime(length - from - to, previous ? previous->speed : 0.0,
+                           next ? next->speed : 0.0);
 }
 
 bool GlobalSmoothingProgramme::preservesCoverage(

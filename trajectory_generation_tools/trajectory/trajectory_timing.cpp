@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "polygon_coverage_ros_bridge/base/trapezoidal_velocity_profile.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/trajectory/primitive_path_validation.h"
@@ -11,11 +12,10 @@
 namespace kinematic_coverage::core {
 namespace {
 
-double checkedRate(double value, const std::string& name) {
+void checkRate(double value, const std::string& name) {
   if (!std::isfinite(value) || !(value > 0.0)) {
     throw InvalidInputError(name + " must be positive and finite, got " + std::to_string(value));
   }
-  return value;
 }
 
 /// Seconds to cover `distance` while the speed changes uniformly from `from` to `to`.
@@ -25,10 +25,14 @@ double uniformChangeTime(double distance, double from, double to) {
 
 }  // namespace
 
+TrajectoryTiming::TrajectoryTiming(const VehicleLimits& limits) : limits_(limits) {
+  checkRate(limits.v_max, "v_max");
+  checkRate(limits.a_max, "a_max");
+  checkRate(limits.yaw_rate_max, "yaw_rate_max");
+}
+
 TrajectoryTiming::TrajectoryTiming(double v_max, double a_max, double yaw_rate_max)
-    : v_max_(checkedRate(v_max, "v_max")),
-      a_max_(checkedRate(a_max, "a_max")),
-      yaw_rate_max_(checkedRate(yaw_rate_max, "yaw_rate_max")) {}
+    : TrajectoryTiming(VehicleLimits{v_max, a_max, yaw_rate_max}) {}
 
 TrajectoryTiming::TrajectoryTiming(const PlannerParameters& parameters)
     : TrajectoryTiming(parameters.v_max, parameters.a_max, parameters.yaw_rate_max) {}
@@ -52,8 +56,8 @@ std::vector<PrimitiveTiming> TrajectoryTiming::profile(
     }
     PrimitiveTiming& timing = timings[i];
     timing.speed_limit = primitive.kind() == PrimitiveKind::kArc
-                             ? std::min(v_max_, yaw_rate_max_ * primitive.radius())
-                             : v_max_;
+                             ? limits_.arcSpeed(primitive.radius())
+                             : limits_.v_max;
     double limit = 0.0;
     if (!stop_pending && !moving.empty()) {
       const PathPrimitive& previous = path[moving.back()];
@@ -71,15 +75,14 @@ std::vector<PrimitiveTiming> TrajectoryTiming::profile(
 
   // Forward pass (accelerate at a_max), then backward pass (brake at a_max), on the joint
   // speeds; v^2 grows by at most 2 a_max L over a primitive of length L.
+  const TrapezoidalVelocityProfile velocity(limits_);
   std::vector<double> speed(joint_limit.size(), 0.0);
   for (std::size_t k = 0; k < moving.size(); ++k) {
-    const double reachable =
-        std::sqrt(speed[k] * speed[k] + 2.0 * a_max_ * path[moving[k]].length());
+    const double reachable = velocity.reachableSpeed(speed[k], path[moving[k]].length());
     speed[k + 1] = std::min(joint_limit[k + 1], reachable);
   }
   for (std::size_t k = moving.size(); k-- > 0;) {
-    const double reachable =
-        std::sqrt(speed[k + 1] * speed[k + 1] + 2.0 * a_max_ * path[moving[k]].length());
+    const double reachable = velocity.reachableSpeed(speed[k + 1], path[moving[k]].length());
     speed[k] = std::min(speed[k], reachable);
   }
   for (std::size_t k = 0; k < moving.size(); ++k) {
@@ -87,10 +90,9 @@ std::vector<PrimitiveTiming> TrajectoryTiming::profile(
     const double length = path[moving[k]].length();
     timing.entry_speed = speed[k];
     timing.exit_speed = speed[k + 1];
-    const double highest = std::sqrt(
-        (speed[k] * speed[k] + speed[k + 1] * speed[k + 1] + 2.0 * a_max_ * length) / 2.0);
     timing.peak_speed =
-        std::max({std::min(timing.speed_limit, highest), timing.entry_speed, timing.exit_speed});
+        std::max({velocity.peakSpeed(speed[k], speed[k + 1], length, timing.speed_limit),
+                  timing.entry_speed, timing.exit_speed});
   }
 
   double clock = 0.0;
@@ -110,22 +112,20 @@ double TrajectoryTiming::timeWithin(const PathPrimitive& primitive, const Primit
 TrajectoryTiming::Phases TrajectoryTiming::phasesOf(const PathPrimitive& primitive,
                                                     const PrimitiveTiming& timing) const {
   Phases phases;
-  phases.a_max = a_max_;
+  phases.velocity = TrapezoidalVelocityProfile(limits_);
   if (isDegenerate(primitive)) return phases;
   if (primitive.kind() == PrimitiveKind::kRotation) {
-    phases.turn_duration = primitive.turnAngle() / yaw_rate_max_;
+    phases.turn_duration = primitive.turnAngle() / limits_.yaw_rate_max;
     return phases;
   }
   phases.length = primitive.length();
   phases.entry = timing.entry_speed;
   phases.exit = timing.exit_speed;
   phases.peak = timing.peak_speed;
-  const double peak_squared = phases.peak * phases.peak;
   phases.s1 =
-      std::clamp((peak_squared - phases.entry * phases.entry) / (2.0 * a_max_), 0.0, phases.length);
-  phases.s2 =
-      std::clamp(phases.length - (peak_squared - phases.exit * phases.exit) / (2.0 * a_max_),
-                 phases.s1, phases.length);
+      std::clamp(phases.velocity.changeDistance(phases.entry, phases.peak), 0.0, phases.length);
+  phases.s2 = std::clamp(phases.length - phases.velocity.changeDistance(phases.exit, phases.peak),
+                         phases.s1, phases.length);
   phases.t1 = uniformChangeTime(phases.s1, phases.entry, phases.peak);
   phases.t2 = phases.t1 + (phases.s2 - phases.s1) / phases.peak;
   return phases;
@@ -136,11 +136,11 @@ double TrajectoryTiming::Phases::timeAt(double fraction) const {
   if (!(length > 0.0)) return f * turn_duration;
   const double s = f * length;
   if (s <= s1) {
-    const double speed = std::min(peak, std::sqrt(entry * entry + 2.0 * a_max * s));
+    const double speed = std::min(peak, velocity.reachableSpeed(entry, s));
     return uniformChangeTime(s, entry, speed);
   }
   if (s <= s2) return t1 + (s - s1) / peak;
-  const double speed = std::min(peak, std::sqrt(exit * exit + 2.0 * a_max * (length - s)));
+  const double speed = std::min(peak, velocity.reachableSpeed(exit, length - s));
   return t2 + uniformChangeTime(s - s2, peak, speed);
 }
 

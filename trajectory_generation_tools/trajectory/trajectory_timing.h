@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/trapezoidal_velocity_profile.h"
+#include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
 #include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
@@ -38,6 +40,9 @@ struct PrimitiveTiming {
 class TrajectoryTiming {
  public:
   /// Throws InvalidInputError unless v_max, a_max and yaw_rate_max are positive and finite.
+  explicit TrajectoryTiming(const VehicleLimits& limits);
+
+  /// The limits v_max, a_max and yaw_rate_max.
   TrajectoryTiming(double v_max, double a_max, double yaw_rate_max);
   /// `v_max`, `a_max` and `yaw_rate_max` of `parameters`.
   explicit TrajectoryTiming(const PlannerParameters& parameters);
@@ -65,7 +70,7 @@ class TrajectoryTiming {
   /// `peak` over [0, s1] (until t1), cruise to s2 (until t2), brake to `exit` at `length`;
   /// for a rotation, turn for `turn_duration`; a degenerate primitive takes no time.
   struct Phases {
-    double a_max = 0.0;
+    TrapezoidalVelocityProfile velocity{VehicleLimits{}};
     double length = 0.0;
     double entry = 0.0;
     double exit = 0.0;
@@ -80,9 +85,7 @@ class TrajectoryTiming {
   };
   Phases phasesOf(const PathPrimitive& primitive, const PrimitiveTiming& timing) const;
 
-  double v_max_;
-  double a_max_;
-  double yaw_rate_max_;
+  VehicleLimits limits_;
 };
 
 }  // namespace kinematic_coverage::core
