@@ -167,11 +167,11 @@ inline void checkSmoothedPath(const PolygonWithHoles& area, const std::vector<Po
 /// radius as turning_radius, a smaller or equal min_turning_radius and a velocity model.
 inline GlobalSmoothingOptions globalOptions(FuzzedDataProvider& input, double radius) {
   GlobalSmoothingOptions options;
-  options.turning_radius = radius;
+  options.vehicle.turning_radius = radius;
   options.min_turning_radius = radius * input.ConsumeFloatingPointInRange(0.1, 1.0);
-  options.v_max = input.ConsumeFloatingPointInRange(0.05, 3.0);
-  options.a_max = input.ConsumeFloatingPointInRange(0.05, 2.0);
-  options.yaw_rate_max = input.ConsumeFloatingPointInRange(0.05, 2.0);
+  options.vehicle.v_max = input.ConsumeFloatingPointInRange(0.05, 3.0);
+  options.vehicle.a_max = input.ConsumeFloatingPointInRange(0.05, 2.0);
+  options.vehicle.yaw_rate_max = input.ConsumeFloatingPointInRange(0.05, 2.0);
   return options;
 }
 

@@ -13,7 +13,7 @@
 #include "fuzz/fuzz_check.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 

@@ -26,7 +26,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
 
 namespace {
 

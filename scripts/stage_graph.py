@@ -6,13 +6,12 @@ An edge A -> B means that a source of A includes a header of B. The floors (FLOO
 stages each stage may include, the architecture of docs/ARCHITECTURE.md; an edge outside
 them is a violation.
 
-  scripts/stage_graph.py           prints the graph and the known violations as Markdown
-                                   tables (docs/ARCHITECTURE.md)
-  scripts/stage_graph.py --check   exits 1 on an edge that is neither allowed nor one of the
-                                   known violations (KNOWN_VIOLATIONS), on a known
-                                   violation that is gone (so the list only shrinks), on a
-                                   ROS, rviz or Qt header in the core, on CGAL in a header
-                                   that node code includes, and on the core in rviz_plugins/
+  scripts/stage_graph.py           prints the graph as a Markdown table (docs/ARCHITECTURE.md)
+  scripts/stage_graph.py --check   exits 1 on an edge beyond a stage's floor, on a stage
+                                   library whose CMake DEPENDS differ from the stage
+                                   libraries it includes, on a ROS, rviz or Qt header in the
+                                   core, on CGAL in a header that node code includes, and on
+                                   the core in rviz_plugins/
 """
 import os
 import re
@@ -23,7 +22,12 @@ HALVES = ('polygon_coverage_ros_bridge', 'trajectory_generation_tools')
 INCLUDE = re.compile(r'^\s*#\s*include\s+"((?:' + '|'.join(HALVES) + r')/[a-z_]+)/[^"]+"')
 
 # The floors, lowest first: each stage with the stages it may include. The base floor
-# (geometry, base) is below both halves; the tool and the ROS adapters are above them.
+# (geometry, base) is below both halves; the parameters are above every stage they map
+# the flat parameter set to; the compositions (planner, mission), the tool and the ROS
+# adapters are above them.
+LOWER_STAGES = {'geometry', 'base', 'validation', 'decomposition', 'sweeps', 'route', 'gtsp',
+                'path', 'coverage', 'repair', 'smoothing', 'trajectory', 'plot', 'simulation',
+                'replanning'}
 FLOORS = {
     'polygon_coverage_ros_bridge/geometry': set(),
     'polygon_coverage_ros_bridge/base': {'geometry'},
@@ -35,41 +39,20 @@ FLOORS = {
     'trajectory_generation_tools/path': {'geometry', 'base'},
     'trajectory_generation_tools/coverage': {'geometry', 'base', 'sweeps'},
     'polygon_coverage_ros_bridge/repair': {'geometry', 'base', 'sweeps', 'route', 'coverage'},
-    'polygon_coverage_ros_bridge/planner': {'geometry', 'base', 'validation', 'decomposition',
-                                            'sweeps', 'route', 'gtsp', 'repair'},
     'trajectory_generation_tools/smoothing': {'geometry', 'base', 'sweeps', 'path'},
     'trajectory_generation_tools/trajectory': {'geometry', 'base', 'path', 'smoothing'},
     'trajectory_generation_tools/plot': {'geometry', 'base', 'sweeps', 'coverage'},
     'trajectory_generation_tools/simulation': {'geometry', 'base', 'validation', 'path'},
     'trajectory_generation_tools/replanning': {'geometry', 'base', 'validation', 'sweeps',
-                                               'coverage', 'planner'},
-    'polygon_coverage_ros_bridge/mission': {'geometry', 'base', 'validation', 'sweeps',
-                                            'planner', 'coverage', 'smoothing', 'trajectory',
-                                            'plot', 'simulation', 'replanning'},
-    'polygon_coverage_ros_bridge/tool': {'geometry', 'base', 'gtsp', 'mission'},
-    'polygon_coverage_ros_bridge/ros': {'geometry', 'base', 'mission', 'planner', 'trajectory'},
-    'trajectory_generation_tools/ros': {'geometry', 'base', 'validation', 'sweeps', 'planner',
-                                        'mission', 'coverage', 'path', 'plot', 'replanning',
-                                        'simulation', 'trajectory', 'polygon_coverage_ros_bridge/ros'},
+                                               'coverage'},
+    'polygon_coverage_ros_bridge/parameters': LOWER_STAGES,
+    'polygon_coverage_ros_bridge/planner': LOWER_STAGES | {'parameters'},
+    'polygon_coverage_ros_bridge/mission': LOWER_STAGES | {'parameters', 'planner'},
+    'polygon_coverage_ros_bridge/tool': LOWER_STAGES | {'parameters', 'planner', 'mission'},
+    'polygon_coverage_ros_bridge/ros': LOWER_STAGES | {'parameters', 'planner', 'mission'},
+    'trajectory_generation_tools/ros': LOWER_STAGES | {'parameters', 'planner', 'mission',
+                                                       'polygon_coverage_ros_bridge/ros'},
 }
-
-# Edges the floors do not allow yet, each with what removes it. The check fails on any
-# other violation, and on an entry here that the code no longer has.
-KNOWN_VIOLATIONS = {
-    ('polygon_coverage_ros_bridge/validation', 'polygon_coverage_ros_bridge/planner'):
-        'PlannerParameters: validation checks the flat parameter set; stage options instead',
-    ('polygon_coverage_ros_bridge/sweeps', 'polygon_coverage_ros_bridge/planner'):
-        'PlannerParameters: the sensor reads the flat parameter set; stage options instead',
-    ('polygon_coverage_ros_bridge/route', 'polygon_coverage_ros_bridge/planner'):
-        'PlannerParameters: the segment cost reads the flat parameter set; stage options instead',
-    ('trajectory_generation_tools/smoothing', 'polygon_coverage_ros_bridge/planner'):
-        'PlannerParameters: the smoothing options read the flat parameter set',
-    ('trajectory_generation_tools/trajectory', 'polygon_coverage_ros_bridge/planner'):
-        'PlannerParameters: the trajectory generator reads the flat parameter set',
-    ('trajectory_generation_tools/simulation', 'polygon_coverage_ros_bridge/planner'):
-        'PlannerParameters: the robot model reads the flat parameter set',
-}
-
 
 def qualified(stage, name):
     """The stage `name` (short, as in FLOORS, or qualified) as seen from `stage`."""
@@ -128,11 +111,6 @@ def print_graph(graph):
         includes = ', '.join(f'{short(t)} ({used[t]})' for t in sorted(used, key=short))
         beyond = ', '.join(short(t) for t in sorted(set(used) - may, key=short))
         print(f'| {short(stage)} | {floor or "-"} | {includes or "-"} | {beyond or "-"} |')
-    print()
-    print('| stage | includes, beyond its floor | why, and what removes it |')
-    print('|---|---|---|')
-    for (stage, target), why in KNOWN_VIOLATIONS.items():
-        print(f'| {short(stage)} | {short(target)} | {why} |')
 
 
 # System headers the core must not include: ROS, its messages and tools, rviz, Qt, Ogre.
@@ -187,6 +165,42 @@ def rule_problems():
     return problems
 
 
+STAGE_LIBRARY = re.compile(r'kc_add_stage_library\((kc_[a-z_]+)(.*?)\)', re.S)
+
+
+def library_of(stage):
+    """The static library of a stage folder, from its sources.cmake (None: header-only
+    or not a stage library), and the kc_ libraries it DEPENDS on."""
+    path = os.path.join(ROOT, stage, 'sources.cmake')
+    if not os.path.exists(path):
+        return None, set()
+    with open(path, encoding='utf-8') as listing:
+        match = STAGE_LIBRARY.search(listing.read())
+    if not match:
+        return None, set()
+    arguments = match.group(2).split()
+    depends = arguments[arguments.index('DEPENDS') + 1:] if 'DEPENDS' in arguments else []
+    return match.group(1), {name for name in depends if name.startswith('kc_')}
+
+
+def library_problems(graph):
+    """Each stage library must link (DEPENDS) exactly the stage libraries whose headers
+    its sources include, so the link graph is the include graph."""
+    problems = []
+    for stage, used in graph.items():
+        library, depends = library_of(stage)
+        if library is None:
+            continue
+        included = {library_of(target)[0] for target in used} - {None}
+        for missing in sorted(included - depends):
+            problems.append(f'{stage}: {library} includes {missing} but does not list it in '
+                            'DEPENDS (sources.cmake)')
+        for extra in sorted(depends - included):
+            problems.append(f'{stage}: {library} lists {extra} in DEPENDS but includes none '
+                            'of its headers')
+    return problems
+
+
 def check(graph):
     problems = rule_problems()
     for stage in graph:
@@ -194,18 +208,15 @@ def check(graph):
             problems.append(f'{stage}: a stage folder without a floor in scripts/stage_graph.py')
             continue
         for target in graph[stage]:
-            if target not in allowed(stage) and (stage, target) not in KNOWN_VIOLATIONS:
+            if target not in allowed(stage):
                 problems.append(f'{stage} includes {target}, which is not below it')
-    for (stage, target) in KNOWN_VIOLATIONS:
-        if target not in graph.get(stage, {}):
-            problems.append(f'{stage} no longer includes {target}: remove it from '
-                            'KNOWN_VIOLATIONS')
+    problems += library_problems(graph)
     for problem in problems:
         print(f'stage_graph: {problem}', file=sys.stderr)
     if not problems:
         print(f'stage_graph: {sum(len(t) for t in graph.values())} edges between '
-              f'{len(graph)} stages, {len(KNOWN_VIOLATIONS)} known violations left',
-              file=sys.stderr)
+              f'{len(graph)} stages, every one within its floor, every stage library '
+              'linking exactly the stages it includes', file=sys.stderr)
     return 1 if problems else 0
 
 

@@ -17,6 +17,7 @@
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
@@ -40,10 +41,11 @@ void benchmark(const char* name, const kinematic_coverage::core::Mission& missio
                const kinematic_coverage::core::PlannedMission& planned, int runs) {
   using namespace kinematic_coverage::core;
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(mission.parameters).generate(planned.plan.waypoints, planned.free_area);
+      TrajectoryGenerator(trajectoryOptionsOf(mission.parameters))
+          .generate(planned.plan.waypoints, planned.free_area);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
-  const FrustumSensor sensor = FrustumSensor::fromParameters(mission.parameters);
+  const FrustumSensor sensor = sensorOf(mission.parameters);
 
   std::vector<double> raster_ms, seen_ms, report_ms, total_ms;
   CoverageReport report;

@@ -23,6 +23,7 @@
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
@@ -157,7 +158,7 @@ std::size_t laneCount(const PlannedMission& planned, const PlannerParameters& pa
     const Decomposition decomposition = computeBestDecomposition(
         area, parameters.decomposition_type == "trapezoidal" ? DecompositionType::kTrapezoidal
                                                              : DecompositionType::kBoustrophedon);
-    const FrustumSensor sensor = FrustumSensor::fromParameters(parameters);
+    const FrustumSensor sensor = sensorOf(parameters);
     const SweepPatternGenerator generator(
         sensor, SweepPatternGenerator::laneEndInset(sensor, parameters.wall_distance), area);
     for (const Cell& cell : decomposition.cells) {
@@ -190,7 +191,8 @@ int run(const BenchmarkOptions& options) {
   if (options.smoothing) {
     const auto started = std::chrono::steady_clock::now();
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(mission.parameters).generate(planned.plan.waypoints, mission.polygon);
+        TrajectoryGenerator(trajectoryOptionsOf(mission.parameters))
+            .generate(planned.plan.waypoints, mission.polygon);
     const double seconds = secondsSince(started);
     std::printf("| smoothing | %.3f | %.1f | %zu primitives, %zu poses, %.1f m, %.0f s |\n",
                 seconds, peakRssMiB(), trajectory.path.size(), trajectory.poses.size(),

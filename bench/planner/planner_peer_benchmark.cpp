@@ -15,6 +15,7 @@
 
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
 namespace {
@@ -99,8 +100,7 @@ int main(int argc, char** argv) {
       const double median_time = times[times.size() / 2];
       const double seen = kinematic_coverage::core::waypointPathReachableCoveragePercent(
           planned.free_area, plan.offset_parts,
-          kinematic_coverage::core::FrustumSensor::fromParameters(mission.parameters),
-          plan.waypoints);
+          kinematic_coverage::core::sensorOf(mission.parameters), plan.waypoints);
       const auto it = peer.find(name);
       if (it == peer.end()) {
         std::printf("| %s | %zu | %zu | %.2f | %.2f | - | %.4f | %.2f |\n", name.c_str(),

@@ -20,6 +20,7 @@
 #include "bench/support/median.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/hard_map_generator.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
@@ -75,7 +76,7 @@ Options parseOptions(int argc, char** argv) {
 /// Reachable coverage (percent) of a plan's waypoint path, as metrics.json measures it.
 double reachablePercent(const PlannedMission& planned, const Mission& mission) {
   const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts,
-                                    FrustumSensor::fromParameters(mission.parameters),
+                                    sensorOf(mission.parameters),
                                     kinematic_coverage::core::reportingResolution(),
                                     kinematic_coverage::core::kReportingGridAngle);
   return evaluator.report(evaluator.seeWaypointPath(planned.plan.waypoints))

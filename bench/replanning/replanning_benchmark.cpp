@@ -14,8 +14,9 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/planner/replanner.h"
 #include "test/replanning/drift_scenario.h"
-#include "trajectory_generation_tools/replanning/replanner.h"
 
 namespace {
 
@@ -49,7 +50,8 @@ int main(int argc, char** argv) {
         replan_ms.push_back(1000.0 * secondsSince(start));
         const Clock::time_point smooth_start = Clock::now();
         const GeneratedTrajectory trajectory =
-            TrajectoryGenerator(parameters).generate(replanned.plan.waypoints, replanned.free_area);
+            TrajectoryGenerator(trajectoryOptionsOf(parameters))
+                .generate(replanned.plan.waypoints, replanned.free_area);
         smooth_ms.push_back(1000.0 * secondsSince(smooth_start));
         total_ms.push_back(1000.0 * secondsSince(start));
       }

@@ -25,6 +25,7 @@
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/random_missions.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
@@ -66,8 +67,8 @@ std::vector<StrategyFigures> compare(const Mission& mission) {
   std::vector<StrategyFigures> figures;
   for (int strategy = 0; strategy < kStrategies; ++strategy) {
     const PlannerParameters parameters = withStrategy(mission.parameters, strategy);
-    const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(parameters).generate(planned.plan.waypoints, planned.free_area);
+    const GeneratedTrajectory trajectory = TrajectoryGenerator(trajectoryOptionsOf(parameters))
+                                               .generate(planned.plan.waypoints, planned.free_area);
     std::vector<Pose2> poses;
     poses.reserve(trajectory.poses.size());
     for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());

@@ -7,5 +7,5 @@ target_compile_definitions(smoothing_comparison PRIVATE
 # The smoothing strategies over the hard-map families and the lake maps.
 add_executable(strategy_benchmark bench/smoothing/strategy_benchmark.cpp
   test/support/hard_map_generator.cpp test/support/lake_map_generator.cpp)
-target_link_libraries(strategy_benchmark PRIVATE kc_mission kc_planner kc_trajectory kc_coverage)
+target_link_libraries(strategy_benchmark PRIVATE kc_tool kc_mission kc_planner kc_trajectory kc_coverage)
 target_compile_definitions(strategy_benchmark PRIVATE KC_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -47,7 +47,7 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
+#include "polygon_coverage_ros_bridge/tool/plan_output_writer.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/lake_map_generator.h"
 

@@ -50,6 +50,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/coverage/exact_coverage_oracle.h"
 #include "test/support/hard_map_generator.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
@@ -141,7 +142,7 @@ std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
                                          MapResult* result) {
   std::vector<std::string> failures;
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(parameters).generate(plan.waypoints, free_area);
+      TrajectoryGenerator(trajectoryOptionsOf(parameters)).generate(plan.waypoints, free_area);
   if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
     failures.push_back("collision: min_obstacle_clearance_m " +
                        std::to_string(trajectory.min_obstacle_clearance_m));

@@ -26,6 +26,7 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "test/support/random_missions.h"
@@ -121,14 +122,15 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
         CoveragePlanner(mission.parameters).plan(mission.polygon, mission.start, mission.goal);
     planning_times_s.push_back(secondsSince(started));
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(mission.parameters).generate(plan.waypoints, mission.polygon);
+        TrajectoryGenerator(trajectoryOptionsOf(mission.parameters))
+            .generate(plan.waypoints, mission.polygon);
     if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
       return fail("collision: min_obstacle_clearance_m " +
                   std::to_string(trajectory.min_obstacle_clearance_m));
     }
     const double covered = waypointPathReachableCoveragePercent(
-        mission.polygon, plan.offset_parts, FrustumSensor::fromParameters(mission.parameters),
-        plan.waypoints, RasterResolution{0.0, 1e-3, 1'000'000});
+        mission.polygon, plan.offset_parts, sensorOf(mission.parameters), plan.waypoints,
+        RasterResolution{0.0, 1e-3, 1'000'000});
     if (!(covered >= kMinCoveragePercent)) {
       return fail("reachable coverage " + std::to_string(covered) + " %");
     }
@@ -137,7 +139,7 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
       poses.reserve(trajectory.poses.size());
       for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
       const CoverageEvaluator evaluator(mission.polygon, plan.offset_parts,
-                                        FrustumSensor::fromParameters(mission.parameters),
+                                        sensorOf(mission.parameters),
                                         RasterResolution{0.0, 1e-3, 1'000'000});
       trajectory_coverage->push_back(
           {evaluator.report(evaluator.seeTrajectory(poses)).reachable_coverage_percent, seed});

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "trajectory_generation_tools/smoothing/global_path_smoother.h"
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
 #include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
@@ -63,18 +64,22 @@ int main(int argc, char** argv) {
   }
   kinematic_coverage::core::PlannerParameters parameters;
   parameters.turning_radius = 1.0;
-  const kinematic_coverage::core::TrajectorySampler sampler(parameters);
-  const kinematic_coverage::core::TrajectoryTiming timing(parameters);
+  const kinematic_coverage::core::TrajectoryOptions options =
+      kinematic_coverage::core::trajectoryOptionsOf(parameters);
+  const kinematic_coverage::core::TrajectorySampler sampler(options.segment_sampling_distance,
+                                                            options.arc_sampling_distance,
+                                                            options.rotation_sampling_angle);
+  const kinematic_coverage::core::TrajectoryTiming timing(options.vehicle);
 
   std::vector<double> smooth_ms, sample_ms, time_ms, total_ms, global_ms, safe_ms;
   kinematic_coverage::core::PlannerParameters global_parameters = parameters;
   global_parameters.smoothing_strategy = "global";
   const kinematic_coverage::core::GlobalSmoothingOptions global_options =
-      kinematic_coverage::core::GlobalSmoothingOptions::fromParameters(global_parameters);
+      kinematic_coverage::core::globalSmoothingOptionsOf(global_parameters);
   kinematic_coverage::core::PlannerParameters safe_parameters = parameters;
   safe_parameters.smoothing_strategy = "coverage_safe";
   const kinematic_coverage::core::GlobalSmoothingOptions safe_options =
-      kinematic_coverage::core::GlobalSmoothingOptions::fromParameters(safe_parameters);
+      kinematic_coverage::core::globalSmoothingOptionsOf(safe_parameters);
   kinematic_coverage::core::SmoothedPath global_path;
   kinematic_coverage::core::SmoothedPath safe_path;
   kinematic_coverage::core::SmoothedPath path;

@@ -6,4 +6,5 @@ kc_add_stage_library(kc_gtsp
     polygon_coverage_ros_bridge/gtsp/gtsp_command.cpp
     polygon_coverage_ros_bridge/gtsp/gtsp_local_search.cpp
     polygon_coverage_ros_bridge/gtsp/gtsplib_reader.cpp
-    polygon_coverage_ros_bridge/gtsp/memetic_gtsp_solver.cpp)
+    polygon_coverage_ros_bridge/gtsp/memetic_gtsp_solver.cpp
+  DEPENDS kc_geometry)

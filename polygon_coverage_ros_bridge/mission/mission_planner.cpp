@@ -5,8 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+#include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -19,20 +18,16 @@ PlannedMission planMission(const Mission& mission, const StageCallback& on_stage
   const Clock::time_point start = Clock::now();
   std::vector<PlanningStage> stages;
 
-  Clock::time_point stage_start = Clock::now();
-  const PolygonValidator validator;
-  validator.validate(mission.polygon);
-  validator.validateEndpoint("start", mission.start, mission.polygon);
-  validator.validateEndpoint("goal", mission.goal, mission.polygon);
-  stages.push_back({"validate", secondsSince(stage_start), "polygon, start and goal valid"});
+  BuiltFreeArea built =
+      FreeAreaBuilder().build(mission.polygon, {{"start", mission.start}, {"goal", mission.goal}});
+  CleanedPolygon& cleaned = built.cleaned;
+  stages.push_back({"validate", built.validate_s, "polygon, start and goal valid"});
   if (on_stage) on_stage(stages.back());
 
-  stage_start = Clock::now();
-  CleanedPolygon cleaned = PolygonCleaner().clean(mission.polygon);
   std::ostringstream summary;
   summary << "free area " << area(cleaned.free_area) << " m^2, " << cleaned.free_area.holes.size()
           << " holes, " << cleaned.warnings.size() << " cleaning steps";
-  stages.push_back({"clean", secondsSince(stage_start), summary.str()});
+  stages.push_back({"clean", built.clean_s, summary.str()});
   if (on_stage) on_stage(stages.back());
 
   PlannedMission planned;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 
 namespace kinematic_coverage::core {
@@ -13,7 +14,7 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
                                              const PlannerParameters& parameters,
                                              const std::vector<Pose2>& poses) {
   const auto start = std::chrono::steady_clock::now();
-  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters);
+  const FrustumSensor sensor = sensorOf(parameters);
   const CoverageEvaluator evaluator(free_area, offset_parts, sensor, reportingResolution(),
                                     kReportingGridAngle);
   TrajectoryCoverage coverage;
@@ -56,14 +57,6 @@ std::string coverageSummary(const TrajectoryCoverage& coverage) {
       << coverage.report.unseen_reachable_area_m2 << " m^2 of it unseen), "
       << 100.0 * coverage.cell_size_m << " cm cells";
   return out.str();
-}
-
-void setCoverageMetrics(const CoverageReport& report, JsonObject& metrics) {
-  metrics.set("coverage_percent", report.coverage_percent)
-      .set("coverage_loss_percent", report.coverage_loss_percent)
-      .set("reachable_coverage_percent", report.reachable_coverage_percent)
-      .set("unseen_reachable_area_m2", report.unseen_reachable_area_m2)
-      .set("unreachable_area_m2", report.unreachable_area_m2);
 }
 
 }  // namespace kinematic_coverage::core

@@ -5,8 +5,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/mission/json_object.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
 namespace kinematic_coverage::core {
@@ -46,10 +45,5 @@ std::optional<std::string> reachableCoverageWarning(const TrajectoryCoverage& co
 /// The summary of a coverage stage's progress line, e.g. "99.977 % of the free area seen
 /// (coverage loss 0.023 %), 100 % of the reachable area, 5 cm cells".
 std::string coverageSummary(const TrajectoryCoverage& coverage);
-
-/// Sets `coverage_percent`, `coverage_loss_percent`, `reachable_coverage_percent`,
-/// `unseen_reachable_area_m2` and `unreachable_area_m2` of metrics.json
-/// (docs/REFERENCE.md, Metrics).
-void setCoverageMetrics(const CoverageReport& report, JsonObject& metrics);
 
 }  // namespace kinematic_coverage::core

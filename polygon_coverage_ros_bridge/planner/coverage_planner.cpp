@@ -15,6 +15,7 @@
 #include "polygon_coverage_ros_bridge/geometry/region_intersection.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/repair/unseen_area_repair.h"
 #include "polygon_coverage_ros_bridge/route/jog_removal.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
@@ -180,7 +181,7 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
     plan->route_area = parts.front();
     return parts;
   }
-  if (parameters.offset_parts == "largest") {
+  if (offsetPartsOf(parameters) == OffsetParts::kLargest) {
     for (std::size_t k = 1; k < parts.size(); ++k) {
       plan->warnings.push_back("the wall offset splits the free area: " + partName(parts[k]) +
                                " is not planned (offset_parts: largest)");
@@ -337,7 +338,7 @@ std::vector<PolygonWithHoles> regionStage(const PlanningRun& run,
                                           const std::vector<PolygonWithHoles>& planned_parts,
                                           const std::vector<PolygonWithHoles>& coverage_region) {
   const Clock::time_point t = Clock::now();
-  const FrustumSensor region_sensor = FrustumSensor::fromParameters(run.parameters);
+  const FrustumSensor region_sensor = sensorOf(run.parameters);
   std::vector<PolygonWithHoles> parts;
   for (const PolygonWithHoles& part : planned_parts) {
     for (PolygonWithHoles& inside : intersectWithRegions(
@@ -358,9 +359,7 @@ std::vector<PolygonWithHoles> regionStage(const PlanningRun& run,
 std::vector<Decomposition> decomposeStage(const PlanningRun& run,
                                           const std::vector<PolygonWithHoles>& parts) {
   const Clock::time_point t = Clock::now();
-  const DecompositionType type = run.parameters.decomposition_type == "trapezoidal"
-                                     ? DecompositionType::kTrapezoidal
-                                     : DecompositionType::kBoustrophedon;
+  const DecompositionType type = decompositionTypeOf(run.parameters);
   std::vector<Decomposition> decompositions;
   std::size_t directions_tried = 0;
   std::size_t cell_count = 0;
@@ -648,9 +647,9 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
 
     const Clock::time_point sweeps_start = Clock::now();
     failing_stage = "sweeps";
-    const SegmentCost segment_cost(parameters_);
+    const SegmentCost segment_cost = segmentCostOf(parameters_);
     const VisibilityGraph graph(plan.route_area, segment_cost);
-    const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
+    const FrustumSensor sensor = sensorOf(parameters_);
     const SweepStage sweeps = sweepStage(run, sweeps_start, parts, decompositions, sensor, graph);
 
     failing_stage = "transitions";
@@ -666,9 +665,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     const double max_jog_shift = 0.5 * (sensor.width() - sensor.sweepDistance());
     const JogRemoval jog_removal(graph, parameters_.turning_radius, max_jog_shift);
     WaypointRoute route = pathStage(run, offset, sweeps, solution, graph, jog_removal, scale);
-    PlannerParameters time_parameters = parameters_;
-    time_parameters.cost_function = "time";
-    const SegmentCost time_cost(time_parameters);
+    const SegmentCost time_cost(CostFunction::kTime, vehicleLimitsOf(parameters_));
     const auto describe = [&](const std::vector<Point2>& waypoints) {
       std::ostringstream summary;
       summary << waypoints.size() << " waypoints, " << pathLength(waypoints) << " m, time cost "

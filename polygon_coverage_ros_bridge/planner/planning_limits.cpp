@@ -8,6 +8,7 @@
 #include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
 
@@ -45,7 +46,7 @@ void checkCellLimit(const std::vector<Decomposition>& decompositions,
              "turns back across the sweep, adds cells: merge or drop small holes, smooth the "
              "boundary), use a larger wall_distance (it closes narrow gaps and rounds off small "
              "bumps), or plan the area in parts";
-  if (parameters.decomposition_type == "trapezoidal") {
+  if (decompositionTypeOf(parameters) == DecompositionType::kTrapezoidal) {
     message << "; the boustrophedon decomposition makes fewer cells than the trapezoidal one";
   }
   throw SizeLimitError(message.str());
@@ -102,7 +103,7 @@ double minimumLaneCount(const std::vector<Decomposition>& decompositions, double
 
 void checkLaneLimit(const std::vector<Decomposition>& decompositions,
                     const PlannerParameters& parameters) {
-  const double spacing = FrustumSensor::fromParameters(parameters).sweepDistance();
+  const double spacing = sensorOf(parameters).sweepDistance();
   const double lanes = minimumLaneCount(decompositions, spacing);
   const double limit = static_cast<double>(kMaxSweeps);
   if (lanes <= limit) return;
@@ -114,7 +115,7 @@ void checkLaneLimit(const std::vector<Decomposition>& decompositions,
           << " m, which is (1 - lateral_overlap) x the footprint width): the sweep distance must "
              "grow about "
           << lanes / limit << " times: ";
-  if (parameters.sensor_model == "line") {
+  if (sensorOptionsOf(parameters).model == SensorModel::kLine) {
     message << "a larger lateral_footprint";
   } else {
     message << "a larger sensor_distance (the sensor's height above the bottom) or lateral_fov";

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
 
 namespace kinematic_coverage::core {
 

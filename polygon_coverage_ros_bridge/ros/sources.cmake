@@ -1,9 +1,12 @@
-# The ROS adapters of the coverage planner (catkin builds only): message conversion,
-# parameters, markers, and the nodes coverage_planner and mission_publisher.
+# The one ROS adapter layer of every node (catkin builds only), as grid_map_ros converts
+# for grid_map_core: message conversion and status, parameter reading, the markers of
+# plans, trajectories and coverage; and the nodes coverage_planner and mission_publisher.
 add_library(kc_ros_bridge STATIC
   polygon_coverage_ros_bridge/ros/message_conversion.cpp
   polygon_coverage_ros_bridge/ros/ros_parameter_reader.cpp
   polygon_coverage_ros_bridge/ros/plan_markers.cpp
+  polygon_coverage_ros_bridge/ros/trajectory_markers.cpp
+  polygon_coverage_ros_bridge/ros/heatmap_markers.cpp
   polygon_coverage_ros_bridge/ros/coverage_planner_node.cpp)
 target_include_directories(kc_ros_bridge PUBLIC ${PROJECT_SOURCE_DIR} ${catkin_INCLUDE_DIRS}
   ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})

@@ -151,36 +151,13 @@ void BoundaryGrid::buildClusters() {
 }
 
 void BoundaryGrid::buildGrid() {
-  Eigen::AlignedBox2d box;
-  for (const Point2& p : edge_start_) box.extend(p);
-  const Point2 margin = Point2::Constant(2.0 * tolerance_);
-  origin_ = box.min() - margin;
-  const Point2 size = box.sizes() + 2.0 * margin;
-  const double cells = kCellsPerEdge * static_cast<double>(edge_start_.size());
-  const double side = std::sqrt(size.x() * size.y() / cells);
-  columns_ = std::clamp(static_cast<int>(std::ceil(size.x() / side)), 1, kMaxCellsPerAxis);
-  rows_ = std::clamp(static_cast<int>(std::ceil(size.y() / side)), 1, kMaxCellsPerAxis);
-  cell_width_ = size.x() / columns_;
-  cell_height_ = size.y() / rows_;
-  inverse_cell_width_ = 1.0 / cell_width_;
-  inverse_cell_height_ = 1.0 / cell_height_;
-
-  // Each edge goes into every cell its box, grown by the tolerance, overlaps.
-  const int edge_count = static_cast<int>(edge_start_.size());
-  std::vector<int> counts(static_cast<std::size_t>(columns_ * rows_) + 1, 0);
-  auto forEachCell = [&](int e, auto&& use) {
-    const Point2 low = edge_start_[e].cwiseMin(edge_end_[e]) - Point2::Constant(tolerance_);
-    const Point2 high = edge_start_[e].cwiseMax(edge_end_[e]) + Point2::Constant(tolerance_);
-    for (int r = row(low.y()); r <= row(high.y()); ++r) {
-      for (int c = column(low.x()); c <= column(high.x()); ++c) use(r * columns_ + c);
-    }
-  };
-  for (int e = 0; e < edge_count; ++e) forEachCell(e, [&](int cell) { ++counts[cell + 1]; });
-  std::partial_sum(counts.begin(), counts.end(), counts.begin());
-  cell_begin_ = counts;
-  cell_edges_.assign(counts.back(), 0);
-  for (int e = 0; e < edge_count; ++e)
-    forEachCell(e, [&](int cell) { cell_edges_[counts[cell]++] = e; });
+  // Each edge is registered in every cell its box, grown by the tolerance, overlaps.
+  EdgeGrid::Layout layout;
+  layout.cells_per_edge = kCellsPerEdge;
+  layout.max_cells_per_axis = kMaxCellsPerAxis;
+  layout.margin = 2.0 * tolerance_;
+  layout.padding = tolerance_;
+  grid_ = EdgeGrid(edge_start_, edge_end_, layout);
 }
 
 void BoundaryGrid::addTouchingEdges() {
@@ -189,9 +166,11 @@ void BoundaryGrid::addTouchingEdges() {
   for (int k = 0; k < static_cast<int>(clusters_.size()); ++k) {
     Cluster& cluster = clusters_[k];
     const Point2 p = cluster.position;
-    const int cell = row(p.y()) * columns_ + column(p.x());
-    for (int i = cell_begin_[cell]; i < cell_begin_[cell + 1]; ++i) {
-      const int e = cell_edges_[i];
+    const int column = grid_.column(p.x());
+    const int row = grid_.row(p.y());
+    for (const int* edge = grid_.cellBegin(column, row); edge != grid_.cellEnd(column, row);
+         ++edge) {
+      const int e = *edge;
       if (k == start_cluster_[e] || k == end_cluster_[e]) continue;
       if (distanceToSegment(p, edge_start_[e], edge_end_[e]) > tolerance_) continue;
       const Point2 forward = edge_end_[e] - p;
@@ -205,46 +184,6 @@ void BoundaryGrid::addTouchingEdges() {
   }
 }
 
-int BoundaryGrid::column(double x) const {
-  const double c = (x - origin_.x()) * inverse_cell_width_;
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(columns_) - 0.5));
-}
-
-int BoundaryGrid::row(double y) const {
-  const double r = (y - origin_.y()) * inverse_cell_height_;
-  return static_cast<int>(std::clamp(r, 0.0, static_cast<double>(rows_) - 0.5));
-}
-
-template <typename Visit>
-bool BoundaryGrid::visitEdgesAlong(const Point2& a, const Point2& b, Visit&& visit) const {
-  // Row by row, the columns the segment spans within the row's band.
-  const double y_low = std::min(a.y(), b.y());
-  const double y_high = std::max(a.y(), b.y());
-  const double x_low = std::min(a.x(), b.x());
-  const double x_high = std::max(a.x(), b.x());
-  const double dy = b.y() - a.y();
-  const double slope = dy != 0.0 ? (b.x() - a.x()) / dy : 0.0;
-  for (int r = row(y_low), last_row = row(y_high); r <= last_row; ++r) {
-    double from = x_low;
-    double to = x_high;
-    if (dy != 0.0) {
-      const double band_low = std::max(y_low, origin_.y() + r * cell_height_);
-      const double band_high = std::min(y_high, origin_.y() + (r + 1) * cell_height_);
-      const double x1 = a.x() + (band_low - a.y()) * slope;
-      const double x2 = a.x() + (band_high - a.y()) * slope;
-      from = std::clamp(std::min(x1, x2), x_low, x_high);
-      to = std::clamp(std::max(x1, x2), x_low, x_high);
-    }
-    for (int c = column(from), last_column = column(to); c <= last_column; ++c) {
-      const int cell = r * columns_ + c;
-      for (int i = cell_begin_[cell]; i < cell_begin_[cell + 1]; ++i) {
-        if (!visit(cell_edges_[i])) return false;
-      }
-    }
-  }
-  return true;
-}
-
 bool BoundaryGrid::contains(const Point2& p) const {
   return p.allFinite() && kinematic_coverage::core::contains(polygon_, p, tolerance_);
 }
@@ -252,9 +191,10 @@ bool BoundaryGrid::contains(const Point2& p) const {
 BoundaryGrid::Contact BoundaryGrid::contactOf(const Point2& p) const {
   Contact contact;
   if (!p.allFinite()) return contact;
-  const int cell = row(p.y()) * columns_ + column(p.x());
-  for (int i = cell_begin_[cell]; i < cell_begin_[cell + 1]; ++i) {
-    const int e = cell_edges_[i];
+  const int column = grid_.column(p.x());
+  const int row = grid_.row(p.y());
+  for (const int* edge = grid_.cellBegin(column, row); edge != grid_.cellEnd(column, row); ++edge) {
+    const int e = *edge;
     if ((p - edge_start_[e]).norm() <= tolerance_) return {start_cluster_[e], {}};
     if ((p - edge_end_[e]).norm() <= tolerance_) return {end_cluster_[e], {}};
     if (distanceToSegment(p, edge_start_[e], edge_end_[e]) <= tolerance_) {
@@ -372,7 +312,7 @@ bool BoundaryGrid::segmentInside(const Point2& a, const Contact& a_contact, cons
   if (!(length > tolerance_)) return length <= tolerance_;
   if (!endAllows(a_contact, b) || !endAllows(b_contact, a)) return false;
   const double side_tolerance = tolerance_ * length;  // cross products scale with |d|
-  return visitEdgesAlong(a, b, [&](int e) {
+  return grid_.visitEdgesAlong(a, b, [&](int e) {
     const Point2& s = edge_start_[e];
     const Point2& t = edge_end_[e];
     const double side_s = crossOf(d, s - a);

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/geometry/edge_grid.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
 namespace kinematic_coverage::core {
@@ -85,10 +86,6 @@ class BoundaryGrid {
   /// free side there (at a vertex contact: the segment from the vertex itself, which may
   /// deviate from a ray by the tolerance over its length).
   bool endAllows(const Contact& contact, const Point2& far_end) const;
-  int column(double x) const;
-  int row(double y) const;
-  template <typename Visit>
-  bool visitEdgesAlong(const Point2& a, const Point2& b, Visit&& visit) const;
 
   PolygonWithHoles polygon_;
   double tolerance_ = 0.0;
@@ -97,16 +94,7 @@ class BoundaryGrid {
   std::vector<int> start_cluster_;
   std::vector<int> end_cluster_;
   std::vector<Cluster> clusters_;
-  Point2 origin_ = Point2::Zero();
-  double cell_width_ = 1.0;
-  double cell_height_ = 1.0;
-  double inverse_cell_width_ = 1.0;
-  double inverse_cell_height_ = 1.0;
-  int columns_ = 1;
-  int rows_ = 1;
-  std::vector<int>
-      cell_begin_;  ///< edges of cell c: cell_edges_[cell_begin_[c], cell_begin_[c + 1])
-  std::vector<int> cell_edges_;
+  EdgeGrid grid_;
 };
 
 }  // namespace kinematic_coverage::core

@@ -9,7 +9,6 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/region_intersection.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
 
@@ -201,9 +200,7 @@ JoinedOffsetArea OffsetPartJoiner::join(const std::vector<PolygonWithHoles>& par
     while (root[k] != k) k = root[k] = root[root[k]];
     return k;
   };
-  PlannerParameters distance_parameters;
-  distance_parameters.cost_function = "distance";
-  const SegmentCost distance_cost(distance_parameters);
+  const SegmentCost distance_cost(CostFunction::kDistance, VehicleLimits{});
   std::vector<OffsetGap> gaps;
   for (const Merge& merge : merges) {
     for (std::size_t c = 0; c < merge.lower.components.size(); ++c) {

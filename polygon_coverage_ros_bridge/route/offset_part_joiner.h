@@ -7,6 +7,12 @@
 
 namespace kinematic_coverage::core {
 
+/// Which parts of a free area that the wall offset splits are planned (`offset_parts`).
+enum class OffsetParts {
+  kAll,      ///< every part, joined through the gaps between them (OffsetPartJoiner)
+  kLargest,  ///< only the largest
+};
+
 /// A transit between two parts of the offset free area through a gap narrower than two
 /// wall distances: the robot may pass, with less clearance than the wall distance.
 struct OffsetGap {

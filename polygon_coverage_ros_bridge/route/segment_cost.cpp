@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "polygon_coverage_ros_bridge/base/trapezoidal_velocity_profile.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -9,27 +10,17 @@
 
 namespace kinematic_coverage::core {
 
-SegmentCost::SegmentCost(const PlannerParameters& parameters)
-    : kind_(Kind::kDistance), v_max_(parameters.v_max), a_max_(parameters.a_max) {
-  if (parameters.cost_function == "distance") {
-    kind_ = Kind::kDistance;
-  } else if (parameters.cost_function == "time") {
-    kind_ = Kind::kTime;
-    for (const auto& [name, value] : {std::pair<const char*, double>{"v_max", v_max_},
-                                      std::pair<const char*, double>{"a_max", a_max_}}) {
-      if (!std::isfinite(value) || value <= 0.0) {
-        std::ostringstream message;
-        message << "parameter " << name << " must be a positive number for cost_function "
-                << "'time', got " << value;
-        throw InvalidInputError(message.str());
-      }
+SegmentCost::SegmentCost(CostFunction cost_function, const VehicleLimits& limits)
+    : cost_function_(cost_function), limits_(limits) {
+  if (cost_function_ != CostFunction::kTime) return;
+  for (const auto& [name, value] : {std::pair<const char*, double>{"v_max", limits.v_max},
+                                    std::pair<const char*, double>{"a_max", limits.a_max}}) {
+    if (!std::isfinite(value) || value <= 0.0) {
+      std::ostringstream message;
+      message << "parameter " << name << " must be a positive number for cost_function "
+              << "'time', got " << value;
+      throw InvalidInputError(message.str());
     }
-  } else if (parameters.cost_function == "waypoints") {
-    kind_ = Kind::kWaypoints;
-  } else {
-    throw InvalidInputError(
-        "parameter cost_function must be 'distance', 'time' or 'waypoints', got '" +
-        parameters.cost_function + "'");
   }
 }
 
@@ -39,12 +30,12 @@ double SegmentCost::ofLength(double length) const {
     message << "segment length must be a finite number >= 0, got " << length;
     throw InvalidInputError(message.str());
   }
-  switch (kind_) {
-    case Kind::kDistance:
+  switch (cost_function_) {
+    case CostFunction::kDistance:
       return length;
-    case Kind::kTime:
-      return TrapezoidalVelocityProfile(VehicleLimits{v_max_, a_max_}).restToRestTime(length);
-    case Kind::kWaypoints:
+    case CostFunction::kTime:
+      return TrapezoidalVelocityProfile(limits_).restToRestTime(length);
+    case CostFunction::kWaypoints:
       return length <= kLengthTolerance ? 0.0 : 1.0;
   }
   return length;

@@ -2,10 +2,17 @@
 
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 
 namespace kinematic_coverage::core {
+
+/// What the planner minimises over its transitions and its generalized TSP (`cost_function`).
+enum class CostFunction {
+  kDistance,   ///< metres
+  kTime,       ///< seconds, rest to rest on every segment
+  kWaypoints,  ///< the number of segments
+};
 
 /// The cost of driving one straight segment under `cost_function` (docs/REFERENCE.md, Parameters),
 /// the edge weight of the planner's transitions and of its generalized TSP.
@@ -17,9 +24,9 @@ namespace kinematic_coverage::core {
 /// segment never costs more than any detour between its ends.
 class SegmentCost {
  public:
-  /// Throws InvalidInputError for an unknown cost_function, or for v_max or a_max not
-  /// positive and finite when cost_function is "time".
-  explicit SegmentCost(const PlannerParameters& parameters);
+  /// Throws InvalidInputError for v_max or a_max of `limits` not positive and finite when
+  /// `cost_function` is kTime.
+  SegmentCost(CostFunction cost_function, const VehicleLimits& limits);
 
   /// The cost of a straight segment of `length` metres (>= 0). Throws InvalidInputError
   /// for a negative or non-finite length.
@@ -32,10 +39,8 @@ class SegmentCost {
   double pathCost(const std::vector<Point2>& path) const;
 
  private:
-  enum class Kind { kDistance, kTime, kWaypoints };
-  Kind kind_;
-  double v_max_;
-  double a_max_;
+  CostFunction cost_function_;
+  VehicleLimits limits_;
 };
 
 /// The length of a polyline, metres (0 for fewer than two points).

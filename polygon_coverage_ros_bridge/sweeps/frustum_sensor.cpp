@@ -7,13 +7,13 @@ namespace kinematic_coverage::core {
 FrustumSensor::FrustumSensor(double width, double length, double lateral_overlap)
     : width_(width), length_(length), sweep_distance_((1.0 - lateral_overlap) * width) {}
 
-FrustumSensor FrustumSensor::fromParameters(const PlannerParameters& parameters) {
-  if (parameters.sensor_model == "line") {
-    return FrustumSensor(parameters.lateral_footprint, 0.0, parameters.lateral_overlap);
+FrustumSensor FrustumSensor::fromOptions(const SensorOptions& options) {
+  if (options.model == SensorModel::kLine) {
+    return FrustumSensor(options.lateral_footprint, 0.0, options.lateral_overlap);
   }
-  const double d = parameters.sensor_distance;
-  return FrustumSensor(2.0 * d * std::tan(0.5 * parameters.lateral_fov),
-                       2.0 * d * std::tan(0.5 * parameters.onward_fov), parameters.lateral_overlap);
+  const double d = options.sensor_distance;
+  return FrustumSensor(2.0 * d * std::tan(0.5 * options.lateral_fov),
+                       2.0 * d * std::tan(0.5 * options.onward_fov), options.lateral_overlap);
 }
 
 Ring FrustumSensor::footprint(const Pose2& pose) const {

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/sweeps/sensor_options.h"
 
 namespace kinematic_coverage::core {
 
@@ -13,8 +13,8 @@ class FrustumSensor {
  public:
   FrustumSensor(double width, double length, double lateral_overlap);
 
-  /// The sensor that the parameters describe (frustum or line).
-  static FrustumSensor fromParameters(const PlannerParameters& parameters);
+  /// The sensor that the options describe (frustum or line).
+  static FrustumSensor fromOptions(const SensorOptions& options);
 
   double width() const { return width_; }
   double length() const { return length_; }

@@ -11,10 +11,10 @@
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_command.h"
-#include "polygon_coverage_ros_bridge/mission/evaluate_command.h"
-#include "polygon_coverage_ros_bridge/mission/plan_command.h"
-#include "polygon_coverage_ros_bridge/mission/replan_command.h"
-#include "polygon_coverage_ros_bridge/mission/simulate_command.h"
+#include "polygon_coverage_ros_bridge/tool/evaluate_command.h"
+#include "polygon_coverage_ros_bridge/tool/plan_command.h"
+#include "polygon_coverage_ros_bridge/tool/replan_command.h"
+#include "polygon_coverage_ros_bridge/tool/simulate_command.h"
 
 namespace kinematic_coverage::core {
 namespace {

@@ -17,6 +17,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/coverage/exact_coverage_oracle.h"
 #include "test/support/random_polygons.h"
 #include "test/support/test_shapes.h"
@@ -251,8 +252,8 @@ std::ostream& operator<<(std::ostream& out, const Comparison& c) {
 Comparison compare(const Mission& mission) {
   const PlannedMission planned = planMission(mission);
   const PlannerParameters& parameters = mission.parameters;
-  const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(parameters).generate(planned.plan.waypoints, planned.free_area);
+  const GeneratedTrajectory trajectory = TrajectoryGenerator(trajectoryOptionsOf(parameters))
+                                             .generate(planned.plan.waypoints, planned.free_area);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) {
     poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
@@ -268,8 +269,7 @@ Comparison compare(const Mission& mission) {
   // The same raster again, for the cell counts that turn the reachable share into a share
   // of the free area.
   const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts,
-                                    FrustumSensor::fromParameters(parameters),
-                                    reportingResolution());
+                                    sensorOf(parameters), reportingResolution());
   const double free_cells = static_cast<double>(CoverageRaster::countCells(evaluator.freeArea()));
   const double reachable_share =
       static_cast<double>(CoverageRaster::countCells(evaluator.reachableArea())) / free_cells;

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
 
 namespace kinematic_coverage::core {
 namespace testing {

@@ -10,6 +10,7 @@
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
@@ -31,7 +32,7 @@ MissionTrajectory planTrajectory(const std::string& mission_name, bool smoothing
   result.mission = MissionFileReader().read(
       std::string(KC_SOURCE_DIR) + "/config/missions/" + mission_name, overrides);
   result.planned = planMission(result.mission);
-  result.trajectory = TrajectoryGenerator(result.mission.parameters)
+  result.trajectory = TrajectoryGenerator(trajectoryOptionsOf(result.mission.parameters))
                           .generate(result.planned.plan.waypoints, result.planned.free_area);
   for (const TrajectoryPose& pose : result.trajectory.poses) result.poses.push_back(pose.pose());
   return result;
@@ -45,8 +46,7 @@ TrajectoryCoverage coverageOf(const MissionTrajectory& run) {
 /// Coverage of the same poses on a 1 cm raster, for the accuracy of the reporting one.
 double fineCoveragePercent(const MissionTrajectory& run) {
   const CoverageEvaluator evaluator(run.planned.free_area, run.planned.plan.offset_parts,
-                                    FrustumSensor::fromParameters(run.mission.parameters),
-                                    {0.01, 1e-3, 20'000'000});
+                                    sensorOf(run.mission.parameters), {0.01, 1e-3, 20'000'000});
   return evaluator.report(evaluator.seeTrajectory(run.poses)).coverage_percent;
 }
 
@@ -149,14 +149,13 @@ TEST(CoverageFinding, CoverageSafeSmoothingSeesTheFarEndOfADeadEndBay) {
   mission.parameters.turning_radius = 0.79;
   const PlannedMission planned = planMission(mission);
   const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts,
-                                    FrustumSensor::fromParameters(mission.parameters),
-                                    reportingResolution());
+                                    sensorOf(mission.parameters), reportingResolution());
   // The reachable area of the bay that the trajectory of `strategy` leaves unseen (m^2).
   const auto unseenInBay = [&](const std::string& strategy) {
     PlannerParameters parameters = mission.parameters;
     parameters.smoothing_strategy = strategy;
     std::vector<Pose2> poses;
-    for (const TrajectoryPose& pose : TrajectoryGenerator(parameters)
+    for (const TrajectoryPose& pose : TrajectoryGenerator(trajectoryOptionsOf(parameters))
                                           .generate(planned.plan.waypoints, planned.free_area)
                                           .poses) {
       poses.push_back(pose.pose());

@@ -11,6 +11,7 @@
 
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/hard_map_generator.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
@@ -23,8 +24,8 @@ constexpr double kMaxDropPoints = 0.05;
 
 /// Reachable coverage (percent) of the trajectory that `parameters` make of `planned`.
 double reachableCoverage(const PlannedMission& planned, const PlannerParameters& parameters) {
-  const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(parameters).generate(planned.plan.waypoints, planned.free_area);
+  const GeneratedTrajectory trajectory = TrajectoryGenerator(trajectoryOptionsOf(parameters))
+                                             .generate(planned.plan.waypoints, planned.free_area);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
   return measureTrajectoryCoverage(planned.free_area, planned.plan.offset_parts, parameters, poses)

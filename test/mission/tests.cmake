@@ -1,6 +1,5 @@
 kc_add_gtest(test_mission
   test/mission/mission_file_reader_test.cpp
-  test/mission/output_files_test.cpp
   test/mission/coverage_finding_test.cpp
   test/mission/coverage_safe_bars_test.cpp
   test/support/hard_map_generator.cpp

@@ -9,6 +9,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "test/planner/plan_properties.h"
 #include "test/support/random_polygons.h"
@@ -63,7 +64,7 @@ TEST(CoveragePlanner, EveryPartOfASplitOffsetAreaIsPlannedAndSeen) {
   for (const bool smoothing : {false, true}) {
     parameters.smoothing = smoothing;
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(parameters).generate(plan.waypoints, kThreeRooms);
+        TrajectoryGenerator(trajectoryOptionsOf(parameters)).generate(plan.waypoints, kThreeRooms);
     std::vector<Pose2> poses;
     for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
     const TrajectoryCoverage coverage =

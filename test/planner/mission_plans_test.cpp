@@ -6,6 +6,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
 #include "test/planner/plan_properties.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
@@ -16,7 +17,7 @@ namespace {
 /// The number of lanes the planner lays in the decomposition it chose.
 std::size_t laneCount(const Mission& mission, const PlannedMission& planned) {
   const PlannerParameters& parameters = mission.parameters;
-  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters);
+  const FrustumSensor sensor = sensorOf(parameters);
   const SweepPatternGenerator generator(
       sensor, SweepPatternGenerator::laneEndInset(sensor, parameters.wall_distance));
   std::size_t lanes = 0;
@@ -70,7 +71,8 @@ TEST(MissionPlans, Lake30x30) {
     variant.parameters.smoothing = smoothing;
     SCOPED_TRACE(smoothing ? "smoothed" : "unsmoothed");
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(variant.parameters).generate(planned.plan.waypoints, planned.free_area);
+        TrajectoryGenerator(trajectoryOptionsOf(variant.parameters))
+            .generate(planned.plan.waypoints, planned.free_area);
     expectValidTrajectory(variant, planned, trajectory);
     if (smoothing) {
       // The default (global) smoothing strategy smooths at least 98 % of the turns.
@@ -90,7 +92,8 @@ TEST(MissionPlans, Lake7x5HasAtLeastFiveSweeps) {
   expectValidPlan(planned.free_area, planned.plan, mission.parameters, mission.start, mission.goal);
   EXPECT_GE(laneCount(mission, planned), 5u);
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(mission.parameters).generate(planned.plan.waypoints, planned.free_area);
+      TrajectoryGenerator(trajectoryOptionsOf(mission.parameters))
+          .generate(planned.plan.waypoints, planned.free_area);
   expectValidTrajectory(mission, planned, trajectory);
   // The thesis's second experiment: every smoothing variant is used.
   EXPECT_GE(trajectory.statistics.inner, 1);
@@ -110,17 +113,18 @@ TEST(MissionPlans, GlobalSmoothingIsNeverSlowerThanLocal) {
     local.smoothing_strategy = "local";
     PlannerParameters global = mission.parameters;
     global.smoothing_strategy = "global";
-    const GeneratedTrajectory by_local =
-        TrajectoryGenerator(local).generate(planned.plan.waypoints, planned.free_area);
-    const GeneratedTrajectory by_global =
-        TrajectoryGenerator(global).generate(planned.plan.waypoints, planned.free_area);
+    const GeneratedTrajectory by_local = TrajectoryGenerator(trajectoryOptionsOf(local))
+                                             .generate(planned.plan.waypoints, planned.free_area);
+    const GeneratedTrajectory by_global = TrajectoryGenerator(trajectoryOptionsOf(global))
+                                              .generate(planned.plan.waypoints, planned.free_area);
     expectValidTrajectory(mission, planned, by_global);
     EXPECT_LE(by_global.traversal_time_s, by_local.traversal_time_s + 1e-9);
 
     PlannerParameters variable = global;
     variable.min_turning_radius = 0.5 * global.turning_radius;
     const GeneratedTrajectory by_variable =
-        TrajectoryGenerator(variable).generate(planned.plan.waypoints, planned.free_area);
+        TrajectoryGenerator(trajectoryOptionsOf(variable))
+            .generate(planned.plan.waypoints, planned.free_area);
     EXPECT_LE(by_variable.max_curvature, 1.0 / variable.min_turning_radius + 1e-9);
     EXPECT_GT(by_variable.min_obstacle_clearance_m, 0.0);
     EXPECT_GE(by_variable.statistics.turns_smoothed, by_global.statistics.turns_smoothed);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
@@ -34,7 +35,7 @@ void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan
   }
   EXPECT_NEAR(plan.path_length_m, length, 1e-6 * std::max(1.0, length));
   EXPECT_GE(plan.time_cost_s, plan.path_length_m / parameters.v_max - 1e-9);
-  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters);
+  const FrustumSensor sensor = sensorOf(parameters);
   const double covered = waypointPathReachableCoveragePercent(
       free_area, plan.offset_parts, sensor, waypoints, RasterResolution{0.0, 1e-3, 1'000'000});
   if (sensor.length() <= sensor.width()) {

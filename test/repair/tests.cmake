@@ -1,4 +1,4 @@
 kc_add_gtest(test_repair
   test/repair/unseen_area_repair_test.cpp
   test/support/hard_map_generator.cpp
-  LIBRARIES kc_repair kc_mission)
+  LIBRARIES kc_parameters kc_repair kc_mission)

@@ -8,6 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/hard_map_generator.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
@@ -41,7 +42,7 @@ struct Room {
   PolygonWithHoles offset{{{1, 1}, {19, 1}, {19, 9}, {1, 9}}, {}};
   FrustumSensor sensor{2.0, 1.0, 0.0};
   PlannerParameters parameters;
-  SegmentCost cost{parameters};
+  SegmentCost cost{segmentCostOf(parameters)};
   VisibilityGraph graph{offset, cost};
 
   RepairedPath repair(const std::vector<Point2>& waypoints) const {
@@ -201,7 +202,7 @@ PlannedBothWays planBothWays(Mission mission) {
   result.with = planMission(mission);
   for (const Pose2& pose : result.without.plan.waypoints) result.before.push_back(pose.position());
   for (const Pose2& pose : result.with.plan.waypoints) result.after.push_back(pose.position());
-  result.sensor = FrustumSensor::fromParameters(mission.parameters);
+  result.sensor = sensorOf(mission.parameters);
   return result;
 }
 

@@ -6,6 +6,7 @@
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
@@ -24,8 +25,9 @@ inline DriftScenario lakeDriftScenario(double followed_share, const Point2& shif
   scenario.mission =
       MissionFileReader().read(std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml");
   const PlannedMission planned = planMission(scenario.mission);
-  const GeneratedTrajectory trajectory = TrajectoryGenerator(scenario.mission.parameters)
-                                             .generate(planned.plan.waypoints, planned.free_area);
+  const GeneratedTrajectory trajectory =
+      TrajectoryGenerator(trajectoryOptionsOf(scenario.mission.parameters))
+          .generate(planned.plan.waypoints, planned.free_area);
   const std::size_t count =
       static_cast<std::size_t>(followed_share * static_cast<double>(trajectory.poses.size()));
   for (std::size_t i = 0; i < count; ++i) {
@@ -48,12 +50,11 @@ inline double combinedReachableCoverage(const PolygonWithHoles& free_area,
   const OffsetFreeArea offset = computeOffsetFreeArea(free_area, parameters.wall_distance);
   RasterResolution resolution;
   resolution.cell_size = 0.05;
-  const CoverageEvaluator evaluator(free_area, offset.parts,
-                                    FrustumSensor::fromParameters(parameters), resolution);
+  const CoverageEvaluator evaluator(free_area, offset.parts, sensorOf(parameters), resolution);
   SeenArea seen = evaluator.seeTrajectory(visited);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory) poses.push_back({pose.x, pose.y, pose.yaw});
-  seen.addTrajectory(poses, FrustumSensor::fromParameters(parameters));
+  seen.addTrajectory(poses, sensorOf(parameters));
   return seen.coveragePercent(evaluator.reachableArea());
 }
 

@@ -6,6 +6,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
@@ -41,8 +42,8 @@ std::size_t vertexCount(const std::vector<PolygonWithHoles>& parts) {
 
 TEST(RemainingArea, AStraightPassLeavesTheRestOfTheSquare) {
   PlannerParameters parameters = lineSensor();
-  const RemainingArea remaining =
-      RemainingAreaCalculator(parameters).compute(square(20), pass(1.0, 20.0));
+  const RemainingArea remaining = RemainingAreaCalculator(remainingAreaOptionsOf(parameters))
+                                      .compute(square(20), pass(1.0, 20.0));
   EXPECT_NEAR(remaining.free_area_m2, 400.0, 1.0);
   EXPECT_NEAR(remaining.seen_area_m2, 40.0, 1.0);
   EXPECT_NEAR(remaining.remaining_area_m2, 360.0, 1.0);
@@ -65,13 +66,17 @@ TEST(RemainingArea, SliversNarrowerThanTheFractionGo) {
   std::vector<Pose2> visited = pass(1.0, 20.0);
   const std::vector<Pose2> second = pass(3.3, 20.0);
   visited.insert(visited.end(), second.rbegin(), second.rend());
-  const RemainingArea remaining = RemainingAreaCalculator(parameters).compute(square(20), visited);
+  const RemainingArea remaining =
+      RemainingAreaCalculator(remainingAreaOptionsOf(parameters)).compute(square(20), visited);
   ASSERT_EQ(remaining.parts.size(), 1u);
   EXPECT_NEAR(area(remaining.parts[0]), 20.0 * (20.0 - 4.3), 0.1 * 2.0 * (20.0 + 15.7));
   for (const Point2& p : remaining.parts[0].hull) EXPECT_GT(p.y(), 4.0);
   // With no opening the strip stays as its own part.
   parameters.replanning_sliver_fraction = 0.0;
-  EXPECT_EQ(RemainingAreaCalculator(parameters).compute(square(20), visited).parts.size(), 2u);
+  EXPECT_EQ(RemainingAreaCalculator(remainingAreaOptionsOf(parameters))
+                .compute(square(20), visited)
+                .parts.size(),
+            2u);
 }
 
 /// The thesis's many vertices: a wavy visited path leaves a boundary that, traced on the
@@ -85,7 +90,8 @@ TEST(RemainingArea, WavyBoundariesAreSimplified) {
     const double y = 6.0 + 1.5 * std::sin(0.9 * x);
     visited.push_back({x, y, std::atan(1.35 * std::cos(0.9 * x))});
   }
-  const RemainingArea remaining = RemainingAreaCalculator(parameters).compute(square(20), visited);
+  const RemainingArea remaining =
+      RemainingAreaCalculator(remainingAreaOptionsOf(parameters)).compute(square(20), visited);
   ASSERT_EQ(remaining.parts.size(), 2u);  // below and above the band
   EXPECT_LT(vertexCount(remaining.parts), 80u);
   for (const PolygonWithHoles& part : remaining.parts) {
@@ -106,7 +112,8 @@ TEST(RemainingArea, ConcaveHullOfAUTurnGivesValidParts) {
   std::vector<Pose2> visited = pass(3.0, 16.0);
   for (double y = 3.0; y <= 15.0; y += 0.5) visited.push_back({16.0, y, M_PI / 2});
   for (double x = 16.0; x >= 0.0; x -= 0.5) visited.push_back({x, 15.0, M_PI});
-  const RemainingArea remaining = RemainingAreaCalculator(parameters).compute(square(20), visited);
+  const RemainingArea remaining =
+      RemainingAreaCalculator(remainingAreaOptionsOf(parameters)).compute(square(20), visited);
   EXPECT_FALSE(remaining.parts.empty());
   for (const PolygonWithHoles& part : remaining.parts) {
     EXPECT_NO_THROW(PolygonValidator().validate(part));
@@ -117,13 +124,15 @@ TEST(RemainingArea, ConcaveHullOfAUTurnGivesValidParts) {
   EXPECT_TRUE(pocket);
   // The convex hull swallows the pocket.
   parameters.replanning_method = "convex_hull";
-  const RemainingArea convex = RemainingAreaCalculator(parameters).compute(square(20), visited);
+  const RemainingArea convex =
+      RemainingAreaCalculator(remainingAreaOptionsOf(parameters)).compute(square(20), visited);
   for (const PolygonWithHoles& part : convex.parts) EXPECT_FALSE(contains(part, {8, 9}));
   EXPECT_LT(convex.kept_area_m2, remaining.kept_area_m2);
 }
 
 TEST(RemainingArea, NonFinitePoseIsInvalid) {
-  EXPECT_THROW(RemainingAreaCalculator(lineSensor()).compute(square(10), {{0, std::nan(""), 0}}),
+  EXPECT_THROW(RemainingAreaCalculator(remainingAreaOptionsOf(lineSensor()))
+                   .compute(square(10), std::vector<Pose2>{{0, std::nan(""), 0}}),
                InvalidInputError);
 }
 

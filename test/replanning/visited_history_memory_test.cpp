@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "trajectory_generation_tools/replanning/visited_history.h"
 
 namespace kinematic_coverage::core {
@@ -42,7 +43,7 @@ Pose2 lawnmowerPose(long i) {
 
 /// The history keeps what every replanning method needs, whichever is asked for later.
 TEST(VisitedHistoryMemory, HundredThousandPosesKeepResidentMemoryFlat) {
-  VisitedHistory history{PlannerParameters()};
+  VisitedHistory history{sensorOf(PlannerParameters())};
   long at_1000 = 0;
   for (long i = 0; i < 100000; ++i) {
     history.add(lawnmowerPose(i));

@@ -7,9 +7,10 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/planner/replanner.h"
 #include "test/replanning/drift_scenario.h"
 #include "trajectory_generation_tools/replanning/remaining_area.h"
-#include "trajectory_generation_tools/replanning/replanner.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -17,7 +18,7 @@ namespace {
 const char* const kMethods[] = {"footprint", "convex_hull", "concave_hull"};
 
 VisitedHistory historyOf(const PlannerParameters& parameters, const std::vector<Pose2>& poses) {
-  VisitedHistory history(parameters);
+  VisitedHistory history(sensorOf(parameters));
   for (const Pose2& pose : poses) history.add(pose);
   return history;
 }
@@ -82,7 +83,7 @@ TEST(VisitedHistory, AFoldedHistoryIsEquivalentToItsPoses) {
     const VisitedHistory history = historyOf(parameters, dense);
     EXPECT_EQ(history.count(), dense.size());
     EXPECT_LE(history.recent().size(), VisitedHistory::kRecentPoses);
-    const RemainingAreaCalculator calculator(parameters);
+    const RemainingAreaCalculator calculator(remainingAreaOptionsOf(parameters));
     const RemainingArea exact = calculator.compute(scenario.updated, dense);
     const RemainingArea bounded = calculator.compute(scenario.updated, history);
     std::printf(
@@ -99,7 +100,7 @@ TEST(VisitedHistory, AFoldedHistoryIsEquivalentToItsPoses) {
 
 TEST(VisitedHistory, KeepsCountAndLastPoseAndForgetsOnClear) {
   const PlannerParameters parameters;
-  VisitedHistory history(parameters);
+  VisitedHistory history(sensorOf(parameters));
   EXPECT_TRUE(history.empty());
   for (int i = 0; i < 10000; ++i) history.add({0.05 * i, 1.0, 0.0});
   EXPECT_EQ(history.count(), 10000u);
@@ -115,7 +116,7 @@ TEST(VisitedHistory, KeepsCountAndLastPoseAndForgetsOnClear) {
 }
 
 TEST(VisitedHistory, RejectsNonFiniteAndFarPoses) {
-  VisitedHistory history{PlannerParameters()};
+  VisitedHistory history{sensorOf(PlannerParameters())};
   history.add({1.0, 1.0, 0.0});
   EXPECT_THROW(history.add({std::nan(""), 1.0, 0.0}), InvalidInputError);
   EXPECT_THROW(history.add({1.0, 1.0, INFINITY}), InvalidInputError);

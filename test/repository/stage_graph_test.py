@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """scripts/stage_graph.py --check: the repository passes, and each kind of violation in a
-copy of it fails (an include beyond a stage's floor, a known violation that is gone, a ROS
-header in the core, CGAL reaching node code, the core included by rviz_plugins/)."""
+copy of it fails (an include beyond a stage's floor, a stage library whose CMake DEPENDS
+miss or exceed the stages it includes, a ROS header in the core, CGAL reaching node code,
+the core included by rviz_plugins/)."""
 import os
 import shutil
 import subprocess
@@ -51,14 +52,23 @@ class StageGraphTest(unittest.TestCase):
         self.assert_fails_with('geometry includes polygon_coverage_ros_bridge/gtsp, '
                                'which is not below it')
 
-    def test_a_known_violation_that_is_gone_fails(self):
-        path = os.path.join(self.directory, 'polygon_coverage_ros_bridge', 'sweeps')
-        for name in os.listdir(path):
-            with open(os.path.join(path, name), encoding='utf-8') as source:
-                text = source.read()
-            with open(os.path.join(path, name), 'w', encoding='utf-8') as source:
-                source.write(text.replace('polygon_coverage_ros_bridge/planner/', 'planner/'))
-        self.assert_fails_with('sweeps no longer includes polygon_coverage_ros_bridge/planner')
+    def edit(self, path, old, new):
+        path = os.path.join(self.directory, path)
+        with open(path, encoding='utf-8') as source:
+            text = source.read()
+        self.assertIn(old, text)
+        with open(path, 'w', encoding='utf-8') as source:
+            source.write(text.replace(old, new))
+
+    def test_a_stage_library_missing_a_stage_it_includes_fails(self):
+        self.edit('polygon_coverage_ros_bridge/route/sources.cmake', 'DEPENDS kc_geometry',
+                  'DEPENDS')
+        self.assert_fails_with('kc_route includes kc_geometry but does not list it in DEPENDS')
+
+    def test_a_stage_library_linking_a_stage_it_does_not_include_fails(self):
+        self.edit('polygon_coverage_ros_bridge/route/sources.cmake', 'DEPENDS kc_geometry',
+                  'DEPENDS kc_geometry kc_gtsp')
+        self.assert_fails_with('kc_route lists kc_gtsp in DEPENDS but includes none')
 
     def test_a_ros_header_in_the_core_fails(self):
         self.append('trajectory_generation_tools/smoothing/corner.h', '#include <ros/ros.h>')

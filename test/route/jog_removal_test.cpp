@@ -6,7 +6,8 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/route/route_test_maps.h"
 
 namespace kinematic_coverage::core {
@@ -38,7 +39,7 @@ double largestShift(const std::vector<Point2>& original, const std::vector<Point
 
 TEST(JogRemoval, RemovesAShortJogBetweenTwoLanes) {
   const PolygonWithHoles area = squareWithHole();
-  const SegmentCost cost(distanceCost());
+  const SegmentCost cost(segmentCostOf(distanceCost()));
   const VisibilityGraph graph(area, cost);
   // A lane to (6, 2), a 3 cm jog, a lane on to (18, 2.03).
   const std::vector<Point2> path = {{1, 2}, {6, 2}, {6.01, 2.03}, {18, 2.03}};
@@ -54,7 +55,7 @@ TEST(JogRemoval, RemovesAShortJogBetweenTwoLanes) {
 // may still simplify it away where the path runs straight on.
 TEST(JogRemoval, PinnedWaypointsStayWithoutBeingKept) {
   const PolygonWithHoles area = squareWithHole();
-  const SegmentCost cost(distanceCost());
+  const SegmentCost cost(segmentCostOf(distanceCost()));
   const VisibilityGraph graph(area, cost);
   const std::vector<Point2> path = {{1, 2}, {6, 2}, {6.01, 2.03}, {18, 2.03}};
   const std::vector<bool> keep(path.size(), false);
@@ -71,7 +72,7 @@ TEST(JogRemoval, PinnedWaypointsStayWithoutBeingKept) {
 
 TEST(JogRemoval, KeepsJogsWhoseShortcutLeavesTheArea) {
   const PolygonWithHoles area = squareWithHole();
-  const SegmentCost cost(distanceCost());
+  const SegmentCost cost(segmentCostOf(distanceCost()));
   const VisibilityGraph graph(area, cost);
   // Around the hole's corner (12, 8): cutting it would cross the hole; the waypoint after
   // the corner is collinear and goes.
@@ -87,7 +88,7 @@ TEST(JogRemoval, KeepsJogsWhoseShortcutLeavesTheArea) {
 
 TEST(JogRemoval, KeepsLongLegsLargeDeviationsAndProtectedWaypoints) {
   const PolygonWithHoles area = squareWithHole();
-  const SegmentCost cost(distanceCost());
+  const SegmentCost cost(segmentCostOf(distanceCost()));
   const VisibilityGraph graph(area, cost);
   const std::vector<Point2> path = {{1, 2}, {6, 2}, {6.0, 2.3}, {18, 2.3}};
   // Legs of at least 2 m: nothing is short.
@@ -103,7 +104,7 @@ TEST(JogRemoval, KeepsLongLegsLargeDeviationsAndProtectedWaypoints) {
 
 TEST(JogRemoval, DropsDuplicatesAndRejectsBadArguments) {
   const PolygonWithHoles area = squareWithHole();
-  const SegmentCost cost(distanceCost());
+  const SegmentCost cost(segmentCostOf(distanceCost()));
   const VisibilityGraph graph(area, cost);
   const std::vector<Point2> path = {{1, 2}, {6, 2}, {6, 2}, {6, 6}};
   EXPECT_EQ(JogRemoval(graph, 1.0, 0.0).apply(path, std::vector<bool>(4, false)).size(), 3u);
@@ -117,7 +118,7 @@ TEST(JogRemoval, DropsDuplicatesAndRejectsBadArguments) {
 /// waypoint lies within the deviation bound of the result.
 TEST(JogRemoval, RandomPathsStayInsideAndNearTheOriginal) {
   std::mt19937 rng(4242);
-  const SegmentCost cost(distanceCost());
+  const SegmentCost cost(segmentCostOf(distanceCost()));
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int removed = 0;
   for (int trial = 0; trial < 60; ++trial) {

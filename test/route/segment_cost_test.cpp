@@ -7,6 +7,7 @@
 #include <random>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -20,25 +21,25 @@ PlannerParameters withCost(const std::string& cost_function) {
 }
 
 TEST(SegmentCost, DistanceIsLength) {
-  const SegmentCost cost(withCost("distance"));
+  const SegmentCost cost(segmentCostOf(withCost("distance")));
   EXPECT_DOUBLE_EQ(cost.of({0, 0}, {3, 4}), 5.0);
   EXPECT_DOUBLE_EQ(cost.ofLength(0.0), 0.0);
 }
 
 TEST(SegmentCost, TimeTrapezoidAboveCruiseLength) {
-  const SegmentCost cost(withCost("time"));
+  const SegmentCost cost(segmentCostOf(withCost("time")));
   // v^2/a = 1.25 m; a 10 m segment cruises: 10/0.5 + 0.5/0.2.
   EXPECT_DOUBLE_EQ(cost.ofLength(10.0), 20.0 + 2.5);
 }
 
 TEST(SegmentCost, TimeTriangleBelowCruiseLength) {
-  const SegmentCost cost(withCost("time"));
+  const SegmentCost cost(segmentCostOf(withCost("time")));
   EXPECT_DOUBLE_EQ(cost.ofLength(0.45), 2.0 * std::sqrt(0.45 / 0.2));
   EXPECT_DOUBLE_EQ(cost.ofLength(0.0), 0.0);
 }
 
 TEST(SegmentCost, TimeContinuousAtCruiseLength) {
-  const SegmentCost cost(withCost("time"));
+  const SegmentCost cost(segmentCostOf(withCost("time")));
   const double cruise = 0.5 * 0.5 / 0.2;
   const double at = cost.ofLength(cruise);
   EXPECT_NEAR(at, 2.0 * 0.5 / 0.2, 1e-12);
@@ -48,7 +49,7 @@ TEST(SegmentCost, TimeContinuousAtCruiseLength) {
 }
 
 TEST(SegmentCost, WaypointsCountSegments) {
-  const SegmentCost cost(withCost("waypoints"));
+  const SegmentCost cost(segmentCostOf(withCost("waypoints")));
   EXPECT_DOUBLE_EQ(cost.of({0, 0}, {0, 1e-3}), 1.0);
   EXPECT_DOUBLE_EQ(cost.of({0, 0}, {50, 0}), 1.0);
   EXPECT_DOUBLE_EQ(cost.of({1, 1}, {1, 1}), 0.0);
@@ -58,7 +59,7 @@ TEST(SegmentCost, WaypointsCountSegments) {
 TEST(SegmentCost, PathCostSumsSegmentsInEveryMode) {
   const std::vector<Point2> path = {{0, 0}, {3, 4}, {3, 4}, {3, 4.5}, {10, 4.5}};
   for (const char* mode : {"distance", "time", "waypoints"}) {
-    const SegmentCost cost(withCost(mode));
+    const SegmentCost cost(segmentCostOf(withCost(mode)));
     double sum = 0.0;
     for (std::size_t i = 1; i < path.size(); ++i) sum += cost.of(path[i - 1], path[i]);
     EXPECT_DOUBLE_EQ(cost.pathCost(path), sum) << mode;
@@ -74,7 +75,7 @@ TEST(SegmentCost, MonotoneAndSubadditiveOnRandomLengths) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> length(0.0, 5.0);
   for (const char* mode : {"distance", "time", "waypoints"}) {
-    const SegmentCost cost(withCost(mode));
+    const SegmentCost cost(segmentCostOf(withCost(mode)));
     for (int i = 0; i < 2000; ++i) {
       const double x = length(rng);
       const double y = length(rng);
@@ -85,17 +86,16 @@ TEST(SegmentCost, MonotoneAndSubadditiveOnRandomLengths) {
 }
 
 TEST(SegmentCost, RejectsBadParameters) {
-  EXPECT_THROW(SegmentCost(withCost("energy")), InvalidInputError);
+  EXPECT_THROW(segmentCostOf(withCost("energy")), InvalidInputError);
   PlannerParameters parameters = withCost("time");
   parameters.v_max = 0.0;
-  EXPECT_THROW(SegmentCost{parameters}, InvalidInputError);
-  parameters.v_max = 0.5;
-  parameters.a_max = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(SegmentCost{parameters}, InvalidInputError);
-  // Distance does not use them.
-  parameters.cost_function = "distance";
-  EXPECT_NO_THROW(SegmentCost{parameters});
-  const SegmentCost cost(withCost("time"));
+  EXPECT_THROW(segmentCostOf(parameters), InvalidInputError);
+  // The stage itself checks the limits the time cost divides by; distance does not use them.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(SegmentCost(CostFunction::kTime, VehicleLimits{0.0, 0.2}), InvalidInputError);
+  EXPECT_THROW(SegmentCost(CostFunction::kTime, VehicleLimits{0.5, nan}), InvalidInputError);
+  EXPECT_NO_THROW(SegmentCost(CostFunction::kDistance, VehicleLimits{0.5, nan}));
+  const SegmentCost cost(segmentCostOf(withCost("time")));
   EXPECT_THROW(cost.ofLength(-1.0), InvalidInputError);
   EXPECT_THROW(cost.of({0, 0}, {std::numeric_limits<double>::infinity(), 0}), InvalidInputError);
 }

@@ -4,4 +4,4 @@ kc_add_gtest(test_route
   test/route/visibility_graph_test.cpp
   test/route/jog_removal_test.cpp
   test/route/offset_part_joiner_test.cpp
-  LIBRARIES kc_route)
+  LIBRARIES kc_parameters kc_route)

@@ -12,6 +12,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/route/route_test_maps.h"
 #include "test/support/random_polygons.h"
 
@@ -21,7 +22,7 @@ namespace {
 SegmentCost costOf(const std::string& cost_function) {
   PlannerParameters parameters;
   parameters.cost_function = cost_function;
-  return SegmentCost(parameters);
+  return SegmentCost(segmentCostOf(parameters));
 }
 
 PolygonWithHoles squareWithHole() {

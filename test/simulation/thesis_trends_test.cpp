@@ -8,6 +8,7 @@
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
@@ -28,11 +29,12 @@ RobotRun planAndSimulate(const std::string& mission_name,
       std::string(KC_SOURCE_DIR) + "/config/missions/" + mission_name + ".yaml", overrides);
   const PlannedMission planned = planMission(mission);
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(mission.parameters).generate(planned.plan.waypoints, planned.free_area);
+      TrajectoryGenerator(trajectoryOptionsOf(mission.parameters))
+          .generate(planned.plan.waypoints, planned.free_area);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
   RobotRun run;
-  run.simulation = RobotSimulator(mission.parameters).simulate(poses);
+  run.simulation = RobotSimulator(robotModelOf(mission.parameters)).simulate(poses);
   std::vector<Pose2> actual;
   for (const SimulationStep& step : run.simulation.steps) actual.push_back(step.pose);
   run.coverage_percent = measureTrajectoryCoverage(planned.free_area, planned.plan.offset_parts,

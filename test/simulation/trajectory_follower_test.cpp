@@ -6,6 +6,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 
 namespace kinematic_coverage::core {
@@ -39,7 +40,8 @@ TEST(TrajectoryFollowerTest, FollowsAStraightLineWithZeroErrorInTheExpectedTime)
   const double length = 10.0;
   const double expected = v / a + (length - v * v / (2.0 * a) - v / k) / v +
                           std::log((v / k) / parameters.position_tolerance) / k;
-  const SimulationResult result = RobotSimulator(parameters).simulate(straightLine(length, length));
+  const SimulationResult result =
+      RobotSimulator(robotModelOf(parameters)).simulate(straightLine(length, length));
   EXPECT_NEAR(result.traversal_time_s, expected, 0.01 * expected);
   // Zero up to the rounding of the distance to a segment.
   EXPECT_LT(result.tracking.sum_m, 1e-9);
@@ -64,7 +66,7 @@ TEST(TrajectoryFollowerTest, SlowsTowardsEveryPoseItIsHanded) {
   double previous_time = 0.0;
   for (const double spacing : {10.0, 0.5, 0.1}) {
     const SimulationResult result =
-        RobotSimulator(parameters).simulate(straightLine(10.0, spacing));
+        RobotSimulator(robotModelOf(parameters)).simulate(straightLine(10.0, spacing));
     EXPECT_LT(result.tracking.sum_m, 1e-9) << spacing;
     EXPECT_GT(result.traversal_time_s, previous_time) << spacing;
     previous_time = result.traversal_time_s;
@@ -75,7 +77,8 @@ TEST(TrajectoryFollowerTest, SlowsTowardsEveryPoseItIsHanded) {
 
 TEST(TrajectoryFollowerTest, TurnsInPlaceWhereTheTrajectoryRotates) {
   const PlannerParameters parameters;
-  const SimulationResult result = RobotSimulator(parameters).simulate(rotation(M_PI / 2, 0.2));
+  const SimulationResult result =
+      RobotSimulator(robotModelOf(parameters)).simulate(rotation(M_PI / 2, 0.2));
   const Pose2& end = result.steps.back().pose;
   EXPECT_EQ(end.x, 0.0);
   EXPECT_EQ(end.y, 0.0);
@@ -90,12 +93,15 @@ TEST(TrajectoryFollowerTest, FinerRotationSamplingSlowsALowGainRobot) {
   // poses on the same turn take longer. A high gain turns at the saturated yaw rate.
   PlannerParameters low;
   low.yaw_gain = 1.0;
-  const double coarse = RobotSimulator(low).simulate(rotation(M_PI, 0.2)).traversal_time_s;
-  const double fine = RobotSimulator(low).simulate(rotation(M_PI, 0.05)).traversal_time_s;
+  const double coarse =
+      RobotSimulator(robotModelOf(low)).simulate(rotation(M_PI, 0.2)).traversal_time_s;
+  const double fine =
+      RobotSimulator(robotModelOf(low)).simulate(rotation(M_PI, 0.05)).traversal_time_s;
   EXPECT_GT(fine, 1.5 * coarse);
   PlannerParameters high;
   high.yaw_gain = 5.0;
-  const double fast = RobotSimulator(high).simulate(rotation(M_PI, 0.2)).traversal_time_s;
+  const double fast =
+      RobotSimulator(robotModelOf(high)).simulate(rotation(M_PI, 0.2)).traversal_time_s;
   EXPECT_LT(fast, coarse);
   EXPECT_LT(fast, 1.5 * M_PI / high.yaw_rate_max);
 }
@@ -103,7 +109,8 @@ TEST(TrajectoryFollowerTest, FinerRotationSamplingSlowsALowGainRobot) {
 TEST(TrajectoryFollowerTest, CrabsIntoACrossCurrentAndStillArrives) {
   PlannerParameters parameters;
   parameters.current_y = 0.1;
-  const SimulationResult result = RobotSimulator(parameters).simulate(straightLine(20.0, 0.5));
+  const SimulationResult result =
+      RobotSimulator(robotModelOf(parameters)).simulate(straightLine(20.0, 0.5));
   EXPECT_NEAR(result.steps.back().pose.x, 20.0, 0.5);
   EXPECT_GT(result.tracking.mean_m, 0.0);
   EXPECT_LT(result.tracking.percentiles_m.back(), 0.5);
@@ -118,7 +125,7 @@ TEST(TrajectoryFollowerTest, GivesUpWhenTheCurrentIsFasterThanTheRobot) {
   parameters.current_x = -1.0;
   parameters.sim_time_limit = 100.0;
   try {
-    RobotSimulator(parameters).simulate(straightLine(10.0, 0.5));
+    RobotSimulator(robotModelOf(parameters)).simulate(straightLine(10.0, 0.5));
     FAIL() << "expected InvalidInputError";
   } catch (const InvalidInputError& error) {
     EXPECT_NE(std::string(error.what())
@@ -137,7 +144,7 @@ TEST(TrajectoryFollowerTest, RestartsFromAMovingStateAndSkipsPassedPoses) {
   start.t = 42.0;
   start.pose = {5.2, 0.0, 0.0};
   start.speed = 0.3;
-  TrajectoryFollower follower(parameters, straightLine(10.0, 1.0), start);
+  TrajectoryFollower follower(robotModelOf(parameters), straightLine(10.0, 1.0), start);
   EXPECT_EQ(follower.nextTarget(), 6u);
   follower.step();
   EXPECT_DOUBLE_EQ(follower.state().t, 42.0 + parameters.sim_dt);
@@ -153,19 +160,22 @@ TEST(TrajectoryFollowerTest, RestartsFromAMovingStateAndSkipsPassedPoses) {
 TEST(TrajectoryFollowerTest, RejectsInvalidInput) {
   const PlannerParameters parameters;
   const RobotState start;
-  EXPECT_THROW(TrajectoryFollower(parameters, {}, start), InvalidInputError);
-  EXPECT_THROW(TrajectoryFollower(parameters, {{0, 0, 0}, {1, std::nan(""), 0}}, start),
-               InvalidInputError);
+  EXPECT_THROW(TrajectoryFollower(robotModelOf(parameters), {}, start), InvalidInputError);
+  EXPECT_THROW(
+      TrajectoryFollower(robotModelOf(parameters), {{0, 0, 0}, {1, std::nan(""), 0}}, start),
+      InvalidInputError);
   RobotState reversing;
   reversing.speed = -0.1;
-  EXPECT_THROW(TrajectoryFollower(parameters, {{0, 0, 0}}, reversing), InvalidInputError);
+  EXPECT_THROW(TrajectoryFollower(robotModelOf(parameters), {{0, 0, 0}}, reversing),
+               InvalidInputError);
   PlannerParameters too_high_gain;
   too_high_gain.yaw_gain = 20.0;
-  EXPECT_THROW(TrajectoryFollower(too_high_gain, {{0, 0, 0}}, start), InvalidInputError);
+  EXPECT_THROW(TrajectoryFollower(robotModelOf(too_high_gain), {{0, 0, 0}}, start),
+               InvalidInputError);
   PlannerParameters too_long;
   too_long.sim_time_limit = 1e9;
-  EXPECT_THROW(RobotSimulator{too_long}, InvalidInputError);
-  EXPECT_THROW(RobotSimulator(parameters).simulate({}), InvalidInputError);
+  EXPECT_THROW(RobotSimulator{robotModelOf(too_long)}, InvalidInputError);
+  EXPECT_THROW(RobotSimulator(robotModelOf(parameters)).simulate({}), InvalidInputError);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
 #include "test/smoothing/smoothing_oracle.h"
 #include "trajectory_generation_tools/smoothing/corner_coverage_check.h"
@@ -16,7 +17,7 @@ namespace {
 
 GlobalSmoothingOptions options(double radius, double min_radius) {
   GlobalSmoothingOptions result;
-  result.turning_radius = radius;
+  result.vehicle.turning_radius = radius;
   result.min_turning_radius = min_radius;
   return result;
 }
@@ -44,7 +45,7 @@ TEST(GlobalPathSmoother, RejectsInvalidOptions) {
   EXPECT_THROW(GlobalPathSmoother({}, options(1.0, nan)), InvalidInputError);
   EXPECT_THROW(GlobalPathSmoother({}, options(1.0, -0.5)), InvalidInputError);
   GlobalSmoothingOptions slow = options(1.0, 1.0);
-  slow.a_max = 0.0;
+  slow.vehicle.a_max = 0.0;
   EXPECT_THROW(GlobalPathSmoother({}, slow), InvalidInputError);
   for (const double wider : {nan, -1.0, std::numeric_limits<double>::infinity()}) {
     GlobalSmoothingOptions bad = options(1.0, 1.0);
@@ -320,14 +321,14 @@ TEST(GlobalPathSmoother, CoverageSafeTakesAGuardedCornerByAnArcThatLosesOnlyUnre
 TEST(GlobalPathSmoother, CoverageSafeTakesTurnsAtTheWiderRadiusWhereTheTightOneCrawls) {
   // Lanes 2 m apart under a 4 m wide footprint, a robot that turns as tight as 0.3 m but
   // drives an arc at yaw_rate_max * radius: 0.15 m/s at 0.3 m. With max_turning_radius
-  // 1 m (v_max / yaw_rate_max, the fromParameters default) every U-turn is a half circle
-  // at full speed, which the neighbouring lanes' footprints see round; the path is faster
-  // and sees what the sharp path sees.
+  // 1 m (v_max / yaw_rate_max, the globalSmoothingOptionsOf default) every U-turn is a half
+  // circle at full speed, which the neighbouring lanes' footprints see round; the path is
+  // faster and sees what the sharp path sees.
   const FrustumSensor sensor(4.0, 3.0, 0.0);
   GlobalSmoothingOptions tight = options(0.3, 0.3);
   tight.makeCoverageSafe(sensor, 5.0);
   GlobalSmoothingOptions wider = tight;
-  wider.max_turning_radius = wider.v_max / wider.yaw_rate_max;
+  wider.max_turning_radius = wider.vehicle.v_max / wider.vehicle.yaw_rate_max;
   const PolygonWithHoles area = lanesHull(20, 2.0);
   const std::vector<Point2> points = lanes(20, 2.0);
   const SmoothedPath slow = GlobalPathSmoother(area, tight).smooth(points);
@@ -353,15 +354,15 @@ TEST(GlobalSmoothingOptions, CoverageSafeTriesTheRadiusOfAnArcAtFullSpeed) {
   parameters.turning_radius = 0.3;
   parameters.v_max = 0.6;
   parameters.yaw_rate_max = 0.5;
-  EXPECT_DOUBLE_EQ(GlobalSmoothingOptions::fromParameters(parameters).max_turning_radius, 1.2);
+  EXPECT_DOUBLE_EQ(globalSmoothingOptionsOf(parameters).max_turning_radius, 1.2);
   parameters.max_turning_radius = 2.0;
-  EXPECT_DOUBLE_EQ(GlobalSmoothingOptions::fromParameters(parameters).max_turning_radius, 2.0);
+  EXPECT_DOUBLE_EQ(globalSmoothingOptionsOf(parameters).max_turning_radius, 2.0);
   parameters.max_turning_radius = 0.0;
   parameters.turning_radius = 1.5;  // wider than the full-speed radius: nothing to add
-  EXPECT_DOUBLE_EQ(GlobalSmoothingOptions::fromParameters(parameters).max_turning_radius, 1.5);
+  EXPECT_DOUBLE_EQ(globalSmoothingOptionsOf(parameters).max_turning_radius, 1.5);
   parameters.smoothing_strategy = "global";  // global keeps the candidates it was measured with
   parameters.turning_radius = 0.3;
-  EXPECT_EQ(GlobalSmoothingOptions::fromParameters(parameters).max_turning_radius, 0.0);
+  EXPECT_EQ(globalSmoothingOptionsOf(parameters).max_turning_radius, 0.0);
 }
 
 }  // namespace

@@ -62,13 +62,13 @@ Case randomCase(std::mt19937& rng, int corners, bool obstacles, bool sensor) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   Case result;
   const double r = 0.5 + 1.5 * unit(rng);
-  result.options.turning_radius = r;
+  result.options.vehicle.turning_radius = r;
   result.options.min_turning_radius = (0.25 + 0.55 * unit(rng)) * r;
   // Slow and fast robots: the arcs' speed limit yaw_rate_max * radius is below v_max at
   // some radii and above it at others.
-  result.options.v_max = 0.3 + 1.2 * unit(rng);
-  result.options.a_max = 0.1 + 0.9 * unit(rng);
-  result.options.yaw_rate_max = 0.2 + 1.3 * unit(rng);
+  result.options.vehicle.v_max = 0.3 + 1.2 * unit(rng);
+  result.options.vehicle.a_max = 0.1 + 0.9 * unit(rng);
+  result.options.vehicle.yaw_rate_max = 0.2 + 1.3 * unit(rng);
   if (sensor) {
     const double width = r * (1.0 + 5.0 * unit(rng));
     result.options.preserved_sensor = FrustumSensor(width, (0.3 + 0.7 * unit(rng)) * width, 0.0);
@@ -123,9 +123,9 @@ Case randomCase(std::mt19937& rng, int corners, bool obstacles, bool sensor) {
 std::string describe(const Case& c) {
   std::ostringstream out;
   out.precision(17);
-  out << "r = " << c.options.turning_radius << ", min r = " << c.options.min_turning_radius
-      << ", v_max = " << c.options.v_max << ", a_max = " << c.options.a_max
-      << ", yaw_rate_max = " << c.options.yaw_rate_max << ", holes " << c.area.holes.size()
+  out << "r = " << c.options.vehicle.turning_radius << ", min r = " << c.options.min_turning_radius
+      << ", v_max = " << c.options.vehicle.v_max << ", a_max = " << c.options.vehicle.a_max
+      << ", yaw_rate_max = " << c.options.vehicle.yaw_rate_max << ", holes " << c.area.holes.size()
       << ", waypoints";
   for (const Point2& p : c.waypoints) out << " (" << p.x() << ", " << p.y() << ")";
   return out.str();

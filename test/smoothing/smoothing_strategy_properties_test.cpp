@@ -33,7 +33,7 @@ void PrintTo(const Strategy& strategy, std::ostream* os) { *os << strategy.name;
 
 GlobalSmoothingOptions globalOptions(double radius, double min_radius_fraction) {
   GlobalSmoothingOptions options;
-  options.turning_radius = radius;
+  options.vehicle.turning_radius = radius;
   options.min_turning_radius = min_radius_fraction * radius;
   return options;
 }

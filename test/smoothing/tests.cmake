@@ -9,4 +9,4 @@ kc_add_gtest(test_smoothing
   test/smoothing/path_smoother_test.cpp
   test/smoothing/reverse_curve_smoothing_test.cpp
   test/smoothing/smoothing_strategy_properties_test.cpp
-  LIBRARIES kc_smoothing)
+  LIBRARIES kc_parameters kc_smoothing)

@@ -7,8 +7,9 @@
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
-#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "test/support/hard_map_yaml.h"
@@ -69,7 +70,7 @@ TEST_P(HardMapGeneratorTest, MapsAreValidDeterministicAndInRange) {
 
     const PlannerParameters& p = m.parameters;
     EXPECT_NO_THROW(ParameterValidator().validate(p));
-    const FrustumSensor sensor = FrustumSensor::fromParameters(p);
+    const FrustumSensor sensor = sensorOf(p);
     EXPECT_NEAR(sensor.width(), map.footprint_width_m, 1e-9);
     EXPECT_NEAR(sensor.length(), map.footprint_length_m, 1e-9);
     EXPECT_GE(sensor.width(), 1.0 - 1e-9);

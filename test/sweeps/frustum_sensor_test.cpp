@@ -5,12 +5,13 @@
 #include <cmath>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
 namespace {
 
 TEST(FrustumSensor, ThesisFootprint) {
-  const FrustumSensor sensor = FrustumSensor::fromParameters(PlannerParameters{});
+  const FrustumSensor sensor = sensorOf(PlannerParameters{});
   EXPECT_NEAR(sensor.width(), 2 * 3.0 * std::tan(2.27 / 2), 1e-12);   // 12.9 m
   EXPECT_NEAR(sensor.length(), 2 * 3.0 * std::tan(0.52 / 2), 1e-12);  // 1.6 m
   EXPECT_NEAR(sensor.sweepDistance(), 0.6 * sensor.width(), 1e-12);
@@ -21,7 +22,7 @@ TEST(FrustumSensor, LineSensorHasNoOnwardExtent) {
   parameters.sensor_model = "line";
   parameters.lateral_footprint = 4.0;
   parameters.lateral_overlap = 0.25;
-  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters);
+  const FrustumSensor sensor = sensorOf(parameters);
   EXPECT_DOUBLE_EQ(sensor.width(), 4.0);
   EXPECT_DOUBLE_EQ(sensor.length(), 0.0);
   EXPECT_DOUBLE_EQ(sensor.sweepDistance(), 3.0);

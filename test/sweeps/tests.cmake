@@ -4,4 +4,4 @@ kc_add_gtest(test_sweeps
   test/sweeps/coverage_raster_test.cpp
   test/sweeps/reachable_area_test.cpp
   test/sweeps/seen_area_test.cpp
-  LIBRARIES kc_sweeps)
+  LIBRARIES kc_parameters kc_sweeps)

@@ -2,7 +2,6 @@ kc_add_gtest(test_trajectory
   test/trajectory/primitive_path_metrics_test.cpp
   test/trajectory/segment_path_builder_test.cpp
   test/trajectory/trajectory_generator_test.cpp
-  test/trajectory/trajectory_csv_writer_test.cpp
   test/trajectory/trajectory_sampler_test.cpp
   test/trajectory/trajectory_timing_test.cpp
-  LIBRARIES kc_trajectory)
+  LIBRARIES kc_parameters kc_trajectory)

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -45,7 +46,8 @@ TEST(TrajectoryGenerator, RejectsAMinTurningRadiusAboveTheTurningRadius) {
   PlannerParameters parameters;
   parameters.min_turning_radius = 2.0 * parameters.turning_radius;
   const std::vector<Pose2> waypoints{{0, 0, 0}, {10, 0, 0}, {10, 10, 0}};
-  EXPECT_THROW(TrajectoryGenerator(parameters).generate(waypoints, {}), InvalidInputError);
+  EXPECT_THROW(TrajectoryGenerator(trajectoryOptionsOf(parameters)).generate(waypoints, {}),
+               InvalidInputError);
 }
 
 /// One waypoint (or several at one place) is a robot that stays: one pose, with the first
@@ -60,7 +62,7 @@ TEST(TrajectoryGenerator, OneWaypointGivesOnePoseAndNoneIsInvalid) {
     for (const std::vector<Pose2>& waypoints :
          {std::vector<Pose2>{{1, 2, 0.5}}, std::vector<Pose2>{{1, 2, 0.5}, {1, 2, -1.0}}}) {
       const GeneratedTrajectory trajectory =
-          TrajectoryGenerator(parameters).generate(waypoints, area);
+          TrajectoryGenerator(trajectoryOptionsOf(parameters)).generate(waypoints, area);
       ASSERT_EQ(trajectory.poses.size(), 1u);
       EXPECT_EQ(trajectory.poses[0].x, 1.0);
       EXPECT_EQ(trajectory.poses[0].y, 2.0);
@@ -68,9 +70,11 @@ TEST(TrajectoryGenerator, OneWaypointGivesOnePoseAndNoneIsInvalid) {
       EXPECT_EQ(trajectory.poses[0].t, 0.0);
       EXPECT_EQ(trajectory.traversal_time_s, 0.0);
     }
-    EXPECT_THROW(TrajectoryGenerator(parameters).generate({}, area), InvalidInputError);
-    EXPECT_THROW(TrajectoryGenerator(parameters).generate({{std::nan(""), 0, 0}}, area),
+    EXPECT_THROW(TrajectoryGenerator(trajectoryOptionsOf(parameters)).generate({}, area),
                  InvalidInputError);
+    EXPECT_THROW(
+        TrajectoryGenerator(trajectoryOptionsOf(parameters)).generate({{std::nan(""), 0, 0}}, area),
+        InvalidInputError);
   }
 }
 
@@ -88,9 +92,12 @@ TEST(TrajectoryGenerator, GlobalIsNeverSlowerThanLocalOnRandomLawnmowers) {
     global.smoothing_strategy = "global";
     PlannerParameters variable = global;
     variable.min_turning_radius = 0.3 * global.turning_radius;
-    const GeneratedTrajectory by_local = TrajectoryGenerator(local).generate(waypoints, area);
-    const GeneratedTrajectory by_global = TrajectoryGenerator(global).generate(waypoints, area);
-    const GeneratedTrajectory by_variable = TrajectoryGenerator(variable).generate(waypoints, area);
+    const GeneratedTrajectory by_local =
+        TrajectoryGenerator(trajectoryOptionsOf(local)).generate(waypoints, area);
+    const GeneratedTrajectory by_global =
+        TrajectoryGenerator(trajectoryOptionsOf(global)).generate(waypoints, area);
+    const GeneratedTrajectory by_variable =
+        TrajectoryGenerator(trajectoryOptionsOf(variable)).generate(waypoints, area);
     EXPECT_LE(by_global.traversal_time_s, by_local.traversal_time_s + 1e-9);
     EXPECT_LE(by_global.max_curvature, 1.0 / global.turning_radius + 1e-9);
     EXPECT_LE(by_variable.max_curvature, 1.0 / variable.min_turning_radius + 1e-9);

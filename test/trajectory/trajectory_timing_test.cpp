@@ -269,8 +269,7 @@ TEST(TrajectoryTiming, RejectsBadRates) {
   EXPECT_THROW(TrajectoryTiming(0.5, 0.2, nan), InvalidInputError);
   EXPECT_THROW(TrajectoryTiming(std::numeric_limits<double>::infinity(), 0.2, 0.5),
                InvalidInputError);
-  PlannerParameters parameters;
-  EXPECT_NO_THROW(TrajectoryTiming{parameters});
+  EXPECT_NO_THROW(TrajectoryTiming{VehicleLimits()});
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "test/support/random_polygons.h"
 
@@ -21,11 +22,8 @@ Ring rectangle(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
-/// Cleans after validating, as coverage_tool does.
-CleanedPolygon clean(const PolygonWithHoles& raw) {
-  PolygonValidator().validate(raw);
-  return PolygonCleaner().clean(raw);
-}
+/// Cleans after validating, as every entry point does.
+CleanedPolygon clean(const PolygonWithHoles& raw) { return FreeAreaBuilder().build(raw).cleaned; }
 
 std::string cleaningError(const PolygonWithHoles& raw) {
   try {

@@ -4,6 +4,6 @@ pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
 kc_add_stage_library(kc_plot
   SOURCES
     trajectory_generation_tools/plot/coverage_plot.cpp
-  DEPENDS kc_geometry kc_coverage)
+  DEPENDS kc_geometry kc_sweeps)
 # Cairo stays out of the headers, so only this library links it.
 target_link_libraries(kc_plot PRIVATE PkgConfig::CAIRO)

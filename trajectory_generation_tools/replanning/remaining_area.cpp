@@ -9,7 +9,6 @@
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/reachable_area.h"
 #include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
-#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
 #include "trajectory_generation_tools/replanning/alpha_shape_triangles.h"
 #include "trajectory_generation_tools/replanning/raster_contours.h"
 #include "trajectory_generation_tools/replanning/region_simplification.h"
@@ -33,10 +32,8 @@ CellMask inverted(const CellMask& mask) {
 
 }  // namespace
 
-RemainingAreaCalculator::RemainingAreaCalculator(const PlannerParameters& parameters)
-    : parameters_(parameters) {
-  ParameterValidator().validate(parameters_);
-}
+RemainingAreaCalculator::RemainingAreaCalculator(const RemainingAreaOptions& options)
+    : options_(options) {}
 
 RemainingArea RemainingAreaCalculator::compute(const PolygonWithHoles& free_area,
                                                const std::vector<Pose2>& visited) const {
@@ -47,7 +44,7 @@ RemainingArea RemainingAreaCalculator::compute(const PolygonWithHoles& free_area
   }
   const CoverageRaster raster = rasterCovering(free_area);
   return fromSeen(raster, free_area,
-                  seenMask(raster, visited, FrustumSensor::fromParameters(parameters_), nullptr));
+                  seenMask(raster, visited, FrustumSensor::fromOptions(options_.sensor), nullptr));
 }
 
 RemainingArea RemainingAreaCalculator::compute(const PolygonWithHoles& free_area,
@@ -58,7 +55,7 @@ RemainingArea RemainingAreaCalculator::compute(const PolygonWithHoles& free_area
 }
 
 CoverageRaster RemainingAreaCalculator::rasterCovering(const PolygonWithHoles& free_area) const {
-  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
+  const FrustumSensor sensor = FrustumSensor::fromOptions(options_.sensor);
   double min_x = free_area.hull.front().x(), max_x = min_x;
   double min_y = free_area.hull.front().y(), max_y = min_y;
   for (const Point2& p : free_area.hull) {
@@ -80,8 +77,8 @@ CellMask RemainingAreaCalculator::seenMask(const CoverageRaster& raster,
                                            const FrustumSensor& sensor,
                                            const VisitedHistory* folded) const {
   CellMask seen(raster.cellCount(), 0);
-  const std::string& method = parameters_.replanning_method;
-  if (method == "footprint") {
+  const ReplanningMethod method = options_.method;
+  if (method == ReplanningMethod::kFootprint) {
     if (!recent.empty()) {
       SeenArea area(raster);
       area.addTrajectory(recent, sensor);
@@ -93,16 +90,17 @@ CellMask RemainingAreaCalculator::seenMask(const CoverageRaster& raster,
   std::vector<Point2> corners;
   if (folded != nullptr) {
     const std::vector<Point2>& kept =
-        method == "convex_hull" ? folded->foldedHull() : folded->foldedCorners();
+        method == ReplanningMethod::kConvexHull ? folded->foldedHull() : folded->foldedCorners();
     corners.assign(kept.begin(), kept.end());
   }
   for (const Pose2& pose : recent) {
     for (const Point2& corner : sensor.footprint(pose)) corners.push_back(corner);
   }
   if (corners.empty()) return seen;
-  if (method == "convex_hull") return raster.rasterize(PolygonWithHoles{convexHull(corners), {}});
+  if (method == ReplanningMethod::kConvexHull)
+    return raster.rasterize(PolygonWithHoles{convexHull(corners), {}});
   std::vector<CellSpan> spans;
-  for (const auto& triangle : alphaShapeTriangles(corners, parameters_.alpha)) {
+  for (const auto& triangle : alphaShapeTriangles(corners, options_.alpha)) {
     Ring ring(triangle.begin(), triangle.end());
     if (signedArea(ring) < 0.0) std::reverse(ring.begin(), ring.end());
     raster.appendConvexSpans(ring, spans);
@@ -118,7 +116,7 @@ CellMask RemainingAreaCalculator::seenMask(const CoverageRaster& raster,
 RemainingArea RemainingAreaCalculator::fromSeen(const CoverageRaster& raster,
                                                 const PolygonWithHoles& free_area,
                                                 const CellMask& seen) const {
-  const FrustumSensor sensor = FrustumSensor::fromParameters(parameters_);
+  const FrustumSensor sensor = FrustumSensor::fromOptions(options_.sensor);
   RemainingArea result;
   result.cell_size_m = raster.cellSize();
   const CellMask free = raster.rasterize(free_area);
@@ -131,7 +129,7 @@ RemainingArea RemainingAreaCalculator::fromSeen(const CoverageRaster& raster,
   result.remaining_area_m2 = raster.area(remaining);
 
   // Opening: parts narrower than the sliver width vanish, the rest keeps its shape.
-  const double radius = 0.5 * parameters_.replanning_sliver_fraction * sensor.sweepDistance();
+  const double radius = 0.5 * options_.sliver_fraction * sensor.sweepDistance();
   CellMask opened = remaining;
   if (radius > 0.0) {
     const CellMask eroded = inverted(dilateMask(raster, inverted(remaining), radius));
@@ -140,13 +138,12 @@ RemainingArea RemainingAreaCalculator::fromSeen(const CoverageRaster& raster,
   }
   removeDiagonalPinches(raster, opened);
   for (const PolygonWithHoles& part : traceMaskContours(raster, opened)) {
-    if (area(part) < std::max(parameters_.replanning_min_area, raster.cellArea())) {
+    if (area(part) < std::max(options_.min_area, raster.cellArea())) {
       ++result.dropped_parts;
       continue;
     }
     PolygonWithHoles simplified = simplifyPolygon(
-        part,
-        std::max(parameters_.replanning_simplify_tolerance, std::sqrt(2.0) * raster.cellSize()));
+        part, std::max(options_.simplify_tolerance, std::sqrt(2.0) * raster.cellSize()));
     result.kept_area_m2 += area(simplified);
     result.parts.push_back(std::move(simplified));
   }

@@ -4,9 +4,9 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "trajectory_generation_tools/replanning/remaining_area_options.h"
 #include "trajectory_generation_tools/replanning/visited_history.h"
 
 namespace kinematic_coverage::core {
@@ -40,8 +40,9 @@ struct RemainingArea {
 /// 64 cells.
 class RemainingAreaCalculator {
  public:
-  /// Throws InvalidInputError for parameters out of range.
-  explicit RemainingAreaCalculator(const PlannerParameters& parameters);
+  /// The calculator of `options` (their ranges checked where they were made:
+  /// remainingAreaOptionsOf).
+  explicit RemainingAreaCalculator(const RemainingAreaOptions& options);
 
   /// The remaining area of a cleaned free area after `visited` (oldest first). Throws
   /// InvalidInputError for a non-finite pose.
@@ -63,7 +64,7 @@ class RemainingAreaCalculator {
   RemainingArea fromSeen(const CoverageRaster& raster, const PolygonWithHoles& free_area,
                          const CellMask& seen) const;
 
-  PlannerParameters parameters_;
+  RemainingAreaOptions options_;
 };
 
 }  // namespace kinematic_coverage::core

@@ -7,7 +7,6 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/sweeps/waypoint_path_poses.h"
-#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
 namespace kinematic_coverage::core {
@@ -21,11 +20,6 @@ constexpr double kMinCellSize = 1e-3;
 /// The concave hull's thinning grid, in seen-raster cells.
 constexpr double kThinningCells = 4.0;
 
-const PlannerParameters& validated(const PlannerParameters& parameters) {
-  ParameterValidator().validate(parameters);
-  return parameters;
-}
-
 std::int64_t floorDivide(std::int64_t value, std::int64_t divisor) {
   const std::int64_t quotient = value / divisor;
   return quotient * divisor > value ? quotient - 1 : quotient;
@@ -37,8 +31,8 @@ std::int64_t gridIndex(double coordinate, double cell_size) {
 
 }  // namespace
 
-VisitedHistory::VisitedHistory(const PlannerParameters& parameters)
-    : sensor_(FrustumSensor::fromParameters(validated(parameters))),
+VisitedHistory::VisitedHistory(const FrustumSensor& sensor)
+    : sensor_(sensor),
       cell_size_(std::max(sensor_.sweepDistance() / kCellsPerSweepSpacing, kMinCellSize)),
       thinning_cell_m_(kThinningCells * cell_size_) {}
 

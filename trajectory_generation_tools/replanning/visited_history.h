@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 
@@ -35,9 +34,8 @@ class VisitedHistory {
   /// Poses kept as they are.
   static constexpr std::size_t kRecentPoses = 4096;
 
-  /// An empty history whose footprints are the sensor's of `parameters`. Throws
-  /// InvalidInputError for parameters out of range.
-  explicit VisitedHistory(const PlannerParameters& parameters);
+  /// An empty history whose footprints are `sensor`'s.
+  explicit VisitedHistory(const FrustumSensor& sensor);
 
   /// Throws InvalidInputError, naming the pose `name`, for a non-finite coordinate or
   /// heading, or a coordinate beyond the size limit (kMaxCoordinateMagnitude).

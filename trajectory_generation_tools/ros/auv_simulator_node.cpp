@@ -8,6 +8,7 @@
 
 #include "kinematic_coverage/PlanStatus.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
 
@@ -66,7 +67,7 @@ void AuvSimulatorNode::onTrajectory(const geometry_msgs::PoseArray::ConstPtr& me
     } else {
       start.pose = poses.front();
     }
-    follower_.emplace(parameters, poses, start);
+    follower_.emplace(core::robotModelOf(parameters), poses, start);
     trajectory_stamp_ = message->header.stamp;
     trajectory_start_s_ = start.t;
     time_limit_s_ = parameters.sim_time_limit;

@@ -9,10 +9,11 @@
 #include "kinematic_coverage/PlanStatus.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/planner/replanner.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/plan_markers.h"
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
-#include "trajectory_generation_tools/replanning/replanner.h"
 
 namespace kinematic_coverage::nodes {
 namespace {
@@ -99,7 +100,7 @@ void ReplannerNode::onVisited(const geometry_msgs::PoseArray::ConstPtr& message)
       return;
     }
     const std::vector<core::Pose2> poses = checkedVisited(*message, 0, "visited pose");
-    core::VisitedHistory history(readPlannerParameters(private_node_));
+    core::VisitedHistory history(core::sensorOf(readPlannerParameters(private_node_)));
     for (const core::Pose2& pose : poses) history.add(pose);
     history_ = std::move(history);
     history_frame_ = frame;
@@ -119,7 +120,7 @@ void ReplannerNode::onPose(const geometry_msgs::PoseStamped::ConstPtr& message) 
     const core::Pose2 pose = checkedPose(message->pose, "pose");
     core::VisitedHistory::check(pose, "pose");
     if (!history_) {
-      history_.emplace(readPlannerParameters(private_node_));
+      history_.emplace(core::sensorOf(readPlannerParameters(private_node_)));
       history_frame_ = frame;
     }
     if (history_->empty()) first_visited_ = message->pose;

@@ -13,12 +13,13 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/ros/heatmap_markers.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
+#include "polygon_coverage_ros_bridge/ros/trajectory_markers.h"
+#include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
-#include "trajectory_generation_tools/ros/heatmap_markers.h"
-#include "trajectory_generation_tools/ros/trajectory_markers.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::nodes {
@@ -55,8 +56,7 @@ void SmoothTrajectoryGeneratorNode::onPolygon(
   free_area_.reset();
   try {
     const core::PolygonWithHoles raw = fromMessage(message->polygon);
-    core::PolygonValidator().validate(raw);
-    core::CleanedPolygon cleaned = core::PolygonCleaner().clean(raw);
+    core::CleanedPolygon cleaned = core::FreeAreaBuilder().build(raw).cleaned;
     for (const std::string& warning : cleaned.warnings) {
       ROS_WARN("smooth_trajectory_generator: %s", warning.c_str());
     }
@@ -107,7 +107,8 @@ void SmoothTrajectoryGeneratorNode::generate() {
     }
     const core::PlannerParameters parameters = readPlannerParameters(private_node_);
     const core::GeneratedTrajectory trajectory =
-        core::TrajectoryGenerator(parameters).generate(waypoints, *free_area_);
+        core::TrajectoryGenerator(core::trajectoryOptionsOf(parameters))
+            .generate(waypoints, *free_area_);
     std_msgs::Header header;
     header.frame_id = polygon_frame_;
     header.stamp = ros::Time::now();

@@ -1,7 +1,5 @@
 # The ROS adapter of smoothing and trajectory generation (catkin builds only).
 add_executable(smooth_trajectory_generator
-  trajectory_generation_tools/ros/heatmap_markers.cpp
-  trajectory_generation_tools/ros/trajectory_markers.cpp
   trajectory_generation_tools/ros/smooth_trajectory_generator_node.cpp
   trajectory_generation_tools/ros/smooth_trajectory_generator_main.cpp)
 target_link_libraries(smooth_trajectory_generator PRIVATE kc_ros_bridge)

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "trajectory_generation_tools/simulation/robot_model.h"
 #include "trajectory_generation_tools/simulation/tracking_error_statistics.h"
 
 namespace kinematic_coverage::core {
@@ -37,9 +37,8 @@ class RobotSimulator {
   /// Most simulation steps of a run (sim_time_limit / sim_dt), which bounds its memory.
   static constexpr std::size_t kMaxSteps = 5000000;
 
-  /// Throws InvalidInputError for parameters ParameterValidator rejects or a
-  /// sim_time_limit of more than kMaxSteps steps of sim_dt.
-  explicit RobotSimulator(const PlannerParameters& parameters);
+  /// Throws InvalidInputError for a sim_time_limit of more than kMaxSteps steps of sim_dt.
+  explicit RobotSimulator(const RobotModel& model);
 
   /// Simulates following `trajectory` (its poses in order). Throws InvalidInputError for
   /// no poses or a non-finite one, and when the robot has not reached the last pose within
@@ -47,7 +46,7 @@ class RobotSimulator {
   SimulationResult simulate(const std::vector<Pose2>& trajectory) const;
 
  private:
-  PlannerParameters parameters_;
+  RobotModel model_;
 };
 
 }  // namespace kinematic_coverage::core

@@ -4,4 +4,4 @@ kc_add_stage_library(kc_simulation
     trajectory_generation_tools/simulation/robot_simulator.cpp
     trajectory_generation_tools/simulation/tracking_error_statistics.cpp
     trajectory_generation_tools/simulation/trajectory_follower.cpp
-  DEPENDS kc_validation kc_geometry)
+  DEPENDS kc_geometry)

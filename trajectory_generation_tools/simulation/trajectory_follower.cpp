@@ -7,7 +7,6 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -21,10 +20,9 @@ bool isFinite(const Pose2& pose) {
 
 }  // namespace
 
-TrajectoryFollower::TrajectoryFollower(const PlannerParameters& parameters,
-                                       std::vector<Pose2> targets, const RobotState& start)
-    : parameters_(parameters), targets_(std::move(targets)), state_(start) {
-  ParameterValidator().validate(parameters_);
+TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets,
+                                       const RobotState& start)
+    : model_(model), targets_(std::move(targets)), state_(start) {
   if (targets_.empty()) throw InvalidInputError("trajectory follower: no poses to follow");
   heading_target_.resize(targets_.size(), false);
   for (std::size_t i = 0; i < targets_.size(); ++i) {
@@ -47,11 +45,11 @@ TrajectoryFollower::TrajectoryFollower(const PlannerParameters& parameters,
 bool TrajectoryFollower::reached(std::size_t index) const {
   const Pose2& target = targets_[index];
   if (heading_target_[index]) {
-    return std::abs(wrapAngle(target.yaw - state_.pose.yaw)) <= parameters_.yaw_tolerance;
+    return std::abs(wrapAngle(target.yaw - state_.pose.yaw)) <= model_.yaw_tolerance;
   }
   const Point2 offset = state_.pose.position() - target.position();
   const Point2 along(std::cos(target.yaw), std::sin(target.yaw));
-  return offset.norm() <= parameters_.position_tolerance || offset.dot(along) >= 0.0;
+  return offset.norm() <= model_.position_tolerance || offset.dot(along) >= 0.0;
 }
 
 void TrajectoryFollower::skipReachedTargets() {
@@ -60,7 +58,8 @@ void TrajectoryFollower::skipReachedTargets() {
 
 void TrajectoryFollower::step() {
   if (finished()) return;
-  const PlannerParameters& p = parameters_;
+  const RobotModel& p = model_;
+  const VehicleLimits& limits = model_.vehicle;
   const Pose2& target = targets_[next_target_];
   const Point2 current(p.current_x, p.current_y);
   double heading_error = 0.0;
@@ -72,14 +71,16 @@ void TrajectoryFollower::step() {
     // the water that gives it in the current.
     const Point2 to_target = target.position() - state_.pose.position();
     const Point2 over_ground =
-        std::min(p.v_max, p.position_gain * to_target.norm()) * to_target.normalized();
+        std::min(limits.v_max, p.position_gain * to_target.norm()) * to_target.normalized();
     const Point2 through_water = over_ground - current;
     heading_error = wrapAngle(std::atan2(through_water.y(), through_water.x()) - state_.pose.yaw);
-    speed_command = std::min(p.v_max, through_water.norm());
+    speed_command = std::min(limits.v_max, through_water.norm());
   }
-  const double yaw_rate = std::clamp(p.yaw_gain * heading_error, -p.yaw_rate_max, p.yaw_rate_max);
-  speed_command = std::min(speed_command, p.v_max * (1.0 - std::abs(yaw_rate) / p.yaw_rate_max));
-  const double speed_change = p.a_max * p.sim_dt;
+  const double yaw_rate =
+      std::clamp(p.yaw_gain * heading_error, -limits.yaw_rate_max, limits.yaw_rate_max);
+  speed_command =
+      std::min(speed_command, limits.v_max * (1.0 - std::abs(yaw_rate) / limits.yaw_rate_max));
+  const double speed_change = limits.a_max * p.sim_dt;
   state_.speed += std::clamp(speed_command - state_.speed, -speed_change, speed_change);
   state_.speed = std::max(state_.speed, 0.0);
   state_.pose.yaw = wrapAngle(state_.pose.yaw + yaw_rate * p.sim_dt);

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "trajectory_generation_tools/simulation/robot_model.h"
 
 namespace kinematic_coverage::core {
 
@@ -48,13 +48,11 @@ struct RobotState {
 /// so finely sampled rotations (small rotation_sampling_angle) are slow.
 class TrajectoryFollower {
  public:
-  /// Follows `targets` from `start` with the robot of `parameters` (v_max, a_max,
-  /// yaw_rate_max, yaw_gain, position_gain, position_tolerance, yaw_tolerance, current_x,
-  /// current_y, sim_dt). Targets already reached at the start are skipped. Throws
-  /// InvalidInputError for no targets, a non-finite target or start, a negative start
-  /// speed, or parameters ParameterValidator rejects.
-  TrajectoryFollower(const PlannerParameters& parameters, std::vector<Pose2> targets,
-                     const RobotState& start);
+  /// Follows `targets` from `start` with the robot `model` (its ranges checked where it
+  /// was made: robotModelOf). Targets already reached at the start are skipped. Throws
+  /// InvalidInputError for no targets, a non-finite target or start, or a negative start
+  /// speed.
+  TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets, const RobotState& start);
 
   /// Advances the robot by sim_dt; does nothing once finished().
   void step();
@@ -73,7 +71,7 @@ class TrajectoryFollower {
   bool reached(std::size_t index) const;
   void skipReachedTargets();
 
-  PlannerParameters parameters_;
+  RobotModel model_;
   std::vector<Pose2> targets_;
   /// Per target: true for a heading target (same position as the target before it).
   std::vector<bool> heading_target_;

@@ -100,90 +100,31 @@ BoundaryEdgeIndex::BoundaryEdgeIndex(const PolygonWithHoles& free_area) {
       if (!from.allFinite()) {
         throw InvalidInputError("free area: a ring vertex has a non-finite coordinate");
       }
-      if (from != to) edges_.push_back({from, to});
+      if (from == to) continue;
+      from_.push_back(from);
+      to_.push_back(to);
     }
   };
   has_hull_ = free_area.hull.size() >= 3;
   if (has_hull_) add_ring(free_area.hull);
   for (const Ring& hole : free_area.holes) add_ring(hole);
-  if (edges_.empty()) return;
-
-  Point2 low = edges_.front().from;
-  Point2 high = low;
-  for (const Edge& edge : edges_) {
-    low = low.cwiseMin(edge.from).cwiseMin(edge.to);
-    high = high.cwiseMax(edge.from).cwiseMax(edge.to);
-  }
-  const Point2 extent = (high - low).cwiseMax(Point2(1e-9, 1e-9));
-  const double target_cells = kCellsPerEdge * static_cast<double>(edges_.size());
-  const double cell = std::sqrt(extent.x() * extent.y() / target_cells);
-  columns_ = std::clamp(static_cast<int>(std::ceil(extent.x() / cell)), 1, kMaxCellsPerAxis);
-  rows_ = std::clamp(static_cast<int>(std::ceil(extent.y() / cell)), 1, kMaxCellsPerAxis);
-  origin_ = low;
-  cell_width_ = extent.x() / columns_;
-  cell_height_ = extent.y() / rows_;
-
-  // Compressed rows: count the edges per cell, then fill.
-  const std::size_t cell_count = static_cast<std::size_t>(columns_) * rows_;
-  std::vector<std::uint32_t> counts(cell_count + 1, 0);
-  std::vector<CellRange> ranges;
-  ranges.reserve(edges_.size());
-  for (const Edge& edge : edges_) {
-    ranges.push_back(cellsOf(edge.from.cwiseMin(edge.to), edge.from.cwiseMax(edge.to)));
-    const CellRange& range = ranges.back();
-    for (int y = range.y0; y <= range.y1; ++y) {
-      for (int x = range.x0; x <= range.x1; ++x)
-        ++counts[static_cast<std::size_t>(y) * columns_ + x];
-    }
-  }
-  cell_start_.assign(cell_count + 1, 0);
-  for (std::size_t i = 0; i < cell_count; ++i) cell_start_[i + 1] = cell_start_[i] + counts[i];
-  cell_edges_.resize(cell_start_.back());
-  std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::uint32_t id = 0; id < edges_.size(); ++id) {
-    const CellRange& range = ranges[id];
-    for (int y = range.y0; y <= range.y1; ++y) {
-      for (int x = range.x0; x <= range.x1; ++x) {
-        cell_edges_[fill[static_cast<std::size_t>(y) * columns_ + x]++] = id;
-      }
-    }
-  }
+  EdgeGrid::Layout layout;
+  layout.cells_per_edge = kCellsPerEdge;
+  layout.max_cells_per_axis = kMaxCellsPerAxis;
+  grid_ = EdgeGrid(from_, to_, layout);
 }
 
-BoundaryEdgeIndex::CellRange BoundaryEdgeIndex::cellsOf(const Point2& low,
-                                                        const Point2& high) const {
-  if (columns_ == 0) return {0, 0, -1, -1};
-  // Widened by the contact tolerance so that edges just outside the box still count.
-  const double margin = kContactTolerance;
-  const double x0 = (low.x() - margin - origin_.x()) / cell_width_;
-  const double x1 = (high.x() + margin - origin_.x()) / cell_width_;
-  const double y0 = (low.y() - margin - origin_.y()) / cell_height_;
-  const double y1 = (high.y() + margin - origin_.y()) / cell_height_;
-  if (!(x1 >= 0.0 && y1 >= 0.0 && x0 < columns_ && y0 < rows_)) return {0, 0, -1, -1};
-  // Clamped as doubles before the cast, so far-away boxes cannot overflow an int.
-  return {static_cast<int>(std::max(0.0, std::floor(x0))),
-          static_cast<int>(std::max(0.0, std::floor(y0))),
-          static_cast<int>(std::min(columns_ - 1.0, std::floor(x1))),
-          static_cast<int>(std::min(rows_ - 1.0, std::floor(y1)))};
-}
-
-void BoundaryEdgeIndex::collect(const CellRange& range, std::vector<std::uint32_t>* ids) const {
-  ids->clear();
-  if (range.empty()) return;
-  for (int y = range.y0; y <= range.y1; ++y) {
-    const std::size_t row_start = static_cast<std::size_t>(y) * columns_;
-    ids->insert(ids->end(), cell_edges_.begin() + cell_start_[row_start + range.x0],
-                cell_edges_.begin() + cell_start_[row_start + range.x1 + 1]);
-  }
-  std::sort(ids->begin(), ids->end());
-  ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
+void BoundaryEdgeIndex::edgesNear(const Point2& low, const Point2& high,
+                                  std::vector<int>* ids) const {
+  const Point2 margin = Point2::Constant(kContactTolerance);
+  grid_.collect(grid_.cellsOf(low - margin, high + margin), ids);
 }
 
 bool BoundaryEdgeIndex::segmentClear(const Point2& a, const Point2& b) const {
-  std::vector<std::uint32_t> ids;
-  collect(cellsOf(a.cwiseMin(b), a.cwiseMax(b)), &ids);
-  for (const std::uint32_t id : ids) {
-    if (segmentSegmentDistance(a, b, edges_[id].from, edges_[id].to) <= kContactTolerance) {
+  std::vector<int> ids;
+  edgesNear(a.cwiseMin(b), a.cwiseMax(b), &ids);
+  for (const int id : ids) {
+    if (segmentSegmentDistance(a, b, from_[id], to_[id]) <= kContactTolerance) {
       return false;
     }
   }
@@ -192,10 +133,10 @@ bool BoundaryEdgeIndex::segmentClear(const Point2& a, const Point2& b) const {
 
 bool BoundaryEdgeIndex::arcClear(const PathPrimitive& arc) const {
   const Point2 reach(arc.radius(), arc.radius());
-  std::vector<std::uint32_t> ids;
-  collect(cellsOf(arc.centre() - reach, arc.centre() + reach), &ids);
-  for (const std::uint32_t id : ids) {
-    if (arcSegmentDistance(arc, edges_[id].from, edges_[id].to) <= kContactTolerance) {
+  std::vector<int> ids;
+  edgesNear(arc.centre() - reach, arc.centre() + reach, &ids);
+  for (const int id : ids) {
+    if (arcSegmentDistance(arc, from_[id], to_[id]) <= kContactTolerance) {
       return false;
     }
   }
@@ -215,35 +156,34 @@ bool BoundaryEdgeIndex::primitiveClear(const PathPrimitive& primitive) const {
 }
 
 bool BoundaryEdgeIndex::inside(const Point2& p) const {
-  if (edges_.empty()) return true;
+  if (from_.empty()) return true;
   // Even-odd count along the axis ray that crosses the fewest grid cells; the edges it can
-  // meet are those registered in the cells of its strip.
-  const double column_at = std::floor((p.x() - origin_.x()) / cell_width_);
-  const double row_at = std::floor((p.y() - origin_.y()) / cell_height_);
+  // meet are those registered in the cells of its strip. Off the grid, p is outside every
+  // ring.
   int crossings = 0;
-  if (column_at >= 0.0 && column_at < columns_ && row_at >= 0.0 && row_at < rows_) {
-    const int column = static_cast<int>(column_at);
-    const int row = static_cast<int>(row_at);
-    const int to_right = columns_ - 1 - column;
-    const int to_top = rows_ - 1 - row;
+  if (grid_.covers(p)) {
+    const int column = grid_.column(p.x());
+    const int row = grid_.row(p.y());
+    const int to_right = grid_.columns() - 1 - column;
+    const int to_top = grid_.rows() - 1 - row;
     const int shortest = std::min({to_right, column, to_top, row});
     const bool horizontal = shortest == to_right || shortest == column;
     const bool positive = shortest == to_right || (!horizontal && shortest == to_top);
-    CellRange strip{column, row, column, row};
+    EdgeGrid::CellRange strip{column, row, column, row};
     if (horizontal) {
-      (positive ? strip.x1 : strip.x0) = positive ? columns_ - 1 : 0;
+      (positive ? strip.x1 : strip.x0) = positive ? grid_.columns() - 1 : 0;
     } else {
-      (positive ? strip.y1 : strip.y0) = positive ? rows_ - 1 : 0;
+      (positive ? strip.y1 : strip.y0) = positive ? grid_.rows() - 1 : 0;
     }
-    std::vector<std::uint32_t> ids;
-    collect(strip, &ids);
+    std::vector<int> ids;
+    grid_.collect(strip, &ids);
     // Along the ray's axis `a` with the other axis `o`: the half-open rule counts an edge
     // when its endpoints lie on different sides of the ray's line.
     const int a = horizontal ? 0 : 1;
     const int o = 1 - a;
-    for (const std::uint32_t id : ids) {
-      const Point2& e0 = edges_[id].from;
-      const Point2& e1 = edges_[id].to;
+    for (const int id : ids) {
+      const Point2& e0 = from_[id];
+      const Point2& e1 = to_[id];
       if ((e0[o] > p[o]) == (e1[o] > p[o])) continue;
       const double at = e0[a] + (p[o] - e0[o]) * (e1[a] - e0[a]) / (e1[o] - e0[o]);
       if (positive ? at > p[a] : at < p[a]) ++crossings;

@@ -1,8 +1,8 @@
 #pragma once
 
-#include <cstdint>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/geometry/edge_grid.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 
@@ -37,31 +37,17 @@ class BoundaryEdgeIndex {
   bool inside(const Point2& p) const;
 
   /// Number of indexed edges.
-  std::size_t edgeCount() const { return edges_.size(); }
+  std::size_t edgeCount() const { return from_.size(); }
 
  private:
-  struct Edge {
-    Point2 from;
-    Point2 to;
-  };
-  struct CellRange {
-    int x0, y0, x1, y1;
-    bool empty() const { return x0 > x1 || y0 > y1; }
-  };
+  /// The edges registered in the cells of the box [low, high] grown by kContactTolerance,
+  /// so that edges just outside the box still count: sorted, distinct.
+  void edgesNear(const Point2& low, const Point2& high, std::vector<int>* ids) const;
 
-  CellRange cellsOf(const Point2& low, const Point2& high) const;
-  /// Sorted, distinct ids of the edges registered in the cells of `range`.
-  void collect(const CellRange& range, std::vector<std::uint32_t>* ids) const;
-
-  std::vector<Edge> edges_;
+  std::vector<Point2> from_;  ///< edge i runs from from_[i] to to_[i]
+  std::vector<Point2> to_;
   bool has_hull_ = false;
-  Point2 origin_ = Point2::Zero();
-  double cell_width_ = 1.0;
-  double cell_height_ = 1.0;
-  int columns_ = 0;
-  int rows_ = 0;
-  std::vector<std::uint32_t> cell_start_;  ///< CSR offsets into cell_edges_, per cell
-  std::vector<std::uint32_t> cell_edges_;
+  EdgeGrid grid_;
 };
 
 }  // namespace kinematic_coverage::core

@@ -69,28 +69,28 @@ void requirePositive(const char* name, double value) {
 GlobalPathSmoother::GlobalPathSmoother(const PolygonWithHoles& free_area,
                                        const GlobalSmoothingOptions& options)
     : free_area_(free_area), index_(free_area), options_(options) {
-  requirePositive("turning_radius", options.turning_radius);
+  requirePositive("turning_radius", options.vehicle.turning_radius);
   requirePositive("min_turning_radius", options.min_turning_radius);
-  requirePositive("v_max", options.v_max);
-  requirePositive("a_max", options.a_max);
-  requirePositive("yaw_rate_max", options.yaw_rate_max);
-  if (options.min_turning_radius > options.turning_radius) {
+  requirePositive("v_max", options.vehicle.v_max);
+  requirePositive("a_max", options.vehicle.a_max);
+  requirePositive("yaw_rate_max", options.vehicle.yaw_rate_max);
+  if (options.min_turning_radius > options.vehicle.turning_radius) {
     throw InvalidInputError(
         "min_turning_radius = " + std::to_string(options.min_turning_radius) +
-        " must not exceed turning_radius = " + std::to_string(options.turning_radius));
+        " must not exceed turning_radius = " + std::to_string(options.vehicle.turning_radius));
   }
   if (!std::isfinite(options.max_turning_radius) || options.max_turning_radius < 0.0) {
     throw InvalidInputError("max_turning_radius must be a finite number >= 0, got " +
                             std::to_string(options.max_turning_radius));
   }
-  const double span = options.turning_radius - options.min_turning_radius;
+  const double span = options.vehicle.turning_radius - options.min_turning_radius;
   const int levels = span > 0.0 ? kRadiusLevels : 1;
   for (int level = 0; level < levels; ++level) {
     radii_.push_back(level + 1 == levels && levels > 1
                          ? options.min_turning_radius
-                         : options.turning_radius - span * level / std::max(1, levels - 1));
+                         : options.vehicle.turning_radius - span * level / std::max(1, levels - 1));
   }
-  if (options.max_turning_radius > options.turning_radius * (1.0 + kWiderRadiusMargin)) {
+  if (options.max_turning_radius > options.vehicle.turning_radius * (1.0 + kWiderRadiusMargin)) {
     radii_.insert(radii_.begin(), options.max_turning_radius);
   }
 }
@@ -151,7 +151,7 @@ void GlobalSmoothingProgramme::addCandidates(std::size_t i, const std::vector<do
   const double turn = std::atan2(
       std::abs(incoming.x() * outgoing.y() - incoming.y() * outgoing.x()), incoming.dot(outgoing));
   std::vector<GlobalSmoothingCandidate>& list = candidates_[i];
-  list.push_back({std::nullopt, 0.0, 0.0, 0.0, 0.0, turn / options.yaw_rate_max, {}});
+  list.push_back({std::nullopt, 0.0, 0.0, 0.0, 0.0, turn / options.vehicle.yaw_rate_max, {}});
 
   // `smoothing` replaces the corners `corner_path` turns at; it enters on leg `in_leg`.
   // Kept when its arcs are clear and it starts and ends on its legs (Alg. 1).
@@ -173,7 +173,7 @@ void GlobalSmoothingProgramme::addCandidates(std::size_t i, const std::vector<do
         return;
       }
     }
-    const double speed = std::min(options.v_max, options.yaw_rate_max * radius);
+    const double speed = options.vehicle.arcSpeed(radius);
     const double time = arcsLength(*smoothing) / speed;
     list.push_back({std::move(smoothing), radius, std::max(0.0, entry), std::max(0.0, exit), speed,
                     time, corner_path});
@@ -241,8 +241,7 @@ std::optional<double> GlobalSmoothingProgramme::legPiece(
       return std::nullopt;
     }
   }
-  const TrapezoidalVelocityProfile profile(
-      VehicleLimits{smoother_.options_.v_max, smoother_.options_.a_max});
+  const TrapezoidalVelocityProfile profile(smoother_.options_.vehicle);
   return profile.pieceTime(length - from - to, previous ? previous->speed : 0.0,
                            next ? next->speed : 0.0);
 }

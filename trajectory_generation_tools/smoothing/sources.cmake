@@ -16,5 +16,5 @@ kc_add_stage_library(kc_smoothing
     trajectory_generation_tools/smoothing/reverse_curve_smoothing.cpp
     trajectory_generation_tools/smoothing/smoothed_path_assembler.cpp
     trajectory_generation_tools/smoothing/smoothing_feasibility.cpp
-  DEPENDS kc_path kc_geometry kc_sweeps kc_coverage
+  DEPENDS kc_path kc_geometry kc_sweeps
   CGAL)

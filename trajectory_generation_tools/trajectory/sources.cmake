@@ -4,7 +4,6 @@ kc_add_stage_library(kc_trajectory
     trajectory_generation_tools/trajectory/primitive_path_metrics.cpp
     trajectory_generation_tools/trajectory/primitive_path_validation.cpp
     trajectory_generation_tools/trajectory/segment_path_builder.cpp
-    trajectory_generation_tools/trajectory/trajectory_csv_writer.cpp
     trajectory_generation_tools/trajectory/trajectory_generator.cpp
     trajectory_generation_tools/trajectory/trajectory_sampler.cpp
     trajectory_generation_tools/trajectory/trajectory_timing.cpp

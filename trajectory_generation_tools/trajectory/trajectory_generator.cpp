@@ -32,23 +32,19 @@ SmoothingStatistics segmentPathStatistics(const std::vector<PathPrimitive>& path
 
 SmoothedPath TrajectoryGenerator::smoothedPath(const std::vector<Pose2>& waypoints,
                                                const PolygonWithHoles& free_area) const {
-  const bool local_only = parameters_.smoothing_strategy == "local";
-  if (!local_only && parameters_.smoothing_strategy != "global") {
-    // coverage_safe: the global programme keeping the sharp path's coverage; Algorithm 1's
-    // result, which may lose coverage, is no alternative.
-    return GlobalPathSmoother(free_area, GlobalSmoothingOptions::fromParameters(parameters_))
-        .smooth(waypoints);
+  if (options_.strategy == SmoothingStrategy::kCoverageSafe) {
+    // The global programme keeping the sharp path's coverage; Algorithm 1's result, which
+    // may lose coverage, is no alternative.
+    return GlobalPathSmoother(free_area, options_.global).smooth(waypoints);
   }
-  SmoothedPath local = PathSmoother(free_area, parameters_.turning_radius).smooth(waypoints);
-  if (local_only) return local;
-  SmoothedPath global =
-      GlobalPathSmoother(free_area, GlobalSmoothingOptions::fromParameters(parameters_))
-          .smooth(waypoints);
-  if (parameters_.coverage_preserving) return global;
+  SmoothedPath local = PathSmoother(free_area, options_.vehicle.turning_radius).smooth(waypoints);
+  if (options_.strategy == SmoothingStrategy::kLocal) return local;
+  SmoothedPath global = GlobalPathSmoother(free_area, options_.global).smooth(waypoints);
+  if (options_.global.preserved_sensor) return global;
   // The global programme's cost is exact except where a leg piece is too short for the
   // speed change between its neighbours; the exact times settle those few cases, so that
   // the global strategy is never slower than Algorithm 1.
-  const TrajectoryTiming timing(parameters_);
+  const TrajectoryTiming timing(options_.vehicle);
   return timing.traversalTime(global.primitives) <= timing.traversalTime(local.primitives) ? global
                                                                                            : local;
 }
@@ -59,7 +55,7 @@ GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& wayp
     throw InvalidInputError("no waypoints: a trajectory needs at least one");
   }
   GeneratedTrajectory trajectory;
-  if (parameters_.smoothing) {
+  if (options_.smoothing) {
     SmoothedPath smoothed = smoothedPath(waypoints, free_area);
     trajectory.path = std::move(smoothed.primitives);
     trajectory.statistics = smoothed.statistics;
@@ -73,9 +69,11 @@ GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& wayp
     trajectory.path.push_back(PathPrimitive::rotation(
         only.position(), std::isfinite(only.yaw) ? wrapAngle(only.yaw) : 0.0, 0.0));
   }
-  TrajectorySampler(parameters_).sample(trajectory.path, trajectory.poses);
+  TrajectorySampler(options_.segment_sampling_distance, options_.arc_sampling_distance,
+                    options_.rotation_sampling_angle)
+      .sample(trajectory.path, trajectory.poses);
   trajectory.traversal_time_s =
-      TrajectoryTiming(parameters_).assignTimes(trajectory.path, trajectory.poses);
+      TrajectoryTiming(options_.vehicle).assignTimes(trajectory.path, trajectory.poses);
   trajectory.trajectory_length_m = primitivePathLength(trajectory.path);
   trajectory.max_curvature = primitivePathMaxCurvature(trajectory.path);
 

@@ -3,9 +3,9 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
+#include "trajectory_generation_tools/trajectory/trajectory_options.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
 
 namespace kinematic_coverage::core {
@@ -30,7 +30,7 @@ struct GeneratedTrajectory {
 /// sampling, and timing with v_max, a_max and yaw_rate_max.
 class TrajectoryGenerator {
  public:
-  explicit TrajectoryGenerator(const PlannerParameters& parameters) : parameters_(parameters) {}
+  explicit TrajectoryGenerator(const TrajectoryOptions& options) : options_(options) {}
 
   /// The trajectory through `waypoints` in `free_area` (the cleaned free area); waypoints
   /// all at one place (one waypoint) give one pose there with the first one's heading.
@@ -48,7 +48,7 @@ class TrajectoryGenerator {
   SmoothedPath smoothedPath(const std::vector<Pose2>& waypoints,
                             const PolygonWithHoles& free_area) const;
 
-  PlannerParameters parameters_;
+  TrajectoryOptions options_;
 };
 
 }  // namespace kinematic_coverage::core

@@ -40,10 +40,6 @@ TrajectorySampler::TrajectorySampler(double segment_sampling_distance, double ar
       rotation_sampling_angle_(
           checkedInterval(rotation_sampling_angle, "rotation_sampling_angle")) {}
 
-TrajectorySampler::TrajectorySampler(const PlannerParameters& parameters)
-    : TrajectorySampler(parameters.segment_sampling_distance, parameters.arc_sampling_distance,
-                        parameters.rotation_sampling_angle) {}
-
 std::size_t TrajectorySampler::pieces(const PathPrimitive& primitive) const {
   double ratio = 0.0;
   switch (primitive.kind()) {

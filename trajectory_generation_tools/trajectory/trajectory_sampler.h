@@ -3,7 +3,6 @@
 #include <cstddef>
 #include <vector>
 
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
 
@@ -20,9 +19,6 @@ class TrajectorySampler {
   /// InvalidInputError unless each is positive and finite.
   TrajectorySampler(double segment_sampling_distance, double arc_sampling_distance,
                     double rotation_sampling_angle);
-  /// The intervals `segment_sampling_distance`, `arc_sampling_distance` and
-  /// `rotation_sampling_angle` of `parameters`.
-  explicit TrajectorySampler(const PlannerParameters& parameters);
 
   /// The poses of `path`, t left at 0 (TrajectoryTiming dates them). Each primitive is cut
   /// into equal pieces no longer than its interval, with a pose at its exact start and end;

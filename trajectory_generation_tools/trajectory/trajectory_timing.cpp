@@ -34,9 +34,6 @@ TrajectoryTiming::TrajectoryTiming(const VehicleLimits& limits) : limits_(limits
 TrajectoryTiming::TrajectoryTiming(double v_max, double a_max, double yaw_rate_max)
     : TrajectoryTiming(VehicleLimits{v_max, a_max, yaw_rate_max}) {}
 
-TrajectoryTiming::TrajectoryTiming(const PlannerParameters& parameters)
-    : TrajectoryTiming(parameters.v_max, parameters.a_max, parameters.yaw_rate_max) {}
-
 std::vector<PrimitiveTiming> TrajectoryTiming::profile(
     const std::vector<PathPrimitive>& path) const {
   validatePrimitivePath(path);

@@ -4,7 +4,6 @@
 
 #include "polygon_coverage_ros_bridge/base/trapezoidal_velocity_profile.h"
 #include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
 
@@ -44,8 +43,6 @@ class TrajectoryTiming {
 
   /// The limits v_max, a_max and yaw_rate_max.
   TrajectoryTiming(double v_max, double a_max, double yaw_rate_max);
-  /// `v_max`, `a_max` and `yaw_rate_max` of `parameters`.
-  explicit TrajectoryTiming(const PlannerParameters& parameters);
 
   /// The timing of every primitive of `path`, in order. Throws InvalidInputError for a
   /// path validatePrimitivePath rejects.

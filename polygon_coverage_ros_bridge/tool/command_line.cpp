@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/command_line.h"
+#include "polygon_coverage_ros_bridge/tool/command_line.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "trajectory_generation_tools/ros/trajectory_markers.h"
+#include "polygon_coverage_ros_bridge/ros/trajectory_markers.h"
 
 #include <algorithm>
 #include <cmath>

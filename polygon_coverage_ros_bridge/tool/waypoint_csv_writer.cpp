@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
+#include "polygon_coverage_ros_bridge/tool/waypoint_csv_writer.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "trajectory_generation_tools/replanning/remaining_area.h"
 #include "trajectory_generation_tools/replanning/visited_history.h"
 
@@ -53,6 +53,7 @@ class Replanner {
       const std::function<RemainingArea(const PolygonWithHoles&)>& remaining_of) const;
 
   PlannerParameters parameters_;
+  RemainingAreaOptions remaining_options_;
 };
 
 }  // namespace kinematic_coverage::core

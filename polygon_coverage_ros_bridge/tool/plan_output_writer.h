@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
 

@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/plan_command.h"
+#include "polygon_coverage_ros_bridge/tool/plan_command.h"
 
 #include <chrono>
 #include <cmath>
@@ -7,14 +7,14 @@
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/command_line.h"
-#include "polygon_coverage_ros_bridge/mission/json_object.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
+#include "polygon_coverage_ros_bridge/tool/command_line.h"
+#include "polygon_coverage_ros_bridge/tool/json_object.h"
+#include "polygon_coverage_ros_bridge/tool/plan_output_writer.h"
+#include "polygon_coverage_ros_bridge/tool/trajectory_csv_writer.h"
+#include "polygon_coverage_ros_bridge/tool/waypoint_csv_writer.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
-#include "trajectory_generation_tools/trajectory/trajectory_csv_writer.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {

@@ -1,4 +1,4 @@
-#include "trajectory_generation_tools/replanning/replanner.h"
+#include "polygon_coverage_ros_bridge/planner/replanner.h"
 
 #include <chrono>
 #include <cmath>
@@ -8,9 +8,8 @@
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -52,9 +51,8 @@ Point2 replanStart(const PolygonWithHoles& free_area, const Point2& last, double
 
 }  // namespace
 
-Replanner::Replanner(const PlannerParameters& parameters) : parameters_(parameters) {
-  ParameterValidator().validate(parameters_);
-}
+Replanner::Replanner(const PlannerParameters& parameters)
+    : parameters_(parameters), remaining_options_(remainingAreaOptionsOf(parameters)) {}
 
 ReplannedMission Replanner::replan(const PolygonWithHoles& updated_polygon,
                                    const std::vector<Pose2>& visited, const Point2& goal,
@@ -62,10 +60,11 @@ ReplannedMission Replanner::replan(const PolygonWithHoles& updated_polygon,
   if (visited.empty()) {
     throw InvalidInputError("no visited poses: replanning starts from the last visited pose");
   }
-  return replanFrom(updated_polygon, visited.back(), visited.size(), goal, on_stage,
-                    [&](const PolygonWithHoles& free_area) {
-                      return RemainingAreaCalculator(parameters_).compute(free_area, visited);
-                    });
+  return replanFrom(
+      updated_polygon, visited.back(), visited.size(), goal, on_stage,
+      [&](const PolygonWithHoles& free_area) {
+        return RemainingAreaCalculator(remaining_options_).compute(free_area, visited);
+      });
 }
 
 ReplannedMission Replanner::replan(const PolygonWithHoles& updated_polygon,
@@ -74,10 +73,11 @@ ReplannedMission Replanner::replan(const PolygonWithHoles& updated_polygon,
   if (visited.empty()) {
     throw InvalidInputError("no visited poses: replanning starts from the last visited pose");
   }
-  return replanFrom(updated_polygon, visited.last(), visited.count(), goal, on_stage,
-                    [&](const PolygonWithHoles& free_area) {
-                      return RemainingAreaCalculator(parameters_).compute(free_area, visited);
-                    });
+  return replanFrom(
+      updated_polygon, visited.last(), visited.count(), goal, on_stage,
+      [&](const PolygonWithHoles& free_area) {
+        return RemainingAreaCalculator(remaining_options_).compute(free_area, visited);
+      });
 }
 
 ReplannedMission Replanner::replanFrom(
@@ -87,31 +87,30 @@ ReplannedMission Replanner::replanFrom(
   const Clock::time_point start_time = Clock::now();
   ReplannedMission result;
   std::vector<PlanningStage> stages;
-  auto stage = [&](const std::string& name, Clock::time_point since, std::string summary) {
-    stages.push_back({name, secondsSince(since), std::move(summary)});
+  auto stage_took = [&](const std::string& name, double seconds, std::string summary) {
+    stages.push_back({name, seconds, std::move(summary)});
     if (on_stage) on_stage(stages.back());
   };
+  auto stage = [&](const std::string& name, Clock::time_point since, std::string summary) {
+    stage_took(name, secondsSince(since), std::move(summary));
+  };
 
-  Clock::time_point t = Clock::now();
-  const PolygonValidator validator;
-  validator.validate(updated_polygon);
-  validator.validateEndpoint("goal", goal, updated_polygon);
   if (!std::isfinite(last.x) || !std::isfinite(last.y)) {
     throw InvalidInputError("the last visited pose has a non-finite coordinate");
   }
-  stage("validate", t,
-        "updated polygon and goal valid, " + std::to_string(visited_count) + " visited poses");
+  BuiltFreeArea built = FreeAreaBuilder().build(updated_polygon, {{"goal", goal}});
+  stage_took("validate", built.validate_s,
+             "updated polygon and goal valid, " + std::to_string(visited_count) + " visited poses");
 
-  t = Clock::now();
-  CleanedPolygon cleaned = PolygonCleaner().clean(updated_polygon);
-  result.free_area = std::move(cleaned.free_area);
-  result.warnings = std::move(cleaned.warnings);
+  Clock::time_point t = Clock::now();
+  result.free_area = std::move(built.cleaned.free_area);
+  result.warnings = std::move(built.cleaned.warnings);
   result.start = replanStart(result.free_area, last.position(), parameters_.wall_distance);
   {
     std::ostringstream summary;
     summary << "free area " << area(result.free_area) << " m^2, " << result.free_area.holes.size()
             << " holes, start " << formatPoint(result.start);
-    stage("clean", t, summary.str());
+    stage_took("clean", built.clean_s + secondsSince(t), summary.str());
   }
 
   t = Clock::now();

@@ -1,12 +1,12 @@
-#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
 
 #include <cmath>
 #include <string>
 #include <tuple>
-#include <vector>
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_choices.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -25,21 +25,11 @@ void requireOpenAngle(const char* name, double value) {
   }
 }
 
-void requireOneOf(const char* name, const std::string& value,
-                  const std::vector<std::string>& allowed) {
-  std::string list;
-  for (const std::string& candidate : allowed) {
-    if (value == candidate) return;
-    list += (list.empty() ? "" : ", ") + candidate;
-  }
-  throw InvalidInputError(std::string(name) + " = '" + value + "' is not one of: " + list);
-}
-
 }  // namespace
 
 void ParameterValidator::validate(const PlannerParameters& p) const {
-  requireOneOf("decomposition_type", p.decomposition_type, {"boustrophedon", "trapezoidal"});
-  requireOneOf("cost_function", p.cost_function, {"distance", "time", "waypoints"});
+  choiceOf("decomposition_type", p.decomposition_type, kDecompositionTypes);
+  choiceOf("cost_function", p.cost_function, kCostFunctions);
   requirePositive("v_max", p.v_max, "m/s");
   requirePositive("a_max", p.a_max, "m/s^2");
   requirePositive("yaw_rate_max", p.yaw_rate_max, "rad/s");
@@ -47,7 +37,7 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
     throw InvalidInputError("wall_distance = " + formatNumber(p.wall_distance) +
                             " is out of range: it must be a finite number >= 0 (m)");
   }
-  requireOneOf("sensor_model", p.sensor_model, {"frustum", "line"});
+  choiceOf("sensor_model", p.sensor_model, kSensorModels);
   requireOpenAngle("lateral_fov", p.lateral_fov);
   requireOpenAngle("onward_fov", p.onward_fov);
   requirePositive("lateral_footprint", p.lateral_footprint, "m");
@@ -57,8 +47,8 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
                             " is out of range: it must be in [0, 1)");
   }
   requirePositive("turning_radius", p.turning_radius, "m");
-  requireOneOf("offset_parts", p.offset_parts, {"all", "largest"});
-  requireOneOf("smoothing_strategy", p.smoothing_strategy, {"coverage_safe", "global", "local"});
+  choiceOf("offset_parts", p.offset_parts, kOffsetParts);
+  choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies);
   if (!(std::isfinite(p.min_turning_radius) && p.min_turning_radius >= 0.0 &&
         p.min_turning_radius <= p.turning_radius)) {
     throw InvalidInputError(
@@ -76,8 +66,7 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   requirePositive("segment_sampling_distance", p.segment_sampling_distance, "m");
   requirePositive("arc_sampling_distance", p.arc_sampling_distance, "m");
   requirePositive("rotation_sampling_angle", p.rotation_sampling_angle, "rad");
-  requireOneOf("replanning_method", p.replanning_method,
-               {"convex_hull", "concave_hull", "footprint"});
+  choiceOf("replanning_method", p.replanning_method, kReplanningMethods);
   if (!(std::isfinite(p.replanning_sliver_fraction) && p.replanning_sliver_fraction >= 0.0 &&
         p.replanning_sliver_fraction < 1.0)) {
     throw InvalidInputError(

@@ -1,9 +1,10 @@
-#include "trajectory_generation_tools/replanning/replanner.h"
+#include "polygon_coverage_ros_bridge/planner/replanner.h"
 
 #include <gtest/gtest.h>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "test/replanning/drift_scenario.h"
 
@@ -28,7 +29,8 @@ TEST(Replanner, LakeDriftScenarioCoversTheUpdatedReachableArea) {
   }
 
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(parameters).generate(replanned.plan.waypoints, replanned.free_area);
+      TrajectoryGenerator(trajectoryOptionsOf(parameters))
+          .generate(replanned.plan.waypoints, replanned.free_area);
   ASSERT_FALSE(trajectory.poses.empty());
   EXPECT_LT((trajectory.poses.front().position() - last).norm(), 1e-9);
   EXPECT_GT(trajectory.min_obstacle_clearance_m, 0.0);
@@ -60,7 +62,8 @@ TEST(Replanner, CoverageRepairRepairsTheReplannedPath) {
     EXPECT_EQ(repaired, repair);
     parameters.smoothing = false;
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(parameters).generate(replanned.plan.waypoints, replanned.free_area);
+        TrajectoryGenerator(trajectoryOptionsOf(parameters))
+            .generate(replanned.plan.waypoints, replanned.free_area);
     combined[repair ? 1 : 0] = testing::combinedReachableCoverage(
         replanned.free_area, parameters, scenario.visited, trajectory.poses);
   }

@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/json_object.h"
+#include "polygon_coverage_ros_bridge/tool/json_object.h"
 
 #include <cmath>
 #include <cstdio>

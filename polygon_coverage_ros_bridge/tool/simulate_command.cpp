@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/simulate_command.h"
+#include "polygon_coverage_ros_bridge/tool/simulate_command.h"
 
 #include <chrono>
 #include <filesystem>
@@ -9,12 +9,14 @@
 #include "polygon_coverage_ros_bridge/base/text_file_writer.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/mission/command_line.h"
-#include "polygon_coverage_ros_bridge/mission/json_object.h"
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/tool/command_line.h"
+#include "polygon_coverage_ros_bridge/tool/coverage_metrics.h"
+#include "polygon_coverage_ros_bridge/tool/json_object.h"
+#include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 
@@ -126,8 +128,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   // The free area and offset free area as `plan` makes them, for the
   // coverage of the actual poses.
   stage_start = std::chrono::steady_clock::now();
-  PolygonValidator().validate(mission.polygon);
-  const CleanedPolygon cleaned = PolygonCleaner().clean(mission.polygon);
+  const CleanedPolygon cleaned = FreeAreaBuilder().build(mission.polygon).cleaned;
   const OffsetFreeArea offset =
       computeOffsetFreeArea(cleaned.free_area, mission.parameters.wall_distance);
   out << "area: free area " << area(cleaned.free_area) << " m^2, offset free area "
@@ -135,7 +136,8 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
       << std::endl;
 
   stage_start = std::chrono::steady_clock::now();
-  const SimulationResult simulation = RobotSimulator(mission.parameters).simulate(desired);
+  const SimulationResult simulation =
+      RobotSimulator(robotModelOf(mission.parameters)).simulate(desired);
   const TrackingErrorStatistics& tracking = simulation.tracking;
   out << "simulate: reached the last of " << desired.size() << " poses after "
       << simulation.traversal_time_s << " s in " << simulation.steps.size() - 1

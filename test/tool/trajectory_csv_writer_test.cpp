@@ -1,4 +1,4 @@
-#include "trajectory_generation_tools/trajectory/trajectory_csv_writer.h"
+#include "polygon_coverage_ros_bridge/tool/trajectory_csv_writer.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/evaluate_command.h"
+#include "polygon_coverage_ros_bridge/tool/evaluate_command.h"
 
 #include <chrono>
 #include <filesystem>
@@ -8,12 +8,13 @@
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/mission/command_line.h"
-#include "polygon_coverage_ros_bridge/mission/json_object.h"
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/tool/command_line.h"
+#include "polygon_coverage_ros_bridge/tool/coverage_metrics.h"
+#include "polygon_coverage_ros_bridge/tool/json_object.h"
+#include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
-#include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
 
 namespace kinematic_coverage::core {
@@ -60,16 +61,12 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
 
   // The free area and offset free area as `plan` makes them.
   const auto evaluation_start = std::chrono::steady_clock::now();
-  stage_start = evaluation_start;
-  PolygonValidator().validate(mission.polygon);
-  out << "validate: polygon valid (" << formatSeconds(secondsSince(stage_start)) << ")"
-      << std::endl;
-
-  stage_start = std::chrono::steady_clock::now();
-  const CleanedPolygon cleaned = PolygonCleaner().clean(mission.polygon);
+  const BuiltFreeArea built = FreeAreaBuilder().build(mission.polygon);
+  const CleanedPolygon& cleaned = built.cleaned;
+  out << "validate: polygon valid (" << formatSeconds(built.validate_s) << ")" << std::endl;
   out << "clean: free area " << area(cleaned.free_area) << " m^2, "
       << cleaned.free_area.holes.size() << " holes, " << cleaned.warnings.size()
-      << " cleaning steps (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
+      << " cleaning steps (" << formatSeconds(built.clean_s) << ")" << std::endl;
 
   stage_start = std::chrono::steady_clock::now();
   const OffsetFreeArea offset =

@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
+#include "polygon_coverage_ros_bridge/tool/plan_output_writer.h"
 
 #include <chrono>
 #include <cmath>
@@ -11,12 +11,14 @@
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/command_line.h"
-#include "polygon_coverage_ros_bridge/mission/json_object.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/mission/waypoint_csv_writer.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/tool/command_line.h"
+#include "polygon_coverage_ros_bridge/tool/coverage_metrics.h"
+#include "polygon_coverage_ros_bridge/tool/json_object.h"
+#include "polygon_coverage_ros_bridge/tool/trajectory_csv_writer.h"
+#include "polygon_coverage_ros_bridge/tool/waypoint_csv_writer.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
-#include "trajectory_generation_tools/trajectory/trajectory_csv_writer.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {
@@ -30,8 +32,8 @@ GeneratedTrajectory generateTrajectory(const PlanOutputRequest& request, std::os
   const auto stage_start = std::chrono::steady_clock::now();
   GeneratedTrajectory trajectory;
   try {
-    trajectory =
-        TrajectoryGenerator(parameters).generate(request.plan->waypoints, *request.free_area);
+    trajectory = TrajectoryGenerator(trajectoryOptionsOf(parameters))
+                     .generate(request.plan->waypoints, *request.free_area);
   } catch (const SizeLimitError&) {
     throw;
   } catch (const InvalidInputError& error) {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "polygon_coverage_ros_bridge/planner/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
 
 namespace kinematic_coverage::core {
 

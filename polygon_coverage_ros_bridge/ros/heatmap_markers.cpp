@@ -1,5 +1,6 @@
-#include "trajectory_generation_tools/ros/heatmap_markers.h"
+#include "polygon_coverage_ros_bridge/ros/heatmap_markers.h"
 
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/coverage_raster.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
@@ -15,7 +16,7 @@ visualization_msgs::Marker heatmapMarker(const core::PolygonWithHoles& free_area
   resolution.max_cells = max_cells;
   const core::CoverageRaster raster = core::CoverageRaster::covering(free_area, resolution);
   core::SeenArea seen(raster);
-  seen.addTrajectory(poses, core::FrustumSensor::fromParameters(parameters));
+  seen.addTrajectory(poses, core::sensorOf(parameters));
   const core::CellMask free = raster.rasterize(free_area);
 
   visualization_msgs::Marker marker;

@@ -1,15 +1,15 @@
-#include "polygon_coverage_ros_bridge/mission/replan_command.h"
+#include "polygon_coverage_ros_bridge/tool/replan_command.h"
 
 #include <filesystem>
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/base/text_file_writer.h"
-#include "polygon_coverage_ros_bridge/mission/command_line.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/mission/plan_output_writer.h"
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
-#include "trajectory_generation_tools/replanning/replanner.h"
+#include "polygon_coverage_ros_bridge/planner/replanner.h"
+#include "polygon_coverage_ros_bridge/tool/command_line.h"
+#include "polygon_coverage_ros_bridge/tool/plan_output_writer.h"
 
 namespace kinematic_coverage::core {
 namespace {

@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/validation/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,109 @@
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+
+#include <algorithm>
+
+#include "polygon_coverage_ros_bridge/parameters/parameter_choices.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+const PlannerParameters& validated(const PlannerParameters& parameters) {
+  ParameterValidator().validate(parameters);
+  return parameters;
+}
+
+}  // namespace
+
+VehicleLimits vehicleLimitsOf(const PlannerParameters& parameters) {
+  const PlannerParameters& p = validated(parameters);
+  return VehicleLimits{p.v_max, p.a_max, p.yaw_rate_max, p.turning_radius};
+}
+
+SensorOptions sensorOptionsOf(const PlannerParameters& parameters) {
+  const PlannerParameters& p = validated(parameters);
+  SensorOptions options;
+  options.model = choiceOf("sensor_model", p.sensor_model, kSensorModels);
+  options.lateral_fov = p.lateral_fov;
+  options.onward_fov = p.onward_fov;
+  options.lateral_footprint = p.lateral_footprint;
+  options.sensor_distance = p.sensor_distance;
+  options.lateral_overlap = p.lateral_overlap;
+  return options;
+}
+
+FrustumSensor sensorOf(const PlannerParameters& parameters) {
+  return FrustumSensor::fromOptions(sensorOptionsOf(parameters));
+}
+
+DecompositionType decompositionTypeOf(const PlannerParameters& parameters) {
+  return choiceOf("decomposition_type", validated(parameters).decomposition_type,
+                  kDecompositionTypes);
+}
+
+OffsetParts offsetPartsOf(const PlannerParameters& parameters) {
+  return choiceOf("offset_parts", validated(parameters).offset_parts, kOffsetParts);
+}
+
+SegmentCost segmentCostOf(const PlannerParameters& parameters) {
+  return SegmentCost(choiceOf("cost_function", validated(parameters).cost_function, kCostFunctions),
+                     vehicleLimitsOf(parameters));
+}
+
+GlobalSmoothingOptions globalSmoothingOptionsOf(const PlannerParameters& parameters) {
+  const PlannerParameters& p = validated(parameters);
+  GlobalSmoothingOptions options;
+  options.vehicle = vehicleLimitsOf(p);
+  options.min_turning_radius = p.min_turning_radius > 0.0 ? p.min_turning_radius : p.turning_radius;
+  if (p.coverage_preserving) options.preserved_sensor = sensorOf(p);
+  if (choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies) ==
+      SmoothingStrategy::kCoverageSafe) {
+    options.makeCoverageSafe(sensorOf(p), p.wall_distance);
+    options.max_turning_radius = p.max_turning_radius > 0.0
+                                     ? p.max_turning_radius
+                                     : std::max(p.turning_radius, p.v_max / p.yaw_rate_max);
+  }
+  return options;
+}
+
+TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters) {
+  const PlannerParameters& p = validated(parameters);
+  TrajectoryOptions options;
+  options.vehicle = vehicleLimitsOf(p);
+  options.smoothing = p.smoothing;
+  options.strategy = choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies);
+  options.global = globalSmoothingOptionsOf(p);
+  options.segment_sampling_distance = p.segment_sampling_distance;
+  options.arc_sampling_distance = p.arc_sampling_distance;
+  options.rotation_sampling_angle = p.rotation_sampling_angle;
+  return options;
+}
+
+RobotModel robotModelOf(const PlannerParameters& parameters) {
+  const PlannerParameters& p = validated(parameters);
+  RobotModel model;
+  model.vehicle = vehicleLimitsOf(p);
+  model.yaw_gain = p.yaw_gain;
+  model.position_gain = p.position_gain;
+  model.position_tolerance = p.position_tolerance;
+  model.yaw_tolerance = p.yaw_tolerance;
+  model.current_x = p.current_x;
+  model.current_y = p.current_y;
+  model.sim_dt = p.sim_dt;
+  model.sim_time_limit = p.sim_time_limit;
+  return model;
+}
+
+RemainingAreaOptions remainingAreaOptionsOf(const PlannerParameters& parameters) {
+  const PlannerParameters& p = validated(parameters);
+  RemainingAreaOptions options;
+  options.method = choiceOf("replanning_method", p.replanning_method, kReplanningMethods);
+  options.sensor = sensorOptionsOf(p);
+  options.sliver_fraction = p.replanning_sliver_fraction;
+  options.min_area = p.replanning_min_area;
+  options.simplify_tolerance = p.replanning_simplify_tolerance;
+  options.alpha = p.alpha;
+  return options;
+}
+
+}  // namespace kinematic_coverage::core

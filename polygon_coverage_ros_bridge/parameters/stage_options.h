@@ -1,0 +1,60 @@
+#pragma once
+
+#include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
+#include "polygon_coverage_ros_bridge/decomposition/sweep_line_decomposition.h"
+#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
+#include "polygon_coverage_ros_bridge/route/segment_cost.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "polygon_coverage_ros_bridge/sweeps/sensor_options.h"
+#include "trajectory_generation_tools/replanning/remaining_area_options.h"
+#include "trajectory_generation_tools/simulation/robot_model.h"
+#include "trajectory_generation_tools/smoothing/global_smoothing_options.h"
+#include "trajectory_generation_tools/trajectory/trajectory_options.h"
+
+namespace kinematic_coverage::core {
+
+// The one place where the flat parameter set of mission files, `--set`, config/*.yaml and
+// the nodes' private parameters (PlannerParameters) becomes the options each stage reads.
+// Every function first checks the whole set (ParameterValidator), so a stage is only
+// ever handed options in range; each throws InvalidInputError naming the first parameter
+// out of range.
+
+/// v_max, a_max, yaw_rate_max and turning_radius.
+VehicleLimits vehicleLimitsOf(const PlannerParameters& parameters);
+
+/// sensor_model, lateral_fov, onward_fov, lateral_footprint, sensor_distance and
+/// lateral_overlap.
+SensorOptions sensorOptionsOf(const PlannerParameters& parameters);
+
+/// The sensor of sensorOptionsOf.
+FrustumSensor sensorOf(const PlannerParameters& parameters);
+
+/// decomposition_type.
+DecompositionType decompositionTypeOf(const PlannerParameters& parameters);
+
+/// offset_parts.
+OffsetParts offsetPartsOf(const PlannerParameters& parameters);
+
+/// The planner's segment cost: cost_function under the vehicle limits.
+SegmentCost segmentCostOf(const PlannerParameters& parameters);
+
+/// The global and coverage-safe strategies' options: `min_turning_radius` 0 means equal
+/// to `turning_radius`; `coverage_preserving` sets the preserved sensor, the strategy
+/// `coverage_safe` the safe sensor, bulb turns and the largest radius
+/// (`max_turning_radius`, 0: the radius of an arc at v_max if that is wider).
+GlobalSmoothingOptions globalSmoothingOptionsOf(const PlannerParameters& parameters);
+
+/// smoothing, smoothing_strategy (with globalSmoothingOptionsOf), the sampling intervals
+/// and the vehicle limits.
+TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters);
+
+/// The simulated robot: the vehicle limits, the controllers' gains and tolerances, the
+/// current, sim_dt and sim_time_limit.
+RobotModel robotModelOf(const PlannerParameters& parameters);
+
+/// replanning_method, the remaining area's clean-up (replanning_sliver_fraction,
+/// replanning_min_area, replanning_simplify_tolerance), alpha, and the sensor.
+RemainingAreaOptions remainingAreaOptionsOf(const PlannerParameters& parameters);
+
+}  // namespace kinematic_coverage::core

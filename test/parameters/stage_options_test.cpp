@@ -1,0 +1,164 @@
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_choices.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// Every mapping, so that each can be asked to reject the same parameter set.
+std::vector<std::function<void(const PlannerParameters&)>> everyMapping() {
+  return {[](const PlannerParameters& p) { vehicleLimitsOf(p); },
+          [](const PlannerParameters& p) { sensorOptionsOf(p); },
+          [](const PlannerParameters& p) { sensorOf(p); },
+          [](const PlannerParameters& p) { decompositionTypeOf(p); },
+          [](const PlannerParameters& p) { offsetPartsOf(p); },
+          [](const PlannerParameters& p) { segmentCostOf(p); },
+          [](const PlannerParameters& p) { globalSmoothingOptionsOf(p); },
+          [](const PlannerParameters& p) { trajectoryOptionsOf(p); },
+          [](const PlannerParameters& p) { robotModelOf(p); },
+          [](const PlannerParameters& p) { remainingAreaOptionsOf(p); }};
+}
+
+TEST(StageOptions, TheDefaultsMapToTheDocumentedStageOptions) {
+  const PlannerParameters p;
+  const VehicleLimits vehicle = vehicleLimitsOf(p);
+  EXPECT_EQ(vehicle.v_max, p.v_max);
+  EXPECT_EQ(vehicle.a_max, p.a_max);
+  EXPECT_EQ(vehicle.yaw_rate_max, p.yaw_rate_max);
+  EXPECT_EQ(vehicle.turning_radius, p.turning_radius);
+  EXPECT_EQ(decompositionTypeOf(p), DecompositionType::kBoustrophedon);
+  EXPECT_EQ(offsetPartsOf(p), OffsetParts::kAll);
+  EXPECT_EQ(sensorOptionsOf(p).model, SensorModel::kFrustum);
+  // The frustum's footprint: W = 2 d tan(lateral_fov / 2), L = 2 d tan(onward_fov / 2).
+  const FrustumSensor sensor = sensorOf(p);
+  EXPECT_DOUBLE_EQ(sensor.width(), 2.0 * p.sensor_distance * std::tan(0.5 * p.lateral_fov));
+  EXPECT_DOUBLE_EQ(sensor.length(), 2.0 * p.sensor_distance * std::tan(0.5 * p.onward_fov));
+  EXPECT_DOUBLE_EQ(sensor.sweepDistance(), (1.0 - p.lateral_overlap) * sensor.width());
+  // cost_function time: rest to rest, L / v + v / a on a segment long enough to cruise.
+  EXPECT_DOUBLE_EQ(segmentCostOf(p).ofLength(10.0), 10.0 / p.v_max + p.v_max / p.a_max);
+
+  const TrajectoryOptions trajectory = trajectoryOptionsOf(p);
+  EXPECT_TRUE(trajectory.smoothing);
+  EXPECT_EQ(trajectory.strategy, SmoothingStrategy::kCoverageSafe);
+  EXPECT_EQ(trajectory.segment_sampling_distance, p.segment_sampling_distance);
+  EXPECT_EQ(trajectory.arc_sampling_distance, p.arc_sampling_distance);
+  EXPECT_EQ(trajectory.rotation_sampling_angle, p.rotation_sampling_angle);
+  // Coverage-safe: the safe sensor, bulb turns, and the radius of an arc at v_max.
+  EXPECT_TRUE(trajectory.global.safe_sensor.has_value());
+  EXPECT_FALSE(trajectory.global.preserved_sensor.has_value());
+  EXPECT_TRUE(trajectory.global.bulb_turns);
+  EXPECT_EQ(trajectory.global.wall_distance, p.wall_distance);
+  EXPECT_EQ(trajectory.global.min_turning_radius, p.turning_radius);
+  EXPECT_EQ(trajectory.global.max_turning_radius,
+            std::max(p.turning_radius, p.v_max / p.yaw_rate_max));
+
+  const RobotModel robot = robotModelOf(p);
+  EXPECT_EQ(robot.vehicle.v_max, p.v_max);
+  EXPECT_EQ(robot.yaw_gain, p.yaw_gain);
+  EXPECT_EQ(robot.position_gain, p.position_gain);
+  EXPECT_EQ(robot.position_tolerance, p.position_tolerance);
+  EXPECT_EQ(robot.yaw_tolerance, p.yaw_tolerance);
+  EXPECT_EQ(robot.sim_dt, p.sim_dt);
+  EXPECT_EQ(robot.sim_time_limit, p.sim_time_limit);
+
+  const RemainingAreaOptions remaining = remainingAreaOptionsOf(p);
+  EXPECT_EQ(remaining.method, ReplanningMethod::kFootprint);
+  EXPECT_EQ(remaining.sliver_fraction, p.replanning_sliver_fraction);
+  EXPECT_EQ(remaining.min_area, p.replanning_min_area);
+  EXPECT_EQ(remaining.simplify_tolerance, p.replanning_simplify_tolerance);
+  EXPECT_EQ(remaining.alpha, p.alpha);
+}
+
+TEST(StageOptions, EveryNameMapsToItsOwnOption) {
+  PlannerParameters p;
+  for (const auto& [name, type] : kDecompositionTypes) {
+    p.decomposition_type = name;
+    EXPECT_EQ(decompositionTypeOf(p), type) << name;
+  }
+  for (const auto& [name, parts] : kOffsetParts) {
+    p.offset_parts = name;
+    EXPECT_EQ(offsetPartsOf(p), parts) << name;
+  }
+  for (const auto& [name, model] : kSensorModels) {
+    p.sensor_model = name;
+    EXPECT_EQ(sensorOptionsOf(p).model, model) << name;
+  }
+  for (const auto& [name, strategy] : kSmoothingStrategies) {
+    p.smoothing_strategy = name;
+    EXPECT_EQ(trajectoryOptionsOf(p).strategy, strategy) << name;
+  }
+  for (const auto& [name, method] : kReplanningMethods) {
+    p.replanning_method = name;
+    EXPECT_EQ(remainingAreaOptionsOf(p).method, method) << name;
+  }
+  // The three cost functions differ on a 10 m segment: 10 m, 22.5 s, one segment.
+  p = PlannerParameters();
+  std::vector<double> costs;
+  for (const auto& [name, function] : kCostFunctions) {
+    p.cost_function = name;
+    costs.push_back(segmentCostOf(p).ofLength(10.0));
+  }
+  EXPECT_EQ(costs, (std::vector<double>{10.0, 10.0 / p.v_max + p.v_max / p.a_max, 1.0}));
+}
+
+TEST(StageOptions, TheLineSensorAndTheOtherStrategiesMapAsDocumented) {
+  PlannerParameters p;
+  p.sensor_model = "line";
+  p.lateral_footprint = 3.0;
+  EXPECT_EQ(sensorOf(p).width(), 3.0);
+  EXPECT_EQ(sensorOf(p).length(), 0.0);
+
+  p = PlannerParameters();
+  p.smoothing_strategy = "global";
+  p.min_turning_radius = 0.5;
+  p.coverage_preserving = true;
+  const GlobalSmoothingOptions global = globalSmoothingOptionsOf(p);
+  EXPECT_EQ(global.min_turning_radius, 0.5);
+  EXPECT_TRUE(global.preserved_sensor.has_value());
+  EXPECT_FALSE(global.safe_sensor.has_value());
+  EXPECT_FALSE(global.bulb_turns);
+
+  p = PlannerParameters();
+  p.max_turning_radius = 3.0;
+  EXPECT_EQ(globalSmoothingOptionsOf(p).max_turning_radius, 3.0);
+}
+
+TEST(StageOptions, EveryMappingRejectsAParameterSetOutOfRange) {
+  std::vector<std::function<void(PlannerParameters&)>> changes = {
+      [](PlannerParameters& p) { p.v_max = -1.0; },
+      [](PlannerParameters& p) { p.lateral_overlap = 1.0; },
+      [](PlannerParameters& p) { p.sensor_model = "sonar"; },
+      [](PlannerParameters& p) { p.replanning_method = "guess"; },
+      [](PlannerParameters& p) { p.sim_dt = std::nan(""); }};
+  for (std::size_t change = 0; change < changes.size(); ++change) {
+    PlannerParameters p;
+    changes[change](p);
+    for (std::size_t mapping = 0; mapping < everyMapping().size(); ++mapping) {
+      EXPECT_THROW(everyMapping()[mapping](p), InvalidInputError)
+          << "change " << change << ", mapping " << mapping;
+    }
+  }
+}
+
+TEST(StageOptions, AnUnknownNameIsRejectedWithTheNamesAllowed) {
+  PlannerParameters p;
+  p.smoothing_strategy = "spline";
+  try {
+    trajectoryOptionsOf(p);
+    FAIL() << "no error";
+  } catch (const InvalidInputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "smoothing_strategy = 'spline' is not one of: coverage_safe, global, local");
+  }
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core

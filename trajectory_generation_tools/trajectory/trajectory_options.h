@@ -1,0 +1,24 @@
+#pragma once
+
+#include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
+#include "trajectory_generation_tools/smoothing/global_smoothing_options.h"
+#include "trajectory_generation_tools/smoothing/smoothing_strategy.h"
+
+namespace kinematic_coverage::core {
+
+/// The options trajectory generation reads (docs/REFERENCE.md, Parameters): how the
+/// waypoint path is smoothed, how densely the trajectory is sampled, and the robot whose
+/// velocity model dates it.
+struct TrajectoryOptions {
+  VehicleLimits vehicle;  ///< the velocity model; turning_radius is Algorithm 1's radius
+  bool smoothing = true;  ///< false: segments and in-place rotations
+  SmoothingStrategy strategy = SmoothingStrategy::kCoverageSafe;
+  /// The global and coverage-safe strategies' options (preserved_sensor set: the global
+  /// strategy smooths only where nothing goes unseen, `coverage_preserving`).
+  GlobalSmoothingOptions global;
+  double segment_sampling_distance = 0.5;  ///< m
+  double arc_sampling_distance = 0.1;      ///< m
+  double rotation_sampling_angle = 0.2;    ///< rad
+};
+
+}  // namespace kinematic_coverage::core
