@@ -17,6 +17,13 @@ kc_add_benchmark_smoke(coverage_benchmark --runs 1)
 kc_add_benchmark_smoke(hard_map_writer --out ${CMAKE_BINARY_DIR}/hard_maps --seeds 0:1)
 kc_add_benchmark_smoke(gtsp_benchmark --seeds 1 --instances 11eil51,4br17,20kroA100)
 kc_add_benchmark_smoke(planner_peer_benchmark --runs 1)
+kc_add_benchmark_smoke(scaling_benchmark --sizes 500:10)
+# The time cost of the first shorelines, the lakes, the shipped missions and the peer's
+# polygons against the values recorded before the shoreline-scaling work (at most 1.005
+# times each).
+add_test(NAME planner_reference_check COMMAND planner_reference --runs 1 --shorelines 3
+  --compare ${PROJECT_SOURCE_DIR}/bench/data/planner_reference.csv)
+set_tests_properties(planner_reference_check PROPERTIES TIMEOUT 600)
 kc_add_benchmark_smoke(large_hull_benchmark 300)
 kc_add_benchmark_smoke(memory_bound_benchmark --holes 3 --vertices 200)
 kc_add_benchmark_smoke(replanning_benchmark --runs 1)

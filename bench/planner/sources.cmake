@@ -13,3 +13,17 @@ target_link_libraries(memory_bound_benchmark PRIVATE kc_mission kc_planner kc_tr
 add_executable(repair_benchmark bench/planner/repair_benchmark.cpp
   test/support/hard_map_generator.cpp)
 target_link_libraries(repair_benchmark PRIVATE kc_mission kc_planner kc_coverage)
+
+# The time cost and planning time of the maps that plan before the shoreline-scaling work,
+# recorded in bench/data/planner_reference.csv.
+add_executable(planner_reference bench/planner/planner_reference.cpp
+  test/support/hard_map_generator.cpp test/support/lake_map_generator.cpp)
+target_link_libraries(planner_reference PRIVATE kc_mission kc_planner)
+target_compile_definitions(planner_reference PRIVATE KC_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+
+# Planning time and peak memory against the size of a lake chart (coverage_tool plan in a
+# child process per map).
+add_executable(scaling_benchmark bench/planner/scaling_benchmark.cpp
+  test/support/hard_map_generator.cpp)
+target_link_libraries(scaling_benchmark PRIVATE kc_validation kc_geometry)
+add_dependencies(scaling_benchmark coverage_tool)

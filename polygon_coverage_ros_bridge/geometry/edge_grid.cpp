@@ -56,16 +56,6 @@ EdgeGrid::EdgeGrid(const std::vector<Point2>& starts, const std::vector<Point2>&
   }
 }
 
-int EdgeGrid::column(double x) const {
-  const double c = (x - origin_.x()) * inverse_cell_width_;
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(columns_) - 0.5));
-}
-
-int EdgeGrid::row(double y) const {
-  const double r = (y - origin_.y()) * inverse_cell_height_;
-  return static_cast<int>(std::clamp(r, 0.0, static_cast<double>(rows_) - 0.5));
-}
-
 bool EdgeGrid::covers(const Point2& p) const {
   return columns_ > 0 && p.x() >= origin_.x() && p.y() >= origin_.y() &&
          p.x() <= origin_.x() + size_.x() && p.y() <= origin_.y() + size_.y();
@@ -78,14 +68,6 @@ EdgeGrid::CellRange EdgeGrid::cellsOf(const Point2& low, const Point2& high) con
     return {0, 0, -1, -1};
   }
   return {column(low.x()), row(low.y()), column(high.x()), row(high.y())};
-}
-
-const int* EdgeGrid::cellBegin(int column, int row) const {
-  return cell_edges_.data() + cell_begin_[static_cast<std::size_t>(row) * columns_ + column];
-}
-
-const int* EdgeGrid::cellEnd(int column, int row) const {
-  return cell_edges_.data() + cell_begin_[static_cast<std::size_t>(row) * columns_ + column + 1];
 }
 
 void EdgeGrid::collect(const CellRange& range, std::vector<int>* ids) const {

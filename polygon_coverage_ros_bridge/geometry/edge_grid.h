@@ -37,9 +37,16 @@ class EdgeGrid {
   EdgeGrid(const std::vector<Point2>& starts, const std::vector<Point2>& ends,
            const Layout& layout);
 
-  /// The column of x and the row of y, clamped into the grid.
-  int column(double x) const;
-  int row(double y) const;
+  /// The column of x and the row of y, clamped into the grid (inline: the router's and
+  /// the smoother's innermost loops call them).
+  int column(double x) const {
+    const double c = (x - origin_.x()) * inverse_cell_width_;
+    return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(columns_) - 0.5));
+  }
+  int row(double y) const {
+    const double r = (y - origin_.y()) * inverse_cell_height_;
+    return static_cast<int>(std::clamp(r, 0.0, static_cast<double>(rows_) - 0.5));
+  }
   int columns() const { return columns_; }
   int rows() const { return rows_; }
 
@@ -50,8 +57,12 @@ class EdgeGrid {
   CellRange cellsOf(const Point2& low, const Point2& high) const;
 
   /// The edges registered in the cell (column, row), in ascending order: [first, last).
-  const int* cellBegin(int column, int row) const;
-  const int* cellEnd(int column, int row) const;
+  const int* cellBegin(int column, int row) const {
+    return cell_edges_.data() + cell_begin_[static_cast<std::size_t>(row) * columns_ + column];
+  }
+  const int* cellEnd(int column, int row) const {
+    return cell_edges_.data() + cell_begin_[static_cast<std::size_t>(row) * columns_ + column + 1];
+  }
 
   /// The distinct edges registered in the cells of `range`, ascending.
   void collect(const CellRange& range, std::vector<int>* ids) const;

@@ -264,6 +264,25 @@ Ring warped(const Ring& ring, double amplitude, double wavelength, double phase_
   return result;
 }
 
+/// `star` (a shore `size` across) warped by warped() with an amplitude and a wavelength drawn
+/// from the given ranges (fractions of `size`) and random phases, the amplitude halved until
+/// the shore passes the validator (none left: `star` itself); counter-clockwise.
+Ring warpedShore(std::mt19937& rng, const Ring& star, double size,
+                 std::pair<double, double> amplitude_range,
+                 std::pair<double, double> wavelength_range) {
+  double amplitude = uniform(rng, amplitude_range.first, amplitude_range.second) * size;
+  const double wavelength = uniform(rng, wavelength_range.first, wavelength_range.second) * size;
+  const double phase_x = uniform(rng, 0.0, 2.0 * M_PI);
+  const double phase_y = uniform(rng, 0.0, 2.0 * M_PI);
+  Ring shore = warped(star, amplitude, wavelength, phase_x, phase_y);
+  while (!passesValidator({shore, {}})) {
+    amplitude *= 0.5;
+    shore = amplitude < 1e-3 * size ? star : warped(star, amplitude, wavelength, phase_x, phase_y);
+  }
+  if (signedArea(shore) < 0.0) std::reverse(shore.begin(), shore.end());
+  return shore;
+}
+
 /// Smallest distance from `island` to the shore and to every island in `others`, or -1 when
 /// the island is not inside the shore or nests with another island.
 double gapOf(const Ring& island, const Ring& shore, const std::vector<Ring>& others) {
@@ -293,16 +312,7 @@ void shoreline(std::mt19937& rng, bool small, HardMap& map) {
   const double size = std::clamp(map.footprint_width_m * uniform(rng, 8.0, 20.0), 30.0 * w, 200.0);
   const int shore_vertices = small ? 12 : integer(rng, 150, 420);
   const Ring star = noisyRing(rng, {0, 0}, 0.5 * size, shore_vertices);
-  double amplitude = uniform(rng, 0.0, 0.12) * size;
-  const double wavelength = uniform(rng, 0.15, 0.4) * size;
-  const double phase_x = uniform(rng, 0.0, 2.0 * M_PI);
-  const double phase_y = uniform(rng, 0.0, 2.0 * M_PI);
-  Ring shore = warped(star, amplitude, wavelength, phase_x, phase_y);
-  while (!passesValidator({shore, {}})) {
-    amplitude *= 0.5;
-    shore = amplitude < 1e-3 * size ? star : warped(star, amplitude, wavelength, phase_x, phase_y);
-  }
-  if (signedArea(shore) < 0.0) std::reverse(shore.begin(), shore.end());
+  const Ring shore = warpedShore(rng, star, size, {0.0, 0.12}, {0.15, 0.4});
   const int islands = small ? integer(rng, 1, 2) : integer(rng, 2, 8);
   const int close = integer(rng, 1, std::max(1, islands / 2));
   int budget = static_cast<int>(HardMapGenerator::kMaxVertices) - shore_vertices;
@@ -452,6 +462,28 @@ void touchingHoles(std::mt19937& rng, bool small, HardMap& map) {
   map.mission.goal = endpoint();
 }
 
+/// A chart-like ring about `centre`: radius `r` times one plus cosines at ten octaves of
+/// frequency (3 to 1536 waves round the ring), each octave's amplitude 0.55 times the one
+/// before (noise at every scale, as a surveyed shore has), plus a per-vertex jitter of up to
+/// `jitter_m`. The amplitudes sum to under 0.3, so the ring stays star-shaped.
+Ring chartRing(std::mt19937& rng, const Point2& centre, double r, int vertices, double jitter_m) {
+  std::vector<double> phases;
+  for (int octave = 0; octave < 10; ++octave) phases.push_back(uniform(rng, 0.0, 2.0 * M_PI));
+  Ring ring;
+  for (int i = 0; i < vertices; ++i) {
+    const double angle = 2.0 * M_PI * (i + uniform(rng, -0.3, 0.3)) / vertices;
+    double radius = 1.0;
+    double amplitude = 0.12;
+    for (int octave = 0; octave < 10; ++octave) {
+      radius += amplitude * std::cos(3.0 * std::pow(2.0, octave) * angle + phases[octave]);
+      amplitude *= 0.55;
+    }
+    radius = r * radius + uniform(rng, -jitter_m, jitter_m);
+    ring.push_back(centre + radius * Point2(std::cos(angle), std::sin(angle)));
+  }
+  return ring;
+}
+
 /// random_missions.h's map, start and goal under this generator's parameters.
 void star(std::uint64_t seed, HardMap& map) {
   const RandomMission random = randomMission(seed, 15);
@@ -461,6 +493,45 @@ void star(std::uint64_t seed, HardMap& map) {
 }
 
 }  // namespace
+
+HardMap HardMapGenerator::lakeChart(std::uint64_t seed, int shore_vertices, int islands) {
+  std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                         static_cast<std::uint32_t>(shore_vertices),
+                         static_cast<std::uint32_t>(islands)};
+  std::mt19937 rng(sequence);
+  HardMap map;
+  map.family = MapFamily::kShoreline;
+  map.seed = seed;
+  const PlannerParameters& p = map.mission.parameters;
+  map.footprint_width_m = 2.0 * p.sensor_distance * std::tan(0.5 * p.lateral_fov);
+  map.footprint_length_m = 2.0 * p.sensor_distance * std::tan(0.5 * p.onward_fov);
+  const double size = kLakeChartSize;
+  const Ring star = chartRing(rng, {0, 0}, 0.5 * size, shore_vertices, 0.2);
+  const Ring shore = warpedShore(rng, star, size, {0.04, 0.1}, {0.15, 0.3});
+  // Islands 2 to 8 m across at least 1 m from the shore and from each other; a map too
+  // crowded for them all gets fewer.
+  std::vector<Ring> placed;
+  for (int i = 0, attempts = 0; i < islands && attempts < 100 * islands; ++attempts) {
+    const Point2 centre = pointWhere(rng, shore, [&](const Point2& p) {
+      return insideRing(p, shore) && distanceToRing(p, shore) > 10.0;
+    });
+    const Ring island =
+        noisyRing(rng, centre, uniform(rng, 1.0, 4.0),
+                  integer(rng, kLakeChartIslandVertices.first, kLakeChartIslandVertices.second));
+    if (gapOf(island, shore, placed) <= 1.0) continue;
+    placed.push_back(island);
+    ++i;
+  }
+  PolygonWithHoles& polygon = map.mission.polygon;
+  polygon.hull = shore;
+  for (Ring island : placed) {
+    std::reverse(island.begin(), island.end());
+    polygon.holes.push_back(std::move(island));
+  }
+  map.mission.start = freePoint(rng, polygon);
+  map.mission.goal = freePoint(rng, polygon);
+  return map;
+}
 
 HardMap HardMapGenerator::generate(std::uint64_t seed) const {
   std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),

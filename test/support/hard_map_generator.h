@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/mission/mission.h"
@@ -62,6 +63,19 @@ class HardMapGenerator {
 
   /// The map of `seed`.
   HardMap generate(std::uint64_t seed) const;
+
+  /// Across a lake chart (m).
+  static constexpr double kLakeChartSize = 300.0;
+  /// Fewest and most vertices of a lake chart's island.
+  static constexpr std::pair<int, int> kLakeChartIslandVertices{12, 60};
+
+  /// A lake as a chart or a GIS exports it, with default parameters: a shore of
+  /// `shore_vertices` vertices about kLakeChartSize across, noisy at every scale (ten
+  /// octaves of waves and a 0.2 m jitter) and warped into bays and headlands, with up to
+  /// `islands` noisy islands of kLakeChartIslandVertices vertices, 2 to 8 m across, at least
+  /// 1 m from the shore and from each other (a lake too crowded for them all gets fewer).
+  /// Not bounded by kMaxVertices: the test bed of planning at chart scale.
+  static HardMap lakeChart(std::uint64_t seed, int shore_vertices, int islands);
 
   /// Every family, in declaration order.
   static std::vector<MapFamily> families();

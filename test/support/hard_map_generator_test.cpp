@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
@@ -160,6 +161,34 @@ TEST(HardMapGenerator, ShorelinesAreLongWithCloseIslands) {
     EXPECT_GT(*std::min_element(gaps.begin(), gaps.end()), 0.0);
     EXPECT_LT(*std::min_element(gaps.begin(), gaps.end()),
               2.0 * map.mission.parameters.wall_distance);
+  }
+}
+
+TEST(HardMapGenerator, LakeChartsAreValidDeterministicAndOfTheirSize) {
+  for (const auto& [shore, islands] : {std::pair<int, int>{500, 10}, {2000, 40}}) {
+    SCOPED_TRACE(std::to_string(shore) + " shore vertices");
+    const HardMap map = HardMapGenerator::lakeChart(3, shore, islands);
+    const PolygonWithHoles& polygon = map.mission.polygon;
+    EXPECT_NO_THROW(PolygonValidator().validate(polygon));
+    EXPECT_EQ(polygon.hull.size(), static_cast<std::size_t>(shore));
+    EXPECT_EQ(polygon.holes.size(), static_cast<std::size_t>(islands));
+    for (const Ring& island : polygon.holes) {
+      EXPECT_GE(island.size(),
+                static_cast<std::size_t>(HardMapGenerator::kLakeChartIslandVertices.first));
+      EXPECT_LE(island.size(),
+                static_cast<std::size_t>(HardMapGenerator::kLakeChartIslandVertices.second));
+      EXPECT_GT(ringDistance(island, polygon.hull), 1.0);
+    }
+    // About kLakeChartSize across.
+    Point2 low = polygon.hull.front(), high = low;
+    for (const Point2& p : polygon.hull) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    EXPECT_GT((high - low).maxCoeff(), 0.7 * HardMapGenerator::kLakeChartSize);
+    EXPECT_LT((high - low).maxCoeff(), 1.6 * HardMapGenerator::kLakeChartSize);
+    EXPECT_NO_THROW(PolygonValidator().validateEndpoint("start", map.mission.start, polygon));
+    EXPECT_EQ(hardMapYaml(map), hardMapYaml(HardMapGenerator::lakeChart(3, shore, islands)));
   }
 }
 

@@ -1,0 +1,218 @@
+// Scaling benchmark: planning time and peak memory against the size of a lake chart.
+// For each size (shore vertices and islands; test/support/hard_map_generator.h,
+// HardMapGenerator::lakeChart, default parameters) it writes the chart as a mission file
+// and runs `coverage_tool plan` on it in a child process, as a user would: planning,
+// smoothing, sampling and coverage evaluation included. Prints one table row per map:
+// its vertices and islands, the cells, the outcome (planned, or the error's first words),
+// the planning time and the whole run's time, the peak resident memory (the child's
+// ru_maxrss) and the slowest stage with its time; then each map's stage lines.
+//
+// Usage: scaling_benchmark [--sizes V:I[,V:I...]] [--seeds S] [--tool PATH] [--out DIR]
+//                          [--timeout SECONDS]
+// Defaults: --sizes 500:10,1000:20,2000:40,5000:100,10000:200, one seed, coverage_tool
+// beside this program, a temporary folder (removed after), 300 s per run (a run past it
+// counts as timed out).
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "test/support/hard_map_generator.h"
+#include "test/support/hard_map_yaml.h"
+
+namespace {
+
+using kinematic_coverage::core::testing::HardMap;
+using kinematic_coverage::core::testing::HardMapGenerator;
+
+struct Size {
+  int vertices;
+  int islands;
+};
+
+struct Run {
+  bool finished = false;  ///< exited within the timeout
+  int exit_status = -1;
+  double wall_s = 0.0;
+  double peak_mb = 0.0;
+  std::string output;  ///< standard output and error
+};
+
+/// Runs `tool plan mission --out dir` in a child, its output to a file, killed after
+/// `timeout_s`.
+Run runPlan(const std::string& tool, const std::string& mission, const std::string& dir,
+            double timeout_s) {
+  const std::string log = dir + ".log";
+  const auto start = std::chrono::steady_clock::now();
+  std::fflush(stdout);  // or the child would write what this process has buffered again
+  const pid_t child = fork();
+  if (child == 0) {
+    std::FILE* out = std::freopen(log.c_str(), "w", stdout);
+    if (out == nullptr || dup2(fileno(stdout), fileno(stderr)) < 0) _exit(127);
+    execl(tool.c_str(), tool.c_str(), "plan", mission.c_str(), "--out", dir.c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  Run run;
+  int status = 0;
+  struct rusage usage {};
+  while (true) {
+    const pid_t done = wait4(child, &status, WNOHANG, &usage);
+    run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (done == child) {
+      run.finished = true;
+      run.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      break;
+    }
+    if (run.wall_s > timeout_s) {
+      kill(child, SIGKILL);
+      wait4(child, &status, 0, &usage);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  run.peak_mb = usage.ru_maxrss / 1024.0;
+  std::ifstream stream(log);
+  std::stringstream text;
+  text << stream.rdbuf();
+  run.output = text.str();
+  return run;
+}
+
+std::vector<Size> parseSizes(const std::string& text) {
+  std::vector<Size> sizes;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    const auto colon = item.find(':');
+    if (colon == std::string::npos) return {};
+    sizes.push_back(
+        {std::atoi(item.substr(0, colon).c_str()), std::atoi(item.substr(colon + 1).c_str())});
+  }
+  return sizes;
+}
+
+/// The stage lines of coverage_tool's output ("name: summary (seconds s)").
+std::vector<std::pair<std::string, double>> stageTimes(const std::string& output) {
+  std::vector<std::pair<std::string, double>> stages;
+  const std::regex line(R"(^([a-z_ ]+): .*\((\d+\.\d+) s\)$)");
+  std::stringstream stream(output);
+  std::string text;
+  while (std::getline(stream, text)) {
+    std::smatch match;
+    if (std::regex_match(text, match, line)) stages.emplace_back(match[1], std::stod(match[2]));
+  }
+  return stages;
+}
+
+std::string firstWords(const std::string& output) {
+  std::stringstream stream(output);
+  std::string text;
+  std::string last;
+  while (std::getline(stream, text)) {
+    if (text.rfind("error", 0) == 0 || text.find("error:") != std::string::npos)
+      return text.substr(0, 90);
+    if (!text.empty()) last = text;
+  }
+  return last.substr(0, 90);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<Size> sizes = parseSizes("500:10,1000:20,2000:40,5000:100,10000:200");
+  int seeds = 1;
+  std::string tool = (std::filesystem::path(argv[0]).parent_path() / "coverage_tool").string();
+  std::string out;
+  double timeout_s = 300.0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (argument == "--sizes" && i + 1 < argc) {
+      sizes = parseSizes(argv[++i]);
+    } else if (argument == "--seeds" && i + 1 < argc) {
+      seeds = std::max(1, std::atoi(argv[++i]));
+    } else if (argument == "--tool" && i + 1 < argc) {
+      tool = argv[++i];
+    } else if (argument == "--out" && i + 1 < argc) {
+      out = argv[++i];
+    } else if (argument == "--timeout" && i + 1 < argc) {
+      timeout_s = std::atof(argv[++i]);
+    } else {
+      sizes.clear();
+      break;
+    }
+  }
+  if (sizes.empty()) {
+    std::fprintf(stderr,
+                 "usage: scaling_benchmark [--sizes V:I[,V:I...]] [--seeds S] [--tool PATH] "
+                 "[--out DIR] [--timeout SECONDS]\n");
+    return 2;
+  }
+  const bool temporary = out.empty();
+  if (temporary) {
+    out =
+        (std::filesystem::temp_directory_path() / ("scaling_benchmark_" + std::to_string(getpid())))
+            .string();
+  }
+  std::filesystem::create_directories(out);
+
+  std::printf(
+      "| shore vertices | islands | vertices | cells | outcome | planning s (timing) | run s "
+      "(timing) "
+      "| peak MB (timing) | slowest stage (timing) |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::string> details;
+  for (const Size& size : sizes) {
+    for (int seed = 0; seed < seeds; ++seed) {
+      const HardMap map = HardMapGenerator::lakeChart(seed, size.vertices, size.islands);
+      std::size_t vertices = map.mission.polygon.hull.size();
+      for (const auto& hole : map.mission.polygon.holes) vertices += hole.size();
+      const std::string name = "chart_" + std::to_string(size.vertices) + "_" +
+                               std::to_string(size.islands) + "_" + std::to_string(seed);
+      const std::string mission = out + "/" + name + ".yaml";
+      std::ofstream(mission) << kinematic_coverage::core::testing::hardMapYaml(map);
+      const Run run = runPlan(tool, mission, out + "/" + name, timeout_s);
+      const auto stages = stageTimes(run.output);
+      // coverage_tool's own figure: validation, cleaning and planning, as metrics.json's
+      // planning_time_s.
+      std::smatch planning;
+      const std::regex planning_line(R"(planning took (\d+\.\d+) s)");
+      const double planning_s =
+          std::regex_search(run.output, planning, planning_line) ? std::stod(planning[1]) : 0.0;
+      std::pair<std::string, double> slowest{"-", 0.0};
+      for (const auto& [stage, seconds] : stages) {
+        if (seconds > slowest.second) slowest = {stage, seconds};
+      }
+      std::smatch cells;
+      const std::regex cell_line(R"((\d+) [a-z]+ cells)");
+      const std::string cell_count =
+          std::regex_search(run.output, cells, cell_line) ? std::string(cells[1]) : "-";
+      const std::string outcome = !run.finished          ? "timed out"
+                                  : run.exit_status == 0 ? "planned"
+                                                         : firstWords(run.output);
+      std::printf("| %d | %zu | %zu | %s | %s | %.2f | %.2f | %.0f | %s %.2f s |\n", size.vertices,
+                  map.mission.polygon.holes.size(), vertices, cell_count.c_str(), outcome.c_str(),
+                  planning_s, run.wall_s, run.peak_mb, slowest.first.c_str(), slowest.second);
+      std::fflush(stdout);
+      std::ostringstream detail;
+      detail << name << ":";
+      for (const auto& [stage, seconds] : stages) detail << " " << stage << " " << seconds;
+      details.push_back(detail.str());
+    }
+  }
+  std::printf("\n");
+  for (const std::string& detail : details) std::printf("    %s\n", detail.c_str());
+  if (temporary) std::filesystem::remove_all(out);
+  return 0;
+}
