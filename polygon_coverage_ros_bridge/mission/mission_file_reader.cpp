@@ -227,7 +227,9 @@ YAML::Node loadYaml(const std::string& text, const std::string& source_name) {
   }
 }
 
-std::string readFile(const std::string& path) {
+}  // namespace
+
+std::string MissionFileReader::readText(const std::string& path) {
   std::error_code code;
   const auto status = std::filesystem::status(path, code);
   if (code || !std::filesystem::exists(status)) {
@@ -247,6 +249,8 @@ std::string readFile(const std::string& path) {
   if (!in) throw InvalidInputError(path + ": cannot be read");
   return text.str();
 }
+
+namespace {
 
 YAML::Node rootMap(const std::string& text, const std::string& source_name) {
   const YAML::Node root = loadYaml(text, source_name);
@@ -275,7 +279,7 @@ void applyOverride(PlannerParameters& parameters, const std::string& assignment)
 
 Mission MissionFileReader::read(const std::string& path, const std::vector<std::string>& overrides,
                                 const PlannerParameters& base) const {
-  return parse(readFile(path), path, overrides, base);
+  return parse(readText(path), path, overrides, base);
 }
 
 Mission MissionFileReader::parse(const std::string& yaml_text, const std::string& source_name,
@@ -318,7 +322,7 @@ Mission MissionFileReader::parse(const std::string& yaml_text, const std::string
 }
 
 PolygonWithHoles MissionFileReader::readUpdatedPolygon(const std::string& path) const {
-  return parseUpdatedPolygon(readFile(path), path);
+  return parseUpdatedPolygon(readText(path), path);
 }
 
 PolygonWithHoles MissionFileReader::parseUpdatedPolygon(const std::string& yaml_text,
@@ -340,7 +344,7 @@ PolygonWithHoles MissionFileReader::parseUpdatedPolygon(const std::string& yaml_
 }
 
 PlannerParameters MissionFileReader::readParameters(const std::string& path) const {
-  const YAML::Node root = rootMap(readFile(path), path);
+  const YAML::Node root = rootMap(readText(path), path);
   const NodeReader reader(path);
   PlannerParameters parameters;
   for (const auto& [key, value] : reader.entries(root, "")) {
@@ -368,7 +372,7 @@ std::string MissionFileReader::parameterText(const PlannerParameters& parameters
         const auto& value = parameters.*member;
         using Value = std::decay_t<decltype(value)>;
         if constexpr (std::is_same_v<Value, double>) {
-          return formatNumber(value);
+          return formatRoundTrip(value);
         } else if constexpr (std::is_same_v<Value, bool>) {
           return value ? "true" : "false";
         } else {

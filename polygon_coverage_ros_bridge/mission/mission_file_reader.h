@@ -59,11 +59,16 @@ class MissionFileReader {
   PlannerParameters withOverrides(PlannerParameters parameters,
                                   const std::vector<std::string>& overrides) const;
 
+  /// The text of the file at `path`. Throws InvalidInputError naming the path when it does
+  /// not exist, is not a regular file, is larger than kMaxMissionFileBytes or cannot be read.
+  static std::string readText(const std::string& path);
+
   /// The names of every parameter a mission file or `--set` may give.
   static std::vector<std::string> parameterNames();
 
   /// The value of the parameter `name` in `parameters` as a mission file writes it ("0.5",
-  /// "true", "boustrophedon"), e.g. to compare or print parameter sets. Throws
+  /// "true", "boustrophedon"; numbers in the shortest form that reads back exactly), e.g. to
+  /// compare, print or export parameter sets. Throws
   /// InvalidInputError for an unknown name.
   static std::string parameterText(const PlannerParameters& parameters, const std::string& name);
 };

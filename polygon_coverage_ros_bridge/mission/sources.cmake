@@ -1,7 +1,12 @@
 kc_add_stage_library(kc_mission
   SOURCES
+    polygon_coverage_ros_bridge/mission/geojson_mission_reader.cpp
+    polygon_coverage_ros_bridge/mission/local_east_north_frame.cpp
     polygon_coverage_ros_bridge/mission/mission_file_reader.cpp
     polygon_coverage_ros_bridge/mission/mission_planner.cpp
     polygon_coverage_ros_bridge/mission/pose_csv_reader.cpp
     polygon_coverage_ros_bridge/mission/trajectory_coverage.cpp
   DEPENDS kc_geometry kc_validation kc_sweeps kc_coverage kc_parameters kc_planner yaml-cpp)
+# GeographicLib (the local east-north frame of GeoJSON missions) stays out of the headers.
+target_include_directories(kc_mission PRIVATE ${GeographicLib_INCLUDE_DIRS})
+target_link_libraries(kc_mission PRIVATE ${GeographicLib_LIBRARIES})

@@ -9,6 +9,7 @@
 
 #include "kinematic_coverage/PolygonWithHolesStamped.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/mission/geojson_mission_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
@@ -38,7 +39,9 @@ int main(int argc, char** argv) {
       ROS_ERROR("mission_publisher: the parameter ~mission (a mission file) is not set");
       return 2;
     }
-    mission = kinematic_coverage::core::MissionFileReader().read(path);
+    mission = kinematic_coverage::core::GeoJsonMissionReader::isGeoJsonPath(path)
+                  ? kinematic_coverage::core::GeoJsonMissionReader().read(path)
+                  : kinematic_coverage::core::MissionFileReader().read(path);
   } catch (const kinematic_coverage::core::InvalidInputError& error) {
     ROS_ERROR("mission_publisher: %s", error.what());
     return 2;
@@ -55,6 +58,12 @@ int main(int argc, char** argv) {
   goal_publisher.publish(pointMessage(mission.goal, header));
   ROS_INFO("mission_publisher: published %s (%zu hull vertices, %zu holes, frame %s)", path.c_str(),
            mission.polygon.hull.size(), mission.polygon.holes.size(), mission.frame_id.c_str());
+  if (mission.datum) {
+    ROS_INFO(
+        "mission_publisher: a GeoJSON mission, in metres east and north of its datum "
+        "(%.9f, %.9f)",
+        mission.datum->latitude, mission.datum->longitude);
+  }
   ros::spin();
   return 0;
 }

@@ -8,6 +8,7 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/mission/geojson_mission_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 
 namespace kinematic_coverage::core {
@@ -65,10 +66,17 @@ Mission loadMission(const CommandArguments& arguments, std::ostream& out) {
   const PlannerParameters base = arguments.config_path.empty()
                                      ? PlannerParameters{}
                                      : reader.readParameters(arguments.config_path);
-  Mission mission = reader.read(arguments.mission_path, arguments.overrides, base);
+  Mission mission =
+      GeoJsonMissionReader::isGeoJsonPath(arguments.mission_path)
+          ? GeoJsonMissionReader().read(arguments.mission_path, arguments.overrides, base)
+          : reader.read(arguments.mission_path, arguments.overrides, base);
   out << "load: " << arguments.mission_path << ": hull of " << mission.polygon.hull.size()
-      << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id
-      << " (" << formatSeconds(secondsSince(start)) << ")" << std::endl;
+      << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id;
+  if (mission.datum) {
+    out << " at datum (" << formatRoundTrip(mission.datum->latitude) << ", "
+        << formatRoundTrip(mission.datum->longitude) << ")";
+  }
+  out << " (" << formatSeconds(secondsSince(start)) << ")" << std::endl;
   return mission;
 }
 

@@ -12,6 +12,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_command.h"
 #include "polygon_coverage_ros_bridge/tool/evaluate_command.h"
+#include "polygon_coverage_ros_bridge/tool/export_command.h"
 #include "polygon_coverage_ros_bridge/tool/plan_command.h"
 #include "polygon_coverage_ros_bridge/tool/replan_command.h"
 #include "polygon_coverage_ros_bridge/tool/simulate_command.h"
@@ -27,7 +28,8 @@ const char* const kUsage =
     "usage: coverage_tool COMMAND [ARGS...]\n"
     "commands:\n"
     "  plan MISSION.yaml --out DIR [--config FILE] [--set name=value ...]\n"
-    "      plan a coverage path: DIR/waypoints.csv, trajectory.csv, metrics.json, plot.png\n"
+    "      plan a coverage path: DIR/waypoints.csv, trajectory.csv, metrics.json, plot.png;\n"
+    "      MISSION.geojson (WGS84) also gives DIR/waypoints.geojson, trajectory.geojson\n"
     "  evaluate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value ...]\n"
     "      coverage of a trajectory (x,y,yaw[,t,kind] CSV): DIR/metrics.json, DIR/plot.png\n"
     "  replan MISSION.yaml --updated UPDATED.yaml --visited FILE.csv --out DIR [--set ...]\n"
@@ -35,6 +37,8 @@ const char* const kUsage =
     "      DIR/remaining.yaml\n"
     "  simulate MISSION.yaml --trajectory FILE.csv --out DIR [--set name=value ...]\n"
     "      a robot model follows a trajectory: DIR/actual.csv, metrics.json, plot.png\n"
+    "  export MISSION.yaml --datum LAT,LON --out FILE.geojson\n"
+    "      the mission as a geo-referenced GeoJSON (WGS84), which plan reads back\n"
     "  gtsp INSTANCE.gtsp [--seed N] [--time-limit S]\n"
     "      solve a GTSPLIB instance; prints one JSON line\n"
     "--config FILE: parameters from FILE (e.g. config/thesis.yaml, the thesis's settings)\n"
@@ -75,6 +79,10 @@ int runCommand(const std::vector<std::string>& args) {
   }
   if (command == "simulate") {
     SimulateCommand().run(rest, std::cout, std::cerr);
+    return kExitSuccess;
+  }
+  if (command == "export") {
+    ExportCommand().run(rest, std::cout, std::cerr);
     return kExitSuccess;
   }
   throw InvalidInputError("unknown command '" + command + "' (see coverage_tool --help)");

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/base/text_file_writer.h"
@@ -10,7 +11,17 @@
 namespace kinematic_coverage::core {
 namespace {
 
-std::string quoted(const std::string& text) {
+/// `value` in shortest round-trip form; std::domain_error naming `key` when not finite.
+std::string numberJson(const std::string& key, double value) {
+  if (!std::isfinite(value)) {
+    throw std::domain_error("JSON value of '" + key + "' is not finite");
+  }
+  return formatRoundTrip(value);
+}
+
+}  // namespace
+
+std::string jsonString(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
     switch (c) {
@@ -48,28 +59,41 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-}  // namespace
-
 JsonObject::Entry& JsonObject::entry(const std::string& key) {
   for (Entry& existing : entries_) {
     if (existing.key == key) return existing;
   }
-  entries_.push_back(Entry{key, 0.0, nullptr});
+  entries_.push_back(Entry{key, "0"});
   return entries_.back();
 }
 
 JsonObject& JsonObject::set(const std::string& key, double value) {
-  if (!std::isfinite(value)) {
-    throw std::domain_error("JSON value of '" + key + "' is not finite");
-  }
-  Entry& target = entry(key);
-  target.number = value;
-  target.object.reset();
+  const std::string json = numberJson(key, value);
+  entry(key).json = json;
   return *this;
 }
 
 JsonObject& JsonObject::set(const std::string& key, const JsonObject& value) {
-  entry(key).object = std::make_shared<const JsonObject>(value);
+  entry(key).json = value.toString();
+  return *this;
+}
+
+JsonObject& JsonObject::set(const std::string& key, const std::string& text) {
+  entry(key).json = jsonString(text);
+  return *this;
+}
+
+JsonObject& JsonObject::set(const std::string& key, const std::vector<double>& numbers) {
+  std::string json = "[";
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    json += (i > 0 ? ", " : "") + numberJson(key, numbers[i]);
+  }
+  entry(key).json = json + "]";
+  return *this;
+}
+
+JsonObject& JsonObject::setJson(const std::string& key, std::string json) {
+  entry(key).json = std::move(json);
   return *this;
 }
 
@@ -85,7 +109,7 @@ std::string JsonObject::toString() const {
   for (std::size_t i = 0; i < entries_.size(); ++i) {
     const Entry& e = entries_[i];
     if (i > 0) out += ", ";
-    out += quoted(e.key) + ": " + (e.object ? e.object->toString() : formatRoundTrip(e.number));
+    out += jsonString(e.key) + ": " + e.json;
   }
   return out + "}";
 }

@@ -1,12 +1,14 @@
 #pragma once
 
-#include <memory>
 #include <string>
 #include <vector>
 
 namespace kinematic_coverage::core {
 
-/// A JSON object of numbers and nested objects, for `metrics.json` (docs/REFERENCE.md, Metrics),
+/// `text` as a JSON string: quoted, with the escapes JSON requires.
+std::string jsonString(const std::string& text);
+
+/// A JSON object for `metrics.json` (docs/REFERENCE.md, Metrics) and the GeoJSON outputs,
 /// written without an external library. Keys keep their insertion order and are escaped
 /// as JSON requires; numbers are written in shortest round-trip form.
 class JsonObject {
@@ -17,6 +19,16 @@ class JsonObject {
 
   /// Sets `key` to a nested object (e.g. percentiles), replacing an earlier value.
   JsonObject& set(const std::string& key, const JsonObject& value);
+
+  /// Sets `key` to a string.
+  JsonObject& set(const std::string& key, const std::string& text);
+
+  /// Sets `key` to an array of numbers. Throws std::domain_error for a non-finite one.
+  JsonObject& set(const std::string& key, const std::vector<double>& numbers);
+
+  /// Sets `key` to `json`, a JSON value the caller has written (an array of arrays or of
+  /// objects, say).
+  JsonObject& setJson(const std::string& key, std::string json);
 
   /// True when `key` has a value.
   bool has(const std::string& key) const;
@@ -30,8 +42,7 @@ class JsonObject {
  private:
   struct Entry {
     std::string key;
-    double number = 0.0;
-    std::shared_ptr<const JsonObject> object;  ///< set for a nested object
+    std::string json;  ///< the value as JSON text
   };
   Entry& entry(const std::string& key);
 

@@ -58,6 +58,8 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
   request.planning_time_s = planning_time_s;
   request.start = mission.start;
   request.goal = mission.goal;
+  request.frame_id = mission.frame_id;
+  request.datum = mission.datum;
   request.title =
       "Coverage plan: " + std::filesystem::path(arguments.mission_path).filename().string() +
       (mission.parameters.smoothing ? " (smoothed)" : " (unsmoothed)");

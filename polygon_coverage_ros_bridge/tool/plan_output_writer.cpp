@@ -8,13 +8,17 @@
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
+#include "polygon_coverage_ros_bridge/base/text_file_writer.h"
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/tool/command_line.h"
 #include "polygon_coverage_ros_bridge/tool/coverage_metrics.h"
+#include "polygon_coverage_ros_bridge/tool/geojson_writer.h"
 #include "polygon_coverage_ros_bridge/tool/json_object.h"
 #include "polygon_coverage_ros_bridge/tool/trajectory_csv_writer.h"
 #include "polygon_coverage_ros_bridge/tool/waypoint_csv_writer.h"
@@ -95,7 +99,39 @@ JsonObject planMetrics(const PlanOutputRequest& request, const GeneratedTrajecto
   if (std::isfinite(trajectory.min_obstacle_clearance_m)) {
     metrics.set("min_obstacle_clearance_m", trajectory.min_obstacle_clearance_m);
   }
+  if (request.datum) {
+    metrics.set("frame_id", request.frame_id)
+        .set("datum", std::vector<double>{request.datum->latitude, request.datum->longitude});
+  }
   return metrics;
+}
+
+/// DIR/waypoints.geojson and DIR/trajectory.geojson of a geo-referenced plan; their paths.
+std::vector<std::string> writeGeoJson(const PlanOutputRequest& request,
+                                      const GeneratedTrajectory& trajectory,
+                                      const std::filesystem::path& dir) {
+  const GeoJsonWriter writer{LocalEastNorthFrame(*request.datum)};
+  const SegmentCost time_cost(CostFunction::kTime, vehicleLimitsOf(*request.parameters));
+  std::vector<Point2> waypoints;
+  std::vector<double> waypoint_times;
+  for (const Pose2& waypoint : request.plan->waypoints) {
+    waypoint_times.push_back(waypoints.empty()
+                                 ? 0.0
+                                 : waypoint_times.back() +
+                                       time_cost.of(waypoints.back(), waypoint.position()));
+    waypoints.push_back(waypoint.position());
+  }
+  std::vector<Point2> poses;
+  std::vector<double> pose_times;
+  for (const TrajectoryPose& pose : trajectory.poses) {
+    poses.emplace_back(pose.x, pose.y);
+    pose_times.push_back(pose.t);
+  }
+  const std::string waypoints_path = (dir / "waypoints.geojson").string();
+  const std::string trajectory_path = (dir / "trajectory.geojson").string();
+  writeTextFile(waypoints_path, writer.lineString(waypoints, waypoint_times, "waypoints"));
+  writeTextFile(trajectory_path, writer.lineString(poses, pose_times, "trajectory"));
+  return {waypoints_path, trajectory_path};
 }
 
 /// plot.png's content: the areas, the heatmap (with the visited poses when replanning),
@@ -168,6 +204,11 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   }
   CoveragePlot().writePng(plot, plot_path);
   outputs.files = {waypoints_path, trajectory_path, metrics_path, plot_path};
+  if (request.datum) {
+    for (std::string& path : writeGeoJson(request, trajectory, dir)) {
+      outputs.files.push_back(std::move(path));
+    }
+  }
   outputs.coverage = coverage.report;
   outputs.turns = trajectory.statistics;
   outputs.traversal_time_s = trajectory.traversal_time_s;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/mission/mission.h"
 #include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
@@ -26,6 +27,10 @@ struct PlanOutputRequest {
   /// `combined_coverage_percent` (visited and new trajectory together), which the plot's
   /// heatmap shows.
   std::optional<std::vector<Pose2>> visited;
+  /// A geo-referenced mission's frame and datum: metrics.json records them, and
+  /// DIR/waypoints.geojson and DIR/trajectory.geojson are written too.
+  std::string frame_id = "map";
+  std::optional<GeoPoint> datum;
 };
 
 /// What writePlanOutputs wrote and found.
@@ -41,7 +46,9 @@ struct PlanOutputs {
 
 /// Smooths, samples and times the plan's trajectory (TrajectoryGenerator), measures its
 /// coverage, and writes DIR/waypoints.csv, DIR/trajectory.csv, DIR/metrics.json and
-/// DIR/plot.png (docs/REFERENCE.md, File formats), with one progress line per stage on `out`.
+/// DIR/plot.png (docs/REFERENCE.md, File formats), with one progress line per stage on `out`;
+/// for a geo-referenced mission also DIR/waypoints.geojson (times: the planner's rest-to-rest
+/// time cost up to each waypoint) and DIR/trajectory.geojson (times: the poses' t).
 /// A trajectory that sees less than kReachableCoverageBarPercent of the reachable area
 /// gives a warning, and the plot outlines the largest unseen region. Throws
 /// InvalidInputError when a file cannot be written.

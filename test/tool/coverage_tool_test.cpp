@@ -3,6 +3,7 @@
 // input, the files written.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
 
 namespace {
 
@@ -637,6 +641,112 @@ TEST(CoverageTool, ReplansTheLakeDriftScenario) {
   expectInvalid("replan '" + lake + "' --updated '" + updated + "' --visited '" + empty +
                     "' --out '" + out_dir + "'",
                 "");
+}
+
+/// The x and y columns of a waypoints.csv (header "x,y,yaw").
+std::vector<std::pair<double, double>> waypointRows(const std::string& path) {
+  std::vector<std::pair<double, double>> rows;
+  const std::vector<std::string> text = lines(readText(path));
+  for (std::size_t i = 1; i < text.size(); ++i) {
+    double x = 0.0, y = 0.0;
+    if (std::sscanf(text[i].c_str(), "%lf,%lf", &x, &y) == 2) rows.emplace_back(x, y);
+  }
+  return rows;
+}
+
+TEST(CoverageTool, GeoJsonMissionsPlanAsTheirMetreMissions) {
+  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml";
+  const std::string dir = scratchDir() + "/geojson";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const kinematic_coverage::core::GeoPoint datum{47.3769, 8.5417};
+  ToolRun run =
+      runTool("export '" + lake + "' --datum 47.3769,8.5417 --out '" + dir + "/lake.geojson'");
+  ASSERT_EQ(run.exit_status, 0) << run.out;
+  run = runTool("plan '" + lake + "' --out '" + dir + "/metres'");
+  ASSERT_EQ(run.exit_status, 0) << run.out;
+  run = runTool("plan '" + dir + "/lake.geojson' --out '" + dir + "/geo'");
+  ASSERT_EQ(run.exit_status, 0) << run.out;
+  EXPECT_NE(run.out.find("at datum (47.3769, 8.5417)"), std::string::npos) << run.out;
+
+  // The same plan: time cost to 1e-6 relative, waypoints to 1e-6 m.
+  const std::string metres_json = readText(dir + "/metres/metrics.json");
+  const std::string geo_json = readText(dir + "/geo/metrics.json");
+  EXPECT_NEAR(metric(geo_json, "time_cost_s") / metric(metres_json, "time_cost_s"), 1.0, 1e-6);
+  EXPECT_NE(geo_json.find("\"datum\": [47.3769, 8.5417]"), std::string::npos) << geo_json;
+  EXPECT_NE(geo_json.find("\"frame_id\": \"map\""), std::string::npos) << geo_json;
+  const auto metres = waypointRows(dir + "/metres/waypoints.csv");
+  const auto geo = waypointRows(dir + "/geo/waypoints.csv");
+  ASSERT_EQ(geo.size(), metres.size());
+  ASSERT_GT(geo.size(), 2u);
+  for (std::size_t i = 0; i < geo.size(); ++i) {
+    EXPECT_NEAR(geo[i].first, metres[i].first, 1e-6) << "waypoint " << i;
+    EXPECT_NEAR(geo[i].second, metres[i].second, 1e-6) << "waypoint " << i;
+  }
+
+  // waypoints.geojson: a FeatureCollection of one LineString whose positions project back
+  // onto the waypoints within 1 mm, with a time per position.
+  const YAML::Node root = YAML::LoadFile(dir + "/geo/waypoints.geojson");
+  ASSERT_EQ(root["type"].as<std::string>(), "FeatureCollection");
+  const YAML::Node feature = root["features"][0];
+  ASSERT_EQ(feature["geometry"]["type"].as<std::string>(), "LineString");
+  const YAML::Node coordinates = feature["geometry"]["coordinates"];
+  ASSERT_EQ(coordinates.size(), geo.size());
+  ASSERT_EQ(feature["properties"]["times"].size(), geo.size());
+  const kinematic_coverage::core::LocalEastNorthFrame frame(datum);
+  for (std::size_t i = 0; i < geo.size(); ++i) {
+    const kinematic_coverage::core::Point2 local =
+        frame.toLocal({coordinates[i][1].as<double>(), coordinates[i][0].as<double>()}, "waypoint");
+    EXPECT_NEAR(local.x(), geo[i].first, 1e-3) << "waypoint " << i;
+    EXPECT_NEAR(local.y(), geo[i].second, 1e-3) << "waypoint " << i;
+  }
+  const YAML::Node trajectory = YAML::LoadFile(dir + "/geo/trajectory.geojson");
+  EXPECT_EQ(trajectory["features"][0]["geometry"]["coordinates"].size(),
+            trajectory["features"][0]["properties"]["times"].size());
+}
+
+TEST(CoverageTool, RejectsBadGeoJsonWithOneLine) {
+  const std::string point_start =
+      R"({"type": "Feature", "properties": {"role": "start"}, )"
+      R"("geometry": {"type": "Point", "coordinates": [8.5417, 47.3769]}})";
+  const std::string point_goal =
+      R"({"type": "Feature", "properties": {"role": "goal"}, )"
+      R"("geometry": {"type": "Point", "coordinates": [8.5418, 47.3770]}})";
+  const std::string square =
+      R"({"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": )"
+      R"([[[8.5416, 47.3768], [8.5420, 47.3768], [8.5420, 47.3772], [8.5416, 47.3772], )"
+      R"([8.5416, 47.3768]]]}})";
+  const auto collection = [](const std::string& features) {
+    return R"({"type": "FeatureCollection", "features": [)" + features + "]}";
+  };
+  const auto expectInvalidGeoJson = [&](const std::string& text, const std::string& expected) {
+    const std::string path = scratchDir() + "/invalid.geojson";
+    std::ofstream(path) << text;
+    expectInvalid("plan '" + path + "' --out '" + scratchDir() + "/invalid_geo'", expected);
+  };
+  expectInvalidGeoJson(R"({"type": "Feature"})", "not a GeoJSON FeatureCollection");
+  expectInvalidGeoJson("{\"type\": ", "not valid JSON");
+  expectInvalidGeoJson(collection(point_start + ", " + point_goal), "no Polygon");
+  expectInvalidGeoJson(collection(square + ", " + point_goal),
+                       "no Point feature with \"role\": \"start\"");
+  expectInvalidGeoJson(collection(square + ", " + point_start),
+                       "no Point feature with \"role\": \"goal\"");
+  std::string outside = square;
+  outside.replace(outside.find("8.5420, 47.3768"), 15, "190.5, 47.3768");
+  expectInvalidGeoJson(collection(outside + ", " + point_start + ", " + point_goal),
+                       "lies outside [-180, 180] x [-90, 90]");
+  std::string far = square;
+  far.replace(far.find("8.5420, 47.3768"), 15, "9.5420, 47.3768");
+  expectInvalidGeoJson(collection(far + ", " + point_start + ", " + point_goal),
+                       "the area is too large");
+  std::string unknown = square;
+  unknown.replace(unknown.find("\"properties\": {}"), 16, "\"properties\": {\"depth\": 3}");
+  expectInvalidGeoJson(collection(unknown + ", " + point_start + ", " + point_goal),
+                       "unknown parameter 'depth'");
+  expectInvalid("export '" + std::string(KC_SOURCE_DIR) +
+                    "/config/missions/lake_30x30.yaml' --datum 95,8 --out '" + scratchDir() +
+                    "/x.geojson'",
+                "--datum");
 }
 
 }  // namespace

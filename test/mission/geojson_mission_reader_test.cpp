@@ -1,0 +1,80 @@
+#include "polygon_coverage_ros_bridge/mission/geojson_mission_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// A square of about 60 m x 55 m at Zurich with one square hole, as a GIS writes it.
+std::string lake(const std::string& properties, const std::string& geometry_type = "Polygon") {
+  const std::string rings =
+      "[[[8.5410, 47.3760], [8.5418, 47.3760], [8.5418, 47.3765], [8.5410, 47.3765], "
+      "[8.5410, 47.3760]], [[8.5413, 47.3762], [8.5414, 47.3762], [8.5414, 47.3763], "
+      "[8.5413, 47.3763], [8.5413, 47.3762]]]";
+  return R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": )" +
+         properties + R"(, "geometry": {"type": ")" + geometry_type + R"(", "coordinates": )" +
+         (geometry_type == "MultiPolygon" ? "[" + rings + "]" : rings) +
+         R"(}}, {"type": "Feature", "properties": {"role": "start"}, "geometry": {"type": "Point", )"
+         R"("coordinates": [8.5411, 47.3761]}}, {"type": "Feature", "properties": {"role": "goal"}, )"
+         R"("geometry": {"type": "Point", "coordinates": [8.5417, 47.3764]}}]})";
+}
+
+std::string errorOf(const std::string& text) {
+  try {
+    GeoJsonMissionReader().parse(text, "lake.geojson");
+  } catch (const InvalidInputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(GeoJsonMissionReader, ReadsTheAreaStartGoalAndParametersInTheLocalFrame) {
+  const Mission mission = GeoJsonMissionReader().parse(
+      lake(R"({"datum": [47.3760, 8.5410], "turning_radius": 0.5, "smoothing_strategy": "local"})"),
+      "lake.geojson");
+  ASSERT_TRUE(mission.datum.has_value());
+  EXPECT_DOUBLE_EQ(mission.datum->latitude, 47.3760);
+  EXPECT_EQ(mission.polygon.hull.size(), 4u);  // the closing position dropped
+  ASSERT_EQ(mission.polygon.holes.size(), 1u);
+  EXPECT_NEAR(mission.polygon.hull.front().norm(), 0.0, 1e-9);  // the datum's corner
+  EXPECT_NEAR(area(mission.polygon), 60.4 * 55.6 - 7.5 * 11.1, 3.0);
+  EXPECT_GT(mission.start.x(), 0.0);
+  EXPECT_GT(mission.goal.y(), mission.start.y());
+  EXPECT_EQ(mission.parameters.turning_radius, 0.5);
+  EXPECT_EQ(mission.parameters.smoothing_strategy, "local");
+  EXPECT_EQ(mission.frame_id, "map");
+}
+
+TEST(GeoJsonMissionReader, TheDatumDefaultsToTheHullsFirstVertex) {
+  const Mission mission = GeoJsonMissionReader().parse(lake("{}"), "lake.geojson");
+  ASSERT_TRUE(mission.datum.has_value());
+  EXPECT_DOUBLE_EQ(mission.datum->latitude, 47.3760);
+  EXPECT_DOUBLE_EQ(mission.datum->longitude, 8.5410);
+  const Mission multi = GeoJsonMissionReader().parse(lake("{}", "MultiPolygon"), "lake.geojson");
+  EXPECT_NEAR(area(multi.polygon), area(mission.polygon), 1e-6);
+  EXPECT_EQ(multi.polygon.holes.size(), 1u);
+}
+
+TEST(GeoJsonMissionReader, NamesEachProblem) {
+  EXPECT_NE(errorOf("[1, 2]").find("not a GeoJSON FeatureCollection"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"type": "FeatureCollection", "features": []})").find("no Polygon"),
+            std::string::npos);
+  EXPECT_NE(errorOf(lake(R"({"depth": 2})")).find("unknown parameter 'depth'"), std::string::npos);
+  EXPECT_NE(errorOf(lake(R"({"turning_radius": -1})")).find("turning_radius"), std::string::npos);
+  EXPECT_NE(errorOf(lake(R"({"datum": [47.3760]})")).find("[latitude, longitude]"),
+            std::string::npos);
+  std::string line = lake("{}");
+  line.replace(line.find("\"Polygon\""), 9, "\"LineString\"");
+  EXPECT_NE(errorOf(line).find("a LineString geometry"), std::string::npos);
+  EXPECT_TRUE(GeoJsonMissionReader::isGeoJsonPath("charts/Lake.GeoJSON"));
+  EXPECT_FALSE(GeoJsonMissionReader::isGeoJsonPath("missions/lake.yaml"));
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core
