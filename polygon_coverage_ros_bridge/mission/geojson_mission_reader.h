@@ -7,7 +7,7 @@
 
 namespace kinematic_coverage::core {
 
-/// Reads geo-referenced missions (docs/REFERENCE.md, File formats; INTERFACE section 8): a
+/// Reads geo-referenced missions (docs/REFERENCE.md, File formats): a
 /// GeoJSON FeatureCollection in WGS84 ([longitude, latitude]) with one Polygon feature (its
 /// first ring the hull, the others holes; a MultiPolygon or several Polygon features are
 /// unioned, holes kept, and must make one area) and Point features with the property

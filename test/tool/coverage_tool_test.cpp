@@ -705,6 +705,22 @@ TEST(CoverageTool, GeoJsonMissionsPlanAsTheirMetreMissions) {
             trajectory["features"][0]["properties"]["times"].size());
 }
 
+TEST(CoverageTool, PlansTheShippedLakeChartEndToEnd) {
+  // config/missions/kleinhesseloher_see.geojson: a lake outline in WGS84 with two islands.
+  const std::string dir = scratchDir() + "/lake_chart";
+  std::filesystem::remove_all(dir);
+  const ToolRun run = runTool("plan '" + std::string(KC_SOURCE_DIR) +
+                              "/config/missions/kleinhesseloher_see.geojson' --out '" + dir + "'");
+  ASSERT_EQ(run.exit_status, 0) << run.out;
+  EXPECT_TRUE(run.err_lines.empty()) << run.err_lines.front();
+  const std::string json = readText(dir + "/metrics.json");
+  EXPECT_GE(metric(json, "reachable_coverage_percent"), 99.9) << json;
+  EXPECT_GT(metric(json, "cells"), 1.0);
+  for (const char* file : {"waypoints.geojson", "trajectory.geojson", "plot.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir + "/" + file)) << file;
+  }
+}
+
 TEST(CoverageTool, RejectsBadGeoJsonWithOneLine) {
   const std::string point_start =
       R"({"type": "Feature", "properties": {"role": "start"}, )"
