@@ -8,20 +8,14 @@
 namespace kinematic_coverage::core {
 namespace {
 
-const PlannerParameters& validated(const PlannerParameters& parameters) {
-  ParameterValidator().validate(parameters);
-  return parameters;
-}
+// The mappings of a parameter set already checked: each public function below checks the
+// set once (ParameterValidator), then maps with these.
 
-}  // namespace
-
-VehicleLimits vehicleLimitsOf(const PlannerParameters& parameters) {
-  const PlannerParameters& p = validated(parameters);
+VehicleLimits vehicleLimits(const PlannerParameters& p) {
   return VehicleLimits{p.v_max, p.a_max, p.yaw_rate_max, p.turning_radius};
 }
 
-SensorOptions sensorOptionsOf(const PlannerParameters& parameters) {
-  const PlannerParameters& p = validated(parameters);
+SensorOptions sensorOptions(const PlannerParameters& p) {
   SensorOptions options;
   options.model = choiceOf("sensor_model", p.sensor_model, kSensorModels);
   options.lateral_fov = p.lateral_fov;
@@ -30,6 +24,37 @@ SensorOptions sensorOptionsOf(const PlannerParameters& parameters) {
   options.sensor_distance = p.sensor_distance;
   options.lateral_overlap = p.lateral_overlap;
   return options;
+}
+
+GlobalSmoothingOptions globalSmoothingOptions(const PlannerParameters& p) {
+  GlobalSmoothingOptions options;
+  options.vehicle = vehicleLimits(p);
+  options.min_turning_radius = p.min_turning_radius > 0.0 ? p.min_turning_radius : p.turning_radius;
+  const FrustumSensor sensor = FrustumSensor::fromOptions(sensorOptions(p));
+  if (p.coverage_preserving) options.preserved_sensor = sensor;
+  if (choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies) ==
+      SmoothingStrategy::kCoverageSafe) {
+    options.makeCoverageSafe(sensor, p.wall_distance);
+    options.max_turning_radius = p.max_turning_radius > 0.0
+                                     ? p.max_turning_radius
+                                     : std::max(p.turning_radius, p.v_max / p.yaw_rate_max);
+  }
+  return options;
+}
+
+const PlannerParameters& validated(const PlannerParameters& parameters) {
+  ParameterValidator().validate(parameters);
+  return parameters;
+}
+
+}  // namespace
+
+VehicleLimits vehicleLimitsOf(const PlannerParameters& parameters) {
+  return vehicleLimits(validated(parameters));
+}
+
+SensorOptions sensorOptionsOf(const PlannerParameters& parameters) {
+  return sensorOptions(validated(parameters));
 }
 
 FrustumSensor sensorOf(const PlannerParameters& parameters) {
@@ -46,33 +71,21 @@ OffsetParts offsetPartsOf(const PlannerParameters& parameters) {
 }
 
 SegmentCost segmentCostOf(const PlannerParameters& parameters) {
-  return SegmentCost(choiceOf("cost_function", validated(parameters).cost_function, kCostFunctions),
-                     vehicleLimitsOf(parameters));
+  const PlannerParameters& p = validated(parameters);
+  return SegmentCost(choiceOf("cost_function", p.cost_function, kCostFunctions), vehicleLimits(p));
 }
 
 GlobalSmoothingOptions globalSmoothingOptionsOf(const PlannerParameters& parameters) {
-  const PlannerParameters& p = validated(parameters);
-  GlobalSmoothingOptions options;
-  options.vehicle = vehicleLimitsOf(p);
-  options.min_turning_radius = p.min_turning_radius > 0.0 ? p.min_turning_radius : p.turning_radius;
-  if (p.coverage_preserving) options.preserved_sensor = sensorOf(p);
-  if (choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies) ==
-      SmoothingStrategy::kCoverageSafe) {
-    options.makeCoverageSafe(sensorOf(p), p.wall_distance);
-    options.max_turning_radius = p.max_turning_radius > 0.0
-                                     ? p.max_turning_radius
-                                     : std::max(p.turning_radius, p.v_max / p.yaw_rate_max);
-  }
-  return options;
+  return globalSmoothingOptions(validated(parameters));
 }
 
 TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters) {
   const PlannerParameters& p = validated(parameters);
   TrajectoryOptions options;
-  options.vehicle = vehicleLimitsOf(p);
+  options.vehicle = vehicleLimits(p);
   options.smoothing = p.smoothing;
   options.strategy = choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies);
-  options.global = globalSmoothingOptionsOf(p);
+  options.global = globalSmoothingOptions(p);
   options.segment_sampling_distance = p.segment_sampling_distance;
   options.arc_sampling_distance = p.arc_sampling_distance;
   options.rotation_sampling_angle = p.rotation_sampling_angle;
@@ -82,7 +95,7 @@ TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters) {
 RobotModel robotModelOf(const PlannerParameters& parameters) {
   const PlannerParameters& p = validated(parameters);
   RobotModel model;
-  model.vehicle = vehicleLimitsOf(p);
+  model.vehicle = vehicleLimits(p);
   model.yaw_gain = p.yaw_gain;
   model.position_gain = p.position_gain;
   model.position_tolerance = p.position_tolerance;
@@ -98,7 +111,7 @@ RemainingAreaOptions remainingAreaOptionsOf(const PlannerParameters& parameters)
   const PlannerParameters& p = validated(parameters);
   RemainingAreaOptions options;
   options.method = choiceOf("replanning_method", p.replanning_method, kReplanningMethods);
-  options.sensor = sensorOptionsOf(p);
+  options.sensor = sensorOptions(p);
   options.sliver_fraction = p.replanning_sliver_fraction;
   options.min_area = p.replanning_min_area;
   options.simplify_tolerance = p.replanning_simplify_tolerance;
