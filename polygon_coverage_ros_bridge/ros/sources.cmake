@@ -6,7 +6,7 @@ add_library(kc_ros_bridge STATIC
   polygon_coverage_ros_bridge/ros/ros_parameter_reader.cpp
   polygon_coverage_ros_bridge/ros/plan_markers.cpp
   polygon_coverage_ros_bridge/ros/trajectory_markers.cpp
-  polygon_coverage_ros_bridge/ros/heatmap_markers.cpp
+  polygon_coverage_ros_bridge/ros/heatmap_grid.cpp
   polygon_coverage_ros_bridge/ros/coverage_planner_node.cpp)
 target_include_directories(kc_ros_bridge PUBLIC ${PROJECT_SOURCE_DIR} ${catkin_INCLUDE_DIRS}
   ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})

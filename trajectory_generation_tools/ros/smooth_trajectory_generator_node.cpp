@@ -1,5 +1,6 @@
 #include "trajectory_generation_tools/ros/smooth_trajectory_generator_node.h"
 
+#include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -14,7 +15,7 @@
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
-#include "polygon_coverage_ros_bridge/ros/heatmap_markers.h"
+#include "polygon_coverage_ros_bridge/ros/heatmap_grid.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
 #include "polygon_coverage_ros_bridge/ros/trajectory_markers.h"
@@ -35,6 +36,8 @@ SmoothTrajectoryGeneratorNode::SmoothTrajectoryGeneratorNode(const ros::NodeHand
   trajectory_publisher_ = node_.advertise<geometry_msgs::PoseArray>("trajectory", 1, true);
   path_publisher_ = node_.advertise<nav_msgs::Path>("trajectory_path", 1, true);
   marker_publisher_ = private_node_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
+  heatmap_publisher_ =
+      private_node_.advertise<nav_msgs::OccupancyGrid>("coverage_heatmap", 1, true);
   status_publisher_ = private_node_.advertise<kinematic_coverage::PlanStatus>("status", 10, true);
   polygon_subscriber_ =
       node_.subscribe("polygon", 1, &SmoothTrajectoryGeneratorNode::onPolygon, this);
@@ -120,8 +123,8 @@ void SmoothTrajectoryGeneratorNode::generate() {
     for (const core::TrajectoryPose& pose : trajectory.poses) {
       poses.push_back({pose.x, pose.y, pose.yaw});
     }
-    markers.markers.push_back(heatmapMarker(*free_area_, poses, parameters, header));
     marker_publisher_.publish(markers);
+    heatmap_publisher_.publish(heatmapGrid(*free_area_, poses, parameters, header));
     const core::SmoothingStatistics& turns = trajectory.statistics;
     std::ostringstream summary;
     summary << turns.turns_smoothed << " of " << turns.turns_total << " turns smoothed (inner "

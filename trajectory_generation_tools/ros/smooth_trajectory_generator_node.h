@@ -17,10 +17,10 @@ namespace kinematic_coverage::nodes {
 /// (Algorithm 1 with the raw hull and holes), samples and times it with the core's
 /// TrajectoryGenerator, and publishes `trajectory`, `trajectory_path` (stamped with the
 /// time of planning plus each pose's time offset), `~markers` (the smoothed path by
-/// variant and the coverage heatmap) and `~status`. A polygon is validated and cleaned when
-/// it arrives; a waypoint list is checked when it arrives (at least one pose, finite
-/// positions, unit quaternions, the polygon's frame) and one that arrives before any valid
-/// polygon waits for one. Bad input (an invalid polygon, a bad waypoint list, parameters)
+/// variant), `~coverage_heatmap` (an OccupancyGrid, heatmapGrid) and `~status`. A polygon is
+/// validated and cleaned when it arrives; a waypoint list is checked when it arrives (at least one
+/// pose, finite positions, unit quaternions, the polygon's frame) and one that arrives before any
+/// valid polygon waits for one. Bad input (an invalid polygon, a bad waypoint list, parameters)
 /// gives one ROS_ERROR, a failed status and no output; the node keeps running.
 class SmoothTrajectoryGeneratorNode {
  public:
@@ -49,6 +49,7 @@ class SmoothTrajectoryGeneratorNode {
   ros::Publisher trajectory_publisher_;
   ros::Publisher path_publisher_;
   ros::Publisher marker_publisher_;
+  ros::Publisher heatmap_publisher_;
   ros::Publisher status_publisher_;
   /// The newest valid polygon, cleaned, and its frame (docs/REFERENCE.md, Messages).
   std::optional<core::PolygonWithHoles> free_area_;
