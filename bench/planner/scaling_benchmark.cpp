@@ -117,13 +117,13 @@ std::vector<std::pair<std::string, double>> stageTimes(const std::string& output
   return stages;
 }
 
+/// What a failed run said: its error line, else its last line (90 characters at most).
 std::string firstWords(const std::string& output) {
   std::stringstream stream(output);
   std::string text;
   std::string last;
   while (std::getline(stream, text)) {
-    if (text.rfind("error", 0) == 0 || text.find("error:") != std::string::npos)
-      return text.substr(0, 90);
+    if (text.rfind("error: ", 0) == 0) return text.substr(0, 90);
     if (!text.empty()) last = text;
   }
   return last.substr(0, 90);

@@ -227,31 +227,6 @@ YAML::Node loadYaml(const std::string& text, const std::string& source_name) {
   }
 }
 
-}  // namespace
-
-std::string MissionFileReader::readText(const std::string& path) {
-  std::error_code code;
-  const auto status = std::filesystem::status(path, code);
-  if (code || !std::filesystem::exists(status)) {
-    throw InvalidInputError(path + ": no such file");
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    throw InvalidInputError(path + ": not a regular file");
-  }
-  const auto size = std::filesystem::file_size(path, code);
-  if (!code && size > MissionFileReader::kMaxMissionFileBytes) {
-    throw InvalidInputError(path + ": " + std::to_string(size) + " bytes, more than the limit of " +
-                            std::to_string(MissionFileReader::kMaxMissionFileBytes));
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw InvalidInputError(path + ": cannot be read");
-  return text.str();
-}
-
-namespace {
-
 YAML::Node rootMap(const std::string& text, const std::string& source_name) {
   const YAML::Node root = loadYaml(text, source_name);
   if (root.IsNull()) throw InvalidInputError(source_name + ": the file is empty");
@@ -276,6 +251,27 @@ void applyOverride(PlannerParameters& parameters, const std::string& assignment)
 }
 
 }  // namespace
+
+std::string MissionFileReader::readText(const std::string& path) {
+  std::error_code code;
+  const auto status = std::filesystem::status(path, code);
+  if (code || !std::filesystem::exists(status)) {
+    throw InvalidInputError(path + ": no such file");
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    throw InvalidInputError(path + ": not a regular file");
+  }
+  const auto size = std::filesystem::file_size(path, code);
+  if (!code && size > kMaxMissionFileBytes) {
+    throw InvalidInputError(path + ": " + std::to_string(size) + " bytes, more than the limit of " +
+                            std::to_string(kMaxMissionFileBytes));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw InvalidInputError(path + ": cannot be read");
+  return text.str();
+}
 
 Mission MissionFileReader::read(const std::string& path, const std::vector<std::string>& overrides,
                                 const PlannerParameters& base) const {
