@@ -13,14 +13,21 @@
 // a map fails to plan or its time-cost ratio exceeds --max-cost-ratio (default 1.005).
 // Maps not recorded are left out, so a run over fewer shorelines checks those it has.
 //
+// --maps NAME[,NAME...] plans only the maps named; --write-maps DIR writes each map planned
+// as a mission file DIR/NAME.yaml (missionYaml: polygon, start, goal and the parameters the
+// generators vary), to look at one with `coverage_tool plan`. --set NAME=VALUE (repeatable)
+// plans every map with that parameter changed, to measure a planner option against the record.
+//
 // Usage: planner_reference [--runs R] [--shorelines N] [--compare FILE]
-//                          [--max-cost-ratio X]
+//                          [--max-cost-ratio X] [--maps NAME[,NAME...]] [--write-maps DIR]
+//                          [--set NAME=VALUE]...
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -28,6 +35,7 @@
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "test/support/hard_map_generator.h"
+#include "test/support/hard_map_yaml.h"
 #include "test/support/lake_map_generator.h"
 
 namespace {
@@ -112,6 +120,16 @@ std::map<std::string, ReferenceRow> readReference(const std::string& path) {
   return rows;
 }
 
+/// The names of a comma-separated list.
+std::set<std::string> namesOf(const std::string& list) {
+  std::set<std::string> names;
+  std::istringstream stream(list);
+  for (std::string name; std::getline(stream, name, ',');) {
+    if (!name.empty()) names.insert(name);
+  }
+  return names;
+}
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());
@@ -125,6 +143,9 @@ int main(int argc, char** argv) {
   int shorelines = 60;
   std::string compare;
   double max_cost_ratio = 1.005;
+  std::set<std::string> only;
+  std::string write_maps;
+  std::vector<std::string> overrides;
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
     if (argument == "--runs" && i + 1 < argc) {
@@ -135,10 +156,17 @@ int main(int argc, char** argv) {
       compare = argv[++i];
     } else if (argument == "--max-cost-ratio" && i + 1 < argc) {
       max_cost_ratio = std::atof(argv[++i]);
+    } else if (argument == "--set" && i + 1 < argc) {
+      overrides.push_back(argv[++i]);
+    } else if (argument == "--maps" && i + 1 < argc) {
+      only = namesOf(argv[++i]);
+    } else if (argument == "--write-maps" && i + 1 < argc) {
+      write_maps = argv[++i];
     } else {
       std::fprintf(stderr,
                    "usage: planner_reference [--runs R] [--shorelines N] [--compare FILE] "
-                   "[--max-cost-ratio X]\n");
+                   "[--max-cost-ratio X] [--maps NAME[,NAME...]] [--write-maps DIR] [--set "
+                   "NAME=VALUE]...\n");
       return 2;
     }
   }
@@ -153,7 +181,15 @@ int main(int argc, char** argv) {
   double worst_cost_ratio = 0.0;
   std::vector<double> large_shoreline_time_ratios;
   std::size_t compared = 0;
-  for (const ReferenceMap& map : referenceMaps(shorelines)) {
+  for (ReferenceMap& map : referenceMaps(shorelines)) {
+    if (!only.empty() && only.count(map.name) == 0) continue;
+    map.mission.parameters = kinematic_coverage::core::MissionFileReader().withOverrides(
+        map.mission.parameters, overrides);
+    if (!write_maps.empty()) {
+      std::ofstream(write_maps + "/" + map.name + ".yaml")
+          << kinematic_coverage::core::testing::missionYaml(map.mission,
+                                                            "planner_reference map " + map.name);
+    }
     ReferenceRow row;
     try {
       row = measure(map, runs);

@@ -44,7 +44,7 @@ Decomposition computeBestDecomposition(const PolygonWithHoles& area, Decompositi
   std::vector<Ring> rings = {area.hull};
   rings.insert(rings.end(), area.holes.begin(), area.holes.end());
   const std::vector<double> directions = candidateDirections(rings, options.max_directions);
-  const SweepLineDecomposition decomposition(type);
+  const SweepLineDecomposition decomposition(type, options.joining);
   Decomposition best;
   best.total_altitude = std::numeric_limits<double>::infinity();
   for (double direction : directions) {

@@ -31,6 +31,8 @@ struct DecompositionOptions {
   /// with an altitude within `altitude_slack` times the best one.
   std::size_t max_cell_directions = 4;
   double altitude_slack = 1.5;
+  /// Where boustrophedon cells end.
+  CellJoining joining = CellJoining::kAtCriticalPoints;
 };
 
 /// Decomposes the area for every candidate direction and keeps the decomposition with

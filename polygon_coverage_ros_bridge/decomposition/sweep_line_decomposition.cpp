@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -40,6 +41,8 @@ struct Trapezoid {
   std::vector<std::size_t> left_neighbours;
   std::vector<std::size_t> right_neighbours;
   std::size_t cell = 0;
+  /// CellJoining::kLongestOverlap: the left neighbour whose cell this one continues.
+  std::optional<std::size_t> continues;
 };
 
 /// Drops repeated vertices and vertices lying on the segment between their neighbours.
@@ -153,15 +156,42 @@ SlabTrapezoids slabTrapezoids(const SlabEdges& slabs) {
   return result;
 }
 
+/// Two trapezoids connected across a slab boundary, and the length of their shared slice.
+struct Connection {
+  double overlap = 0.0;
+  std::size_t left = 0;
+  std::size_t right = 0;
+};
+
+/// Picks, longest shared slice first, which connections continue a cell: each trapezoid
+/// continues at most one left neighbour's cell and is continued by at most one right
+/// neighbour (a greedy matching, so cells stay chains of one trapezoid per slab).
+void chooseContinuations(std::vector<Connection> connections, std::vector<Trapezoid>* trapezoids) {
+  std::stable_sort(connections.begin(), connections.end(),
+                   [](const Connection& a, const Connection& b) { return a.overlap > b.overlap; });
+  std::vector<std::size_t> continued;
+  for (const Connection& connection : connections) {
+    Trapezoid& right = (*trapezoids)[connection.right];
+    const bool left_taken =
+        std::find(continued.begin(), continued.end(), connection.left) != continued.end();
+    if (left_taken || right.continues) continue;
+    right.continues = connection.left;
+    continued.push_back(connection.left);
+  }
+}
+
 /// Connects the trapezoids across each slab boundary whose intervals on the shared line
-/// overlap by more than `tolerance`.
-void connectAcrossSlabs(const SlabEdges& slabs, double tolerance, SlabTrapezoids* slab_trapezoids) {
+/// overlap by more than `tolerance`; with CellJoining::kLongestOverlap also chooses which
+/// connections continue a cell.
+void connectAcrossSlabs(const SlabEdges& slabs, double tolerance, CellJoining joining,
+                        SlabTrapezoids* slab_trapezoids) {
   std::vector<Trapezoid>& trapezoids = slab_trapezoids->trapezoids;
   const std::vector<Edge>& edges = slabs.edges;
   for (std::size_t s = 0; s + 2 < slabs.slab_x.size(); ++s) {
     const double x = slabs.slab_x[s + 1];
     const auto& lefts = slab_trapezoids->of_slab[s];
     const auto& rights = slab_trapezoids->of_slab[s + 1];
+    std::vector<Connection> connections;
     std::size_t i = 0;
     std::size_t j = 0;
     while (i < lefts.size() && j < rights.size()) {
@@ -171,9 +201,11 @@ void connectAcrossSlabs(const SlabEdges& slabs, double tolerance, SlabTrapezoids
       const double l_hi = yAt(edges[l.top], x);
       const double r_lo = yAt(edges[r.bottom], x);
       const double r_hi = yAt(edges[r.top], x);
-      if (std::min(l_hi, r_hi) - std::max(l_lo, r_lo) > tolerance) {
+      const double overlap = std::min(l_hi, r_hi) - std::max(l_lo, r_lo);
+      if (overlap > tolerance) {
         l.right_neighbours.push_back(rights[j]);
         r.left_neighbours.push_back(lefts[i]);
+        connections.push_back({overlap, lefts[i], rights[j]});
       }
       if (l_hi < r_hi) {
         ++i;
@@ -181,21 +213,29 @@ void connectAcrossSlabs(const SlabEdges& slabs, double tolerance, SlabTrapezoids
         ++j;
       }
     }
+    if (joining == CellJoining::kLongestOverlap) chooseContinuations(connections, &trapezoids);
   }
 }
 
 /// Joins trapezoids into cells, left to right: a trapezoid continues its left neighbour's
 /// cell when each is the other's only neighbour (boustrophedon) and, for trapezoidal
-/// cells, when both lie between the same two edges. Returns the cells' trapezoids.
-std::vector<std::vector<std::size_t>> joinIntoCells(DecompositionType type,
+/// cells, when both lie between the same two edges; with CellJoining::kLongestOverlap a
+/// boustrophedon trapezoid continues the cell chosen by chooseContinuations. Returns the
+/// cells' trapezoids.
+std::vector<std::vector<std::size_t>> joinIntoCells(DecompositionType type, CellJoining joining,
                                                     SlabTrapezoids* slab_trapezoids) {
   std::vector<Trapezoid>& trapezoids = slab_trapezoids->trapezoids;
   std::vector<std::vector<std::size_t>> cells;
+  const bool chosen =
+      type == DecompositionType::kBoustrophedon && joining == CellJoining::kLongestOverlap;
   for (const std::vector<std::size_t>& slab : slab_trapezoids->of_slab) {
     for (std::size_t t : slab) {
       Trapezoid& trapezoid = trapezoids[t];
       bool joined = false;
-      if (trapezoid.left_neighbours.size() == 1) {
+      if (chosen) {
+        joined = trapezoid.continues.has_value();
+        if (joined) trapezoid.cell = trapezoids[*trapezoid.continues].cell;
+      } else if (trapezoid.left_neighbours.size() == 1) {
         const Trapezoid& left = trapezoids[trapezoid.left_neighbours.front()];
         joined = left.right_neighbours.size() == 1;
         if (type == DecompositionType::kTrapezoidal) {
@@ -253,9 +293,9 @@ std::vector<Ring> SweepLineDecomposition::decompose(const PolygonWithHoles& poly
   const SlabEdges slabs = slabEdges(rings, tolerance);
   if (slabs.slab_x.size() < 2) return {};
   SlabTrapezoids slab_trapezoids = slabTrapezoids(slabs);
-  connectAcrossSlabs(slabs, tolerance, &slab_trapezoids);
+  connectAcrossSlabs(slabs, tolerance, joining_, &slab_trapezoids);
   std::vector<Ring> result;
-  for (const auto& cell : joinIntoCells(type_, &slab_trapezoids)) {
+  for (const auto& cell : joinIntoCells(type_, joining_, &slab_trapezoids)) {
     Ring ring = simplified(cellOutline(cell, slabs, slab_trapezoids.trapezoids), tolerance);
     if (ring.size() < 3) continue;
     for (Point2& p : ring) p = fromSweepFrame(p, direction);

@@ -30,6 +30,7 @@ const std::vector<ParameterField>& parameterFields() {
   using P = PlannerParameters;
   static const std::vector<ParameterField> fields = {
       {"decomposition_type", &P::decomposition_type},
+      {"cell_joining", &P::cell_joining},
       {"cost_function", &P::cost_function},
       {"v_max", &P::v_max},
       {"a_max", &P::a_max},

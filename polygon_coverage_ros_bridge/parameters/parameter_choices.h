@@ -23,6 +23,9 @@ using ParameterChoices = std::array<std::pair<const char*, Value>, N>;
 inline constexpr ParameterChoices<DecompositionType, 2> kDecompositionTypes{
     {{"boustrophedon", DecompositionType::kBoustrophedon},
      {"trapezoidal", DecompositionType::kTrapezoidal}}};
+inline constexpr ParameterChoices<CellJoining, 2> kCellJoinings{
+    {{"critical_points", CellJoining::kAtCriticalPoints},
+     {"longest_overlap", CellJoining::kLongestOverlap}}};
 inline constexpr ParameterChoices<CostFunction, 3> kCostFunctions{
     {{"distance", CostFunction::kDistance},
      {"time", CostFunction::kTime},

@@ -29,6 +29,7 @@ void requireOpenAngle(const char* name, double value) {
 
 void ParameterValidator::validate(const PlannerParameters& p) const {
   choiceOf("decomposition_type", p.decomposition_type, kDecompositionTypes);
+  choiceOf("cell_joining", p.cell_joining, kCellJoinings);
   choiceOf("cost_function", p.cost_function, kCostFunctions);
   requirePositive("v_max", p.v_max, "m/s");
   requirePositive("a_max", p.a_max, "m/s^2");

@@ -9,11 +9,14 @@ namespace kinematic_coverage::core {
 /// parameters. Units: metres, radians, seconds.
 struct PlannerParameters {
   std::string decomposition_type = "boustrophedon";  ///< or "trapezoidal"
-  std::string cost_function = "time";                ///< "distance", "time" or "waypoints"
-  double v_max = 0.5;                                ///< m/s
-  double a_max = 0.2;                                ///< m/s^2
-  double yaw_rate_max = 0.5;                         ///< rad/s
-  double wall_distance = 1.0;                        ///< m kept from hull and holes
+  /// Where boustrophedon cells end: "critical_points" (Choset's cells) or
+  /// "longest_overlap" (one cell goes on across each critical point).
+  std::string cell_joining = "critical_points";
+  std::string cost_function = "time";  ///< "distance", "time" or "waypoints"
+  double v_max = 0.5;                  ///< m/s
+  double a_max = 0.2;                  ///< m/s^2
+  double yaw_rate_max = 0.5;           ///< rad/s
+  double wall_distance = 1.0;          ///< m kept from hull and holes
   /// Where the wall offset splits the free area: "all" parts planned and joined through
   /// their gaps, or only the "largest".
   std::string offset_parts = "all";

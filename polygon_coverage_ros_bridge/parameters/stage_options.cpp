@@ -66,6 +66,10 @@ DecompositionType decompositionTypeOf(const PlannerParameters& parameters) {
                   kDecompositionTypes);
 }
 
+CellJoining cellJoiningOf(const PlannerParameters& parameters) {
+  return choiceOf("cell_joining", validated(parameters).cell_joining, kCellJoinings);
+}
+
 OffsetParts offsetPartsOf(const PlannerParameters& parameters) {
   return choiceOf("offset_parts", validated(parameters).offset_parts, kOffsetParts);
 }

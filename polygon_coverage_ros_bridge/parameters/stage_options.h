@@ -33,6 +33,9 @@ FrustumSensor sensorOf(const PlannerParameters& parameters);
 /// decomposition_type.
 DecompositionType decompositionTypeOf(const PlannerParameters& parameters);
 
+/// cell_joining.
+CellJoining cellJoiningOf(const PlannerParameters& parameters);
+
 /// offset_parts.
 OffsetParts offsetPartsOf(const PlannerParameters& parameters);
 

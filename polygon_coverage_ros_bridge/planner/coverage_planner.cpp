@@ -41,6 +41,11 @@ constexpr int kExactClusterLimit = 14;
 /// instead of 15-19 s (60 s, its time cap, with neither), for tours 0.1-0.4 % costlier than
 /// a population of 100 finds. Only instances of more than 80 cells have a larger default.
 constexpr int kGtspMaxPopulation = 50;
+/// With cell_joining longest_overlap, a map whose Choset decomposition has at most this many
+/// cells is planned with those cells too, and the cheaper tour kept: on small maps the
+/// extra cells can let the tour turn back sooner (a 30 m lake with two islands: 7 % cheaper
+/// than with the joined cells), and solving both costs little there.
+constexpr std::size_t kChosetAlternativeCellLimit = 50;
 /// Parts of a coverage region smaller than this share of a square sweep distance are
 /// left out: rounding leftovers of the Boolean operations, not area to sweep.
 constexpr double kMinPartShare = 1e-4;
@@ -357,21 +362,25 @@ std::vector<PolygonWithHoles> regionStage(const PlanningRun& run,
 
 /// Cell decomposition over candidate directions, per part, within the size limits.
 std::vector<Decomposition> decomposeStage(const PlanningRun& run,
-                                          const std::vector<PolygonWithHoles>& parts) {
+                                          const std::vector<PolygonWithHoles>& parts,
+                                          CellJoining joining) {
   const Clock::time_point t = Clock::now();
   const DecompositionType type = decompositionTypeOf(run.parameters);
+  DecompositionOptions options;
+  options.joining = joining;
   std::vector<Decomposition> decompositions;
   std::size_t directions_tried = 0;
   std::size_t cell_count = 0;
   for (const PolygonWithHoles& part : parts) {
-    decompositions.push_back(computeBestDecomposition(part, type));
+    decompositions.push_back(computeBestDecomposition(part, type, options));
     directions_tried = std::max(directions_tried, decompositions.back().directions_tried);
     cell_count += decompositions.back().cells.size();
     for (const Cell& cell : decompositions.back().cells) run.plan.cells.push_back(cell.polygon);
   }
   std::ostringstream summary;
-  summary << cell_count << " " << run.parameters.decomposition_type << " cells, best of "
-          << directions_tried << " directions";
+  summary << cell_count << " " << run.parameters.decomposition_type << " cells"
+          << (joining == CellJoining::kLongestOverlap ? " (joined across critical points)" : "")
+          << ", best of " << directions_tried << " directions";
   run.stage("decompose", t, summary.str());
 
   // Size limits, before anything of their size is built.
@@ -496,6 +505,60 @@ GtspSolution solveStage(const PlanningRun& run, const GtspInstance& instance) {
           << solution.cost;
   run.stage("solve", t, summary.str());
   return solution;
+}
+
+/// The sweep patterns and the tour through them that the path follows.
+struct Tour {
+  SweepStage sweeps;
+  GtspSolution solution;
+};
+
+/// With cells joined across critical points: where Choset's cells are few
+/// (kChosetAlternativeCellLimit), plans them too, quietly, and keeps their tour when it is
+/// cheaper (their cells and warnings with it). Records the stage `alternative`.
+void chosetAlternativeStage(const PlanningRun& run, const std::vector<PolygonWithHoles>& parts,
+                            const OffsetStage& offset, const FrustumSensor& sensor,
+                            const VisibilityGraph& graph, const SegmentCost& segment_cost,
+                            Tour* tour) {
+  const Clock::time_point t = Clock::now();
+  const std::size_t joined_cells = tour->sweeps.clusters.size() - kTerminalNodes;
+  std::ostringstream summary;
+  if (joined_cells > kChosetAlternativeCellLimit) {
+    summary << "Choset's cells not planned: the " << joined_cells << " joined cells are more than "
+            << kChosetAlternativeCellLimit;
+    run.stage("alternative", t, summary.str());
+    return;
+  }
+  CoveragePlan scratch;
+  const PlanningRun quiet{run.parameters,  run.free_area, run.start,    run.goal,
+                          StageCallback(), scratch,       run.tolerance};
+  const std::vector<Decomposition> decompositions =
+      decomposeStage(quiet, parts, CellJoining::kAtCriticalPoints);
+  if (scratch.cells.size() > kChosetAlternativeCellLimit) {
+    summary << "Choset's cells not planned: " << scratch.cells.size() << " cells, more than "
+            << kChosetAlternativeCellLimit;
+    run.stage("alternative", t, summary.str());
+    return;
+  }
+  Tour choset;
+  choset.sweeps = sweepStage(quiet, t, parts, decompositions, sensor, graph);
+  choset.solution =
+      solveStage(quiet, transitionStage(quiet, choset.sweeps, offset, graph, segment_cost));
+  const bool cheaper = choset.solution.cost < tour->solution.cost;
+  summary << "Choset's " << scratch.cells.size() << " cells: tour cost " << choset.solution.cost
+          << " against " << tour->solution.cost << " with the " << joined_cells
+          << " joined cells; kept " << (cheaper ? "Choset's" : "the joined");
+  if (cheaper) {
+    *tour = std::move(choset);
+    run.plan.cells = std::move(scratch.cells);
+    for (std::string& warning : scratch.warnings) {
+      if (std::find(run.plan.warnings.begin(), run.plan.warnings.end(), warning) ==
+          run.plan.warnings.end()) {
+        run.plan.warnings.push_back(std::move(warning));
+      }
+    }
+  }
+  run.stage("alternative", t, summary.str());
 }
 
 /// The waypoint path: the route through the patterns in the solution's order, with
@@ -643,20 +706,31 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   // over a size limit.
   const char* failing_stage = "decompose";
   try {
-    const std::vector<Decomposition> decompositions = decomposeStage(run, parts);
+    const CellJoining joining =
+        decompositionTypeOf(parameters_) == DecompositionType::kBoustrophedon
+            ? cellJoiningOf(parameters_)
+            : CellJoining::kAtCriticalPoints;
+    const std::vector<Decomposition> decompositions = decomposeStage(run, parts, joining);
 
     const Clock::time_point sweeps_start = Clock::now();
     failing_stage = "sweeps";
     const SegmentCost segment_cost = segmentCostOf(parameters_);
     const VisibilityGraph graph(plan.route_area, segment_cost);
     const FrustumSensor sensor = sensorOf(parameters_);
-    const SweepStage sweeps = sweepStage(run, sweeps_start, parts, decompositions, sensor, graph);
+    Tour tour;
+    tour.sweeps = sweepStage(run, sweeps_start, parts, decompositions, sensor, graph);
 
     failing_stage = "transitions";
-    const GtspInstance instance = transitionStage(run, sweeps, offset, graph, segment_cost);
+    const GtspInstance instance = transitionStage(run, tour.sweeps, offset, graph, segment_cost);
 
     failing_stage = "solve";
-    const GtspSolution solution = solveStage(run, instance);
+    tour.solution = solveStage(run, instance);
+    if (joining == CellJoining::kLongestOverlap) {
+      failing_stage = "alternative";
+      chosetAlternativeStage(run, parts, offset, sensor, graph, segment_cost, &tour);
+    }
+    const SweepStage& sweeps = tour.sweeps;
+    const GtspSolution& solution = tour.solution;
 
     Clock::time_point t = Clock::now();
     failing_stage = "path";

@@ -10,6 +10,7 @@
 
 #include "kinematic_coverage/PlanStatus.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
@@ -116,6 +117,7 @@ geometry_msgs::PointStamped CoveragePlannerNode::inPolygonFrame(
 bool CoveragePlannerNode::plan(std::string& message) {
   const auto start_time = std::chrono::steady_clock::now();
   std::string finished;
+  std::string failed_stage;  // the stage an internal error names
   try {
     if (!polygon_ || !start_ || !goal_) {
       std::string missing;
@@ -159,10 +161,13 @@ bool CoveragePlannerNode::plan(std::string& message) {
     return true;
   } catch (const core::InvalidInputError& error) {
     message = error.what();
+  } catch (const core::InternalError& error) {
+    message = std::string("internal error: ") + error.what();
+    failed_stage = error.stage();
   } catch (const std::exception& error) {
     message = std::string("internal error: ") + error.what();
   }
-  const std::string stage = nextStage(finished);
+  const std::string stage = failed_stage.empty() ? nextStage(finished) : failed_stage;
   ROS_ERROR("coverage_planner: %s: %s", stage.c_str(), message.c_str());
   publishStatus(stage, false, message, secondsSince(start_time));
   return false;

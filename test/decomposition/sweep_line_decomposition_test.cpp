@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -98,6 +99,76 @@ TEST(SweepLineDecomposition, RandomMapsTileTheArea) {
       expectValidDecomposition(area, SweepLineDecomposition(type).decompose(area, direction),
                                direction);
     }
+  }
+}
+
+TEST(SweepLineDecomposition, LongestOverlapJoinsAcrossCriticalPoints) {
+  const SweepLineDecomposition joined(DecompositionType::kBoustrophedon,
+                                      CellJoining::kLongestOverlap);
+  // Around a hole: Choset's four cells become two (left part with the wider side of the
+  // hole, the other side with the right part).
+  const auto around_hole = joined.decompose(kSquareWithHole, M_PI / 2);
+  EXPECT_EQ(around_hole.size(), 2u);
+  expectValidDecomposition(kSquareWithHole, around_hole, M_PI / 2);
+  // A U with horizontal lanes: the base goes on into one arm; the other arm is a cell.
+  const PolygonWithHoles u = {{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}, {}};
+  const auto u_cells = joined.decompose(u, 0.0);
+  EXPECT_EQ(u_cells.size(), 2u);
+  expectValidDecomposition(u, u_cells, 0.0);
+  // Trapezoidal cells are not joined.
+  EXPECT_EQ(SweepLineDecomposition(DecompositionType::kTrapezoidal, CellJoining::kLongestOverlap)
+                .decompose(kSquareWithHole, M_PI / 2)
+                .size(),
+            4u);
+}
+
+/// A shore whose small bays cut Choset's cells: a square whose top edge is a saw of
+/// `teeth` teeth, each turning back across the lanes.
+PolygonWithHoles sawShore(int teeth) {
+  Ring hull = {{0, 0}, {100, 0}};
+  const double pitch = 100.0 / teeth;
+  for (int k = teeth; k > 0; --k) {
+    const double x = k * pitch;
+    hull.push_back({x, 50.0});
+    hull.push_back({x - 0.7 * pitch, 52.0});
+    hull.push_back({x - 0.5 * pitch, 50.5});
+  }
+  hull.push_back({0, 50.0});
+  return {hull, {}};
+}
+
+TEST(SweepLineDecomposition, LongestOverlapKeepsOpenWaterOneCell) {
+  const PolygonWithHoles shore = sawShore(20);
+  const double lanes_across = M_PI / 2;  // vertical lanes, the sweep moves along the saw
+  const auto choset =
+      SweepLineDecomposition(DecompositionType::kBoustrophedon).decompose(shore, lanes_across);
+  const auto joined =
+      SweepLineDecomposition(DecompositionType::kBoustrophedon, CellJoining::kLongestOverlap)
+          .decompose(shore, lanes_across);
+  expectValidDecomposition(shore, choset, lanes_across);
+  expectValidDecomposition(shore, joined, lanes_across);
+  // Choset: every tooth opens a bay cell and a new cell of the open water below it.
+  EXPECT_GE(choset.size(), 40u);
+  // Joined: the open water is one cell under all the bays, plus one cell per bay.
+  EXPECT_EQ(joined.size(), 21u);
+  double largest = 0.0;
+  for (const Ring& cell : joined) largest = std::max(largest, signedArea(cell));
+  EXPECT_GT(largest, 100.0 * 50.0 - 1e-6);
+}
+
+TEST(SweepLineDecomposition, LongestOverlapRandomMapsTileTheArea) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> angle(0.0, M_PI);
+  const SweepLineDecomposition choset(DecompositionType::kBoustrophedon);
+  const SweepLineDecomposition joined(DecompositionType::kBoustrophedon,
+                                      CellJoining::kLongestOverlap);
+  for (int trial = 0; trial < 200; ++trial) {
+    const PolygonWithHoles area = testing::randomMap(rng, 100.0, 10, 1.0);
+    const double direction = trial % 3 == 0 ? angle(rng) : candidateDirections({area.hull}, 1)[0];
+    SCOPED_TRACE(::testing::Message() << "trial " << trial << " direction " << direction);
+    const auto cells = joined.decompose(area, direction);
+    expectValidDecomposition(area, cells, direction);
+    EXPECT_LE(cells.size(), choset.decompose(area, direction).size());
   }
 }
 

@@ -67,6 +67,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   const std::string base = missionWith("turning_radius", "");
   const std::vector<std::pair<std::string, std::string>> values = {
       {"decomposition_type", "trapezoidal"},
+      {"cell_joining", "longest_overlap"},
       {"cost_function", "distance"},
       {"v_max", "1.5"},
       {"a_max", "0.7"},
@@ -107,6 +108,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   for (const auto& [key, value] : values) yaml += key + ": " + value + "\n";
   const PlannerParameters p = MissionFileReader().parse(yaml, "m.yaml").parameters;
   EXPECT_EQ(p.decomposition_type, "trapezoidal");
+  EXPECT_EQ(p.cell_joining, "longest_overlap");
   EXPECT_EQ(p.cost_function, "distance");
   EXPECT_EQ(p.v_max, 1.5);
   EXPECT_EQ(p.a_max, 0.7);
@@ -310,6 +312,7 @@ TEST(ThesisYaml, DiffersFromTheDefaultsOnlyWhereTheDefaultsGoBeyondTheThesis) {
   // 40 % overlap, 3 m sensor distance, FOV 2.27 and 0.52 rad, 1 m turning radius, sampling
   // 0.5 m on segments and 0.1 m on arcs.
   EXPECT_EQ(thesis.decomposition_type, "boustrophedon");
+  EXPECT_EQ(thesis.cell_joining, "critical_points");
   EXPECT_EQ(thesis.cost_function, "time");
   EXPECT_EQ(thesis.wall_distance, 1.0);
   EXPECT_EQ(thesis.lateral_overlap, 0.4);

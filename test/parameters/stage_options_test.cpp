@@ -19,6 +19,7 @@ std::vector<std::function<void(const PlannerParameters&)>> everyMapping() {
           [](const PlannerParameters& p) { sensorOptionsOf(p); },
           [](const PlannerParameters& p) { sensorOf(p); },
           [](const PlannerParameters& p) { decompositionTypeOf(p); },
+          [](const PlannerParameters& p) { cellJoiningOf(p); },
           [](const PlannerParameters& p) { offsetPartsOf(p); },
           [](const PlannerParameters& p) { segmentCostOf(p); },
           [](const PlannerParameters& p) { globalSmoothingOptionsOf(p); },
@@ -83,6 +84,10 @@ TEST(StageOptions, EveryNameMapsToItsOwnOption) {
     p.decomposition_type = name;
     EXPECT_EQ(decompositionTypeOf(p), type) << name;
   }
+  for (const auto& [name, joining] : kCellJoinings) {
+    p.cell_joining = name;
+    EXPECT_EQ(cellJoiningOf(p), joining) << name;
+  }
   for (const auto& [name, parts] : kOffsetParts) {
     p.offset_parts = name;
     EXPECT_EQ(offsetPartsOf(p), parts) << name;
@@ -136,6 +141,7 @@ TEST(StageOptions, EveryMappingRejectsAParameterSetOutOfRange) {
       [](PlannerParameters& p) { p.v_max = -1.0; },
       [](PlannerParameters& p) { p.lateral_overlap = 1.0; },
       [](PlannerParameters& p) { p.sensor_model = "sonar"; },
+      [](PlannerParameters& p) { p.cell_joining = "anywhere"; },
       [](PlannerParameters& p) { p.replanning_method = "guess"; },
       [](PlannerParameters& p) { p.sim_dt = std::nan(""); }};
   for (std::size_t change = 0; change < changes.size(); ++change) {

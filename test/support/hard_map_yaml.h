@@ -18,19 +18,15 @@ inline std::string ringYaml(const Ring& ring) {
   return text + "]";
 }
 
-/// The map as a mission file that `coverage_tool plan` reads (docs/REFERENCE.md, File
-/// formats): a comment naming family and seed, the polygon, start, goal and the parameters
-/// HardMapGenerator varies; MissionFileReader reads it back to the same mission.
-inline std::string hardMapYaml(const HardMap& map) {
-  const Mission& m = map.mission;
+/// The mission as a mission file that `coverage_tool plan` reads (docs/REFERENCE.md, File
+/// formats): `comment` as its first line, the polygon, start, goal and the parameters the
+/// map generators vary; MissionFileReader reads it back to the same mission.
+inline std::string missionYaml(const Mission& m, const std::string& comment) {
   const PlannerParameters& p = m.parameters;
   const auto point = [](const Point2& q) {
     return "[" + formatRoundTrip(q.x()) + ", " + formatRoundTrip(q.y()) + "]";
   };
-  std::string text = "# HardMapGenerator family " + HardMapGenerator::name(map.family) + ", seed " +
-                     std::to_string(map.seed) + ": footprint " +
-                     formatRoundTrip(map.footprint_width_m) + " m x " +
-                     formatRoundTrip(map.footprint_length_m) + " m\n";
+  std::string text = "# " + comment + "\n";
   text +=
       "frame_id: " + m.frame_id + "\npolygon:\n  hull: " + ringYaml(m.polygon.hull) + "\n  holes:";
   if (m.polygon.holes.empty()) text += " []";
@@ -44,6 +40,14 @@ inline std::string hardMapYaml(const HardMap& map) {
   text += "lateral_overlap: " + formatRoundTrip(p.lateral_overlap) + "\n";
   text += "turning_radius: " + formatRoundTrip(p.turning_radius) + "\n";
   return text;
+}
+
+/// The map as a mission file (missionYaml), its comment naming family, seed and footprint.
+inline std::string hardMapYaml(const HardMap& map) {
+  return missionYaml(map.mission, "HardMapGenerator family " + HardMapGenerator::name(map.family) +
+                                      ", seed " + std::to_string(map.seed) + ": footprint " +
+                                      formatRoundTrip(map.footprint_width_m) + " m x " +
+                                      formatRoundTrip(map.footprint_length_m) + " m");
 }
 
 }  // namespace testing
