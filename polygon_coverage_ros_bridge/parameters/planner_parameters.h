@@ -11,7 +11,7 @@ struct PlannerParameters {
   std::string decomposition_type = "boustrophedon";  ///< or "trapezoidal"
   /// Where boustrophedon cells end: "critical_points" (Choset's cells) or
   /// "longest_overlap" (one cell goes on across each critical point).
-  std::string cell_joining = "critical_points";
+  std::string cell_joining = "longest_overlap";
   std::string cost_function = "time";  ///< "distance", "time" or "waypoints"
   double v_max = 0.5;                  ///< m/s
   double a_max = 0.2;                  ///< m/s^2

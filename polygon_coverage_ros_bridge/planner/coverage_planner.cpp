@@ -507,6 +507,14 @@ GtspSolution solveStage(const PlanningRun& run, const GtspInstance& instance) {
   return solution;
 }
 
+/// The cell joining of the decomposition: the parameter's for boustrophedon cells;
+/// trapezoidal cells are never joined.
+CellJoining cellJoiningFor(const PlannerParameters& parameters) {
+  return decompositionTypeOf(parameters) == DecompositionType::kBoustrophedon
+             ? cellJoiningOf(parameters)
+             : CellJoining::kAtCriticalPoints;
+}
+
 /// The sweep patterns and the tour through them that the path follows.
 struct Tour {
   SweepStage sweeps;
@@ -706,10 +714,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   // over a size limit.
   const char* failing_stage = "decompose";
   try {
-    const CellJoining joining =
-        decompositionTypeOf(parameters_) == DecompositionType::kBoustrophedon
-            ? cellJoiningOf(parameters_)
-            : CellJoining::kAtCriticalPoints;
+    const CellJoining joining = cellJoiningFor(parameters_);
     const std::vector<Decomposition> decompositions = decomposeStage(run, parts, joining);
 
     const Clock::time_point sweeps_start = Clock::now();
@@ -729,8 +734,6 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
       failing_stage = "alternative";
       chosetAlternativeStage(run, parts, offset, sensor, graph, segment_cost, &tour);
     }
-    const SweepStage& sweeps = tour.sweeps;
-    const GtspSolution& solution = tour.solution;
 
     Clock::time_point t = Clock::now();
     failing_stage = "path";
@@ -738,7 +741,8 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     // half the lateral overlap keeps what the neighbouring lanes rely on seen.
     const double max_jog_shift = 0.5 * (sensor.width() - sensor.sweepDistance());
     const JogRemoval jog_removal(graph, parameters_.turning_radius, max_jog_shift);
-    WaypointRoute route = pathStage(run, offset, sweeps, solution, graph, jog_removal, scale);
+    WaypointRoute route =
+        pathStage(run, offset, tour.sweeps, tour.solution, graph, jog_removal, scale);
     const SegmentCost time_cost(CostFunction::kTime, vehicleLimitsOf(parameters_));
     const auto describe = [&](const std::vector<Point2>& waypoints) {
       std::ostringstream summary;

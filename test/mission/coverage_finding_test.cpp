@@ -147,6 +147,8 @@ TEST(CoverageFinding, CoverageSafeSmoothingSeesTheFarEndOfADeadEndBay) {
   mission.parameters.wall_distance = 1.0;
   mission.parameters.sensor_distance = 2.97;
   mission.parameters.turning_radius = 0.79;
+  // Choset's cells: the bay is a cell of its own, swept up and back along one lane.
+  mission.parameters.cell_joining = "critical_points";
   const PlannedMission planned = planMission(mission);
   const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts,
                                     sensorOf(mission.parameters), reportingResolution());

