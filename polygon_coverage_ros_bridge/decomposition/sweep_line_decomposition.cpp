@@ -41,8 +41,10 @@ struct Trapezoid {
   std::vector<std::size_t> left_neighbours;
   std::vector<std::size_t> right_neighbours;
   std::size_t cell = 0;
-  /// CellJoining::kLongestOverlap: the left neighbour whose cell this one continues.
+  /// CellJoining::kLongestOverlap: the left neighbour whose cell this one continues, and
+  /// whether a right neighbour continues this one's.
   std::optional<std::size_t> continues;
+  bool continued = false;
 };
 
 /// Drops repeated vertices and vertices lying on the segment between their neighbours.
@@ -169,14 +171,12 @@ struct Connection {
 void chooseContinuations(std::vector<Connection> connections, std::vector<Trapezoid>* trapezoids) {
   std::stable_sort(connections.begin(), connections.end(),
                    [](const Connection& a, const Connection& b) { return a.overlap > b.overlap; });
-  std::vector<std::size_t> continued;
   for (const Connection& connection : connections) {
+    Trapezoid& left = (*trapezoids)[connection.left];
     Trapezoid& right = (*trapezoids)[connection.right];
-    const bool left_taken =
-        std::find(continued.begin(), continued.end(), connection.left) != continued.end();
-    if (left_taken || right.continues) continue;
+    if (left.continued || right.continues) continue;
     right.continues = connection.left;
-    continued.push_back(connection.left);
+    left.continued = true;
   }
 }
 
@@ -219,20 +219,18 @@ void connectAcrossSlabs(const SlabEdges& slabs, double tolerance, CellJoining jo
 
 /// Joins trapezoids into cells, left to right: a trapezoid continues its left neighbour's
 /// cell when each is the other's only neighbour (boustrophedon) and, for trapezoidal
-/// cells, when both lie between the same two edges; with CellJoining::kLongestOverlap a
-/// boustrophedon trapezoid continues the cell chosen by chooseContinuations. Returns the
-/// cells' trapezoids.
+/// cells, when both lie between the same two edges; with CellJoining::kLongestOverlap
+/// (boustrophedon only) a trapezoid continues the cell chosen by chooseContinuations.
+/// Returns the cells' trapezoids.
 std::vector<std::vector<std::size_t>> joinIntoCells(DecompositionType type, CellJoining joining,
                                                     SlabTrapezoids* slab_trapezoids) {
   std::vector<Trapezoid>& trapezoids = slab_trapezoids->trapezoids;
   std::vector<std::vector<std::size_t>> cells;
-  const bool chosen =
-      type == DecompositionType::kBoustrophedon && joining == CellJoining::kLongestOverlap;
   for (const std::vector<std::size_t>& slab : slab_trapezoids->of_slab) {
     for (std::size_t t : slab) {
       Trapezoid& trapezoid = trapezoids[t];
       bool joined = false;
-      if (chosen) {
+      if (joining == CellJoining::kLongestOverlap) {
         joined = trapezoid.continues.has_value();
         if (joined) trapezoid.cell = trapezoids[*trapezoid.continues].cell;
       } else if (trapezoid.left_neighbours.size() == 1) {

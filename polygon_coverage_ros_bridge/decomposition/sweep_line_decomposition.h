@@ -23,6 +23,12 @@ enum class CellJoining {
   kLongestOverlap,
 };
 
+/// The joining a decomposition of `type` applies: `joining` for boustrophedon cells;
+/// trapezoidal cells end at every vertex whatever `joining` says.
+inline CellJoining appliedCellJoining(DecompositionType type, CellJoining joining) {
+  return type == DecompositionType::kBoustrophedon ? joining : CellJoining::kAtCriticalPoints;
+}
+
 /// Decomposes a polygon with holes into cells that lanes parallel to a given direction
 /// sweep without leaving: a vertical line (in the frame where the direction is +y) is
 /// swept across the area; the slabs between consecutive vertex positions hold
@@ -35,7 +41,7 @@ class SweepLineDecomposition {
  public:
   explicit SweepLineDecomposition(DecompositionType type,
                                   CellJoining joining = CellJoining::kAtCriticalPoints)
-      : type_(type), joining_(joining) {}
+      : type_(type), joining_(appliedCellJoining(type, joining)) {}
 
   /// The cells of `polygon` (CCW hull, CW holes) for lanes parallel to `direction`.
   /// Throws InvalidInputError when the boundary crosses itself.
@@ -43,7 +49,7 @@ class SweepLineDecomposition {
 
  private:
   DecompositionType type_;
-  CellJoining joining_;
+  CellJoining joining_;  ///< as applied to `type_`
 };
 
 }  // namespace kinematic_coverage::core

@@ -507,14 +507,6 @@ GtspSolution solveStage(const PlanningRun& run, const GtspInstance& instance) {
   return solution;
 }
 
-/// The cell joining of the decomposition: the parameter's for boustrophedon cells;
-/// trapezoidal cells are never joined.
-CellJoining cellJoiningFor(const PlannerParameters& parameters) {
-  return decompositionTypeOf(parameters) == DecompositionType::kBoustrophedon
-             ? cellJoiningOf(parameters)
-             : CellJoining::kAtCriticalPoints;
-}
-
 /// The sweep patterns and the tour through them that the path follows.
 struct Tour {
   SweepStage sweeps;
@@ -714,7 +706,8 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   // over a size limit.
   const char* failing_stage = "decompose";
   try {
-    const CellJoining joining = cellJoiningFor(parameters_);
+    const CellJoining joining =
+        appliedCellJoining(decompositionTypeOf(parameters_), cellJoiningOf(parameters_));
     const std::vector<Decomposition> decompositions = decomposeStage(run, parts, joining);
 
     const Clock::time_point sweeps_start = Clock::now();
