@@ -36,21 +36,24 @@ double altitude(const Ring& ring, double direction) {
 bool isMonotone(const Ring& ring, double direction) {
   // In the sweep frame lanes are vertical: the ring must be x-monotone, i.e. its
   // x-coordinates rise once and fall once around the boundary. Steps shorter than a
-  // tolerance relative to the ring's size are ignored.
+  // tolerance relative to the ring's size are ignored. The count of sign changes only
+  // grows, so a third change ends the walk (most directions of a noisy cell fail early).
   const std::size_t n = ring.size();
   if (n < 3) return false;
-  std::vector<double> xs;
   double scale = 0.0;
-  for (const Point2& p : ring) {
-    xs.push_back(toSweepFrame(p, direction).x());
-    scale = std::max(scale, p.cwiseAbs().maxCoeff());
-  }
+  for (const Point2& p : ring) scale = std::max(scale, p.cwiseAbs().maxCoeff());
   const double tolerance = 1e-9 * std::max(1.0, scale);
+  const double c = std::sin(direction);
+  const double s = std::cos(direction);
+  const auto sweepX = [&](const Point2& p) { return c * p.x() - s * p.y(); };
   int changes = 0;
   int previous_sign = 0;
   int first_sign = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double dx = xs[(i + 1) % n] - xs[i];
+  double x = sweepX(ring[0]);
+  for (std::size_t i = 0; i < n && changes <= 2; ++i) {
+    const double next_x = sweepX(ring[(i + 1) % n]);
+    const double dx = next_x - x;
+    x = next_x;
     if (std::abs(dx) <= tolerance) continue;
     const int sign = dx > 0 ? 1 : -1;
     if (first_sign == 0) first_sign = sign;

@@ -36,8 +36,9 @@ GeneratedTrajectory generateTrajectory(const PlanOutputRequest& request, std::os
   const auto stage_start = std::chrono::steady_clock::now();
   GeneratedTrajectory trajectory;
   try {
-    trajectory = TrajectoryGenerator(trajectoryOptionsOf(parameters))
-                     .generate(request.plan->waypoints, *request.free_area);
+    TrajectoryOptions options = trajectoryOptionsOf(parameters);
+    options.global.offset_parts = request.plan->offset_parts;
+    trajectory = TrajectoryGenerator(options).generate(request.plan->waypoints, *request.free_area);
   } catch (const SizeLimitError&) {
     throw;
   } catch (const InvalidInputError& error) {

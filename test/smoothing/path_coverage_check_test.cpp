@@ -37,7 +37,7 @@ std::vector<PathPrimitive> withInnerArc(const std::vector<Point2>& waypoints, st
 
 TEST(PathCoverageCheck, TheSharpPathLosesNothingOfItself) {
   const std::vector<Point2> path{{0, 0}, {30, 0}, {30, 3}, {0, 3}, {0, 6}};
-  PathCoverageCheck check({}, 0.0, kSensor, path);
+  PathCoverageCheck check({}, 0.0, {}, kSensor, path);
   const std::vector<std::optional<CornerSmoothing>> sharp(path.size() - 2);
   const std::vector<ReplacedStretch> everywhere{path};
   EXPECT_EQ(check.lostCells(SmoothedPathAssembler::assemble(path, sharp).primitives, everywhere),
@@ -50,7 +50,7 @@ TEST(PathCoverageCheck, AReversalAtADeadEndLosesItsTipUnlessAnotherLegSeesIt) {
   const std::vector<Point2> dead_end{{0, 0}, {0, 40}, {3, 0}};
   ReplacedStretch stretch;
   const std::vector<PathPrimitive> cut = withInnerArc(dead_end, 1, 1.0, &stretch);
-  PathCoverageCheck check({}, 0.0, kSensor, dead_end);
+  PathCoverageCheck check({}, 0.0, {}, kSensor, dead_end);
   EXPECT_GT(check.lostCells(cut, {stretch}).front() * check.cellArea(), 10.0);  // m^2
 
   // The same cut, where the path later sweeps both lanes and the end again: nothing is
@@ -60,7 +60,7 @@ TEST(PathCoverageCheck, AReversalAtADeadEndLosesItsTipUnlessAnotherLegSeesIt) {
     revisited.push_back(p);
   }
   const std::vector<PathPrimitive> cut_revisited = withInnerArc(revisited, 1, 1.0, &stretch);
-  PathCoverageCheck revisited_check({}, 0.0, kSensor, revisited);
+  PathCoverageCheck revisited_check({}, 0.0, {}, kSensor, revisited);
   EXPECT_LE(revisited_check.lostCells(cut_revisited, {stretch}).front(), kRoundingCells);
 }
 
@@ -73,10 +73,10 @@ TEST(PathCoverageCheck, ARightAngleAtTheWallsLosesNothingReachable) {
   const std::vector<Point2> corner{{0, 0}, {20, 0}, {20, 20}};
   ReplacedStretch stretch;
   const std::vector<PathPrimitive> cut = withInnerArc(corner, 1, 1.0, &stretch);
-  EXPECT_LE(PathCoverageCheck(area, 1.0, kSensor, corner).lostCells(cut, {stretch}).front(),
+  EXPECT_LE(PathCoverageCheck(area, 1.0, {}, kSensor, corner).lostCells(cut, {stretch}).front(),
             kRoundingCells);
   // In the open, with nothing to stop a footprint, the same cut loses area.
-  EXPECT_GT(PathCoverageCheck({}, 0.0, kSensor, corner).lostCells(cut, {stretch}).front(),
+  EXPECT_GT(PathCoverageCheck({}, 0.0, {}, kSensor, corner).lostCells(cut, {stretch}).front(),
             kRoundingCells);
 }
 
@@ -89,7 +89,7 @@ TEST(PathCoverageCheck, LaterCallsCountAsAFreshCheckDoes) {
   const std::vector<Point2> path{{0, 0},  {30, 0}, {30, 3}, {0, 3},  {0, 6},
                                  {30, 6}, {30, 9}, {0, 9},  {0, 12}, {30, 12}};
   const std::vector<std::vector<std::size_t>> rounds{{1, 3, 5, 7}, {1, 3, 5}, {3, 5}, {3, 5, 8}};
-  PathCoverageCheck check(area, 1.0, kSensor, path);
+  PathCoverageCheck check(area, 1.0, {}, kSensor, path);
   for (const std::vector<std::size_t>& corners : rounds) {
     std::vector<std::optional<CornerSmoothing>> smoothings(path.size() - 2);
     std::vector<ReplacedStretch> stretches;
@@ -106,7 +106,7 @@ TEST(PathCoverageCheck, LaterCallsCountAsAFreshCheckDoes) {
         SmoothedPathAssembler::assemble(path, smoothings).primitives;
     const std::vector<std::size_t> remembered = check.lostCells(primitives, stretches);
     EXPECT_EQ(remembered,
-              PathCoverageCheck(area, 1.0, kSensor, path).lostCells(primitives, stretches));
+              PathCoverageCheck(area, 1.0, {}, kSensor, path).lostCells(primitives, stretches));
     std::size_t total = 0;
     for (const std::size_t cells : remembered) total += cells;
     EXPECT_GT(total, 0u);  // the arcs at the walls cut area the sharp turns see
@@ -144,13 +144,13 @@ TEST(PathCoverageCheck, OneCornerReplacedLosesWhatTheWholePathCheckFinds) {
     }
     PolygonWithHoles area;
     area.hull = {{-1, -2}, {33, -2}, {33, y + 1}, {-1, y + 1}};
-    PathCoverageCheck check(area, 1.0, kSensor, path);
+    PathCoverageCheck check(area, 1.0, {}, kSensor, path);
     std::size_t lost_somewhere = 0;
     for (std::size_t corner = 1; corner + 1 < path.size(); ++corner) {
       ReplacedStretch stretch;
       const std::vector<PathPrimitive> whole = withInnerArc(path, corner, 1.0, &stretch);
       const std::size_t expected =
-          PathCoverageCheck(area, 1.0, kSensor, path).lostCells(whole, {stretch}).front();
+          PathCoverageCheck(area, 1.0, {}, kSensor, path).lostCells(whole, {stretch}).front();
       const std::size_t windowed = check.lostCellsReplacing(
           corner - 1, corner, innerArcReplacement(path, corner, 1.0), stretch);
       EXPECT_NEAR(static_cast<double>(windowed), static_cast<double>(expected), kRoundingCells)
@@ -165,7 +165,7 @@ TEST(PathCoverageCheck, OneCornerReplacedAtADeadEndLosesItsTipUnlessAnotherLegSe
   const std::vector<Point2> dead_end{{0, 0}, {0, 40}, {3, 0}};
   ReplacedStretch stretch;
   withInnerArc(dead_end, 1, 1.0, &stretch);
-  const PathCoverageCheck check({}, 0.0, kSensor, dead_end);
+  const PathCoverageCheck check({}, 0.0, {}, kSensor, dead_end);
   EXPECT_GT(check.lostCellsReplacing(0, 1, innerArcReplacement(dead_end, 1, 1.0), stretch) *
                 check.cellArea(),
             10.0);  // m^2
@@ -176,7 +176,7 @@ TEST(PathCoverageCheck, OneCornerReplacedAtADeadEndLosesItsTipUnlessAnotherLegSe
   for (const Point2& p : {Point2(-0.5, 0), Point2(-0.5, 41), Point2(3.5, 41), Point2(3.5, 0)}) {
     revisited.push_back(p);
   }
-  const PathCoverageCheck revisited_check({}, 0.0, kSensor, revisited);
+  const PathCoverageCheck revisited_check({}, 0.0, {}, kSensor, revisited);
   EXPECT_LE(
       revisited_check.lostCellsReplacing(0, 1, innerArcReplacement(revisited, 1, 1.0), stretch),
       kRoundingCells);
@@ -191,15 +191,16 @@ TEST(PathCoverageCheck, ToleratesAShareOfWhatTheSharpPathSees) {
   // One 40 m lane and back 3 m beside it under a 4 m x 3 m footprint, in the open: the
   // sharp path sees about 7 m x 43 m; 0.02 % of its cells may be lost in all.
   const std::vector<Point2> dead_end{{0, 0}, {0, 40}, {3, 0}};
-  PathCoverageCheck check({}, 0.0, kSensor, dead_end);
+  PathCoverageCheck check({}, 0.0, {}, kSensor, dead_end);
   const double seen_m2 = 7.0 * 43.0;
   EXPECT_NEAR(check.toleratedLostCells() * check.cellArea(),
               PathCoverageCheck::kToleratedLostShare * seen_m2, 0.05 * 0.0002 * seen_m2 + 0.01);
 }
 
 TEST(PathCoverageCheck, RejectsAnInvalidWallDistance) {
-  EXPECT_THROW(PathCoverageCheck({}, -1.0, kSensor, {{0, 0}, {1, 0}}), InvalidInputError);
-  EXPECT_THROW(PathCoverageCheck({}, std::nan(""), kSensor, {{0, 0}, {1, 0}}), InvalidInputError);
+  EXPECT_THROW(PathCoverageCheck({}, -1.0, {}, kSensor, {{0, 0}, {1, 0}}), InvalidInputError);
+  EXPECT_THROW(PathCoverageCheck({}, std::nan(""), {}, kSensor, {{0, 0}, {1, 0}}),
+               InvalidInputError);
 }
 
 }  // namespace

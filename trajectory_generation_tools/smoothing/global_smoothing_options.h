@@ -1,8 +1,10 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 
 namespace kinematic_coverage::core {
@@ -32,6 +34,10 @@ struct GlobalSmoothingOptions {
   /// Coverage-safe only: the planner's wall distance (m, >= 0), which shapes the reachable
   /// area whose coverage is kept.
   double wall_distance = 0.0;
+  /// Coverage-safe only: the offset free area of the free area and wall_distance
+  /// (computeOffsetFreeArea's parts), whose rim bounds the reachable area, when the caller
+  /// has it (a plan's `offset_parts`); empty: computed from the free area.
+  std::vector<PolygonWithHoles> offset_parts;
   /// Bulb turns (BulbTurnSmoothing) among the candidates of corner pairs turning the same
   /// way. Coverage-safe smoothing sets it: a bulb turn drives along the boundary the lanes
   /// end at and sees the strip beyond their ends, which inner arcs cut. The `global` and

@@ -8,6 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/sweeps/reachable_area.h"
 #include "polygon_coverage_ros_bridge/sweeps/waypoint_path_poses.h"
 
@@ -127,6 +128,7 @@ std::size_t lostCellsIn(const CoverageRaster& raster, const CellWindow& window,
 }  // namespace
 
 PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
+                                     const std::vector<PolygonWithHoles>& offset_parts,
                                      const FrustumSensor& sensor,
                                      const std::vector<Point2>& waypoints)
     : sensor_(sensor) {
@@ -158,15 +160,10 @@ PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double w
   if (free_area.hull.empty()) {
     reachable_.assign(raster_->cellCount(), 1);
   } else {
-    const CellMask free = raster_->rasterize(free_area);
-    CellMask walls(free.size());
-    for (std::size_t i = 0; i < free.size(); ++i) walls[i] = free[i] != 0 ? 0 : 1;
-    const CellMask near_walls = dilateMask(*raster_, walls, wall_distance);
-    CellMask offset(free.size());
-    for (std::size_t i = 0; i < free.size(); ++i) {
-      offset[i] = free[i] != 0 && near_walls[i] == 0 ? 1 : 0;
-    }
-    reachable_ = reachableArea(*raster_, free, offset, sensor.length());
+    const std::vector<PolygonWithHoles> parts =
+        offset_parts.empty() ? computeOffsetFreeArea(free_area, wall_distance).parts : offset_parts;
+    reachable_ = reachableArea(*raster_, raster_->rasterize(free_area), raster_->rasterize(parts),
+                               parts, sensor.length());
   }
 
   rotations_.resize(waypoints.size());

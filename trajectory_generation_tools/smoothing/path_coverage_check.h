@@ -22,9 +22,10 @@ using ReplacedStretch = std::vector<Point2>;
 /// area nothing else sees (the far end of a dead-end bay swept up and back) does. Both
 /// paths are measured alike (SeenArea::addWaypointPath and addSweptPath) on one raster of
 /// cells a small fraction of the footprint. The reachable area is the coverage report's
-/// (docs/REFERENCE.md, Metrics) with the offset free area eroded from the free area on the
-/// raster: free cells within half a footprint length of the free cells at least the wall
-/// distance from every wall (the offset free area itself for a line sensor).
+/// (docs/REFERENCE.md, Metrics): the free cells within half a footprint length of the offset
+/// free area's polygons (the offset free area itself for a line sensor), its rim measured
+/// against the polygons as the report measures it, so that the losses at lane ends along a
+/// wall, where the rim runs, count as the report counts them.
 class PathCoverageCheck {
  public:
   /// Cells of the raster per footprint length (or width, if shorter; the width for a line
@@ -37,10 +38,14 @@ class PathCoverageCheck {
 
   /// Measures what the sharp path through `waypoints` (straight legs, in-place rotations)
   /// sees of the reachable area of `free_area` (an empty hull: the unbounded plane, all of
-  /// it reachable) with walls kept `wall_distance` away. Throws InvalidInputError for a
-  /// non-finite coordinate or a negative or non-finite wall distance.
+  /// it reachable) with walls kept `wall_distance` away: the free cells whose centres lie
+  /// within half a footprint length of `offset_parts`, the offset free area's polygons
+  /// (empty: computeOffsetFreeArea's), measured as the coverage report measures them.
+  /// Throws InvalidInputError for a non-finite coordinate or a negative or non-finite wall
+  /// distance.
   PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
-                    const FrustumSensor& sensor, const std::vector<Point2>& waypoints);
+                    const std::vector<PolygonWithHoles>& offset_parts, const FrustumSensor& sensor,
+                    const std::vector<Point2>& waypoints);
 
   /// Per stretch, the reachable cells within the sensor's reach of it (half the
   /// footprint's diagonal) that the sharp path sees and the path of `primitives`
