@@ -10,18 +10,18 @@ include(bench/trajectory/sources.cmake OPTIONAL)
 # Smoke runs: each benchmark for a few seconds under ctest, so that a benchmark that stops
 # building or running fails CI. Their figures are checked against docs/ by doc_figures.
 function(kc_add_benchmark_smoke target)
-  add_test(NAME smoke_${target} COMMAND ${target} ${ARGN})
+  add_test(NAME smoke_${target} COMMAND ${PROJECT_NAME}_${target} ${ARGN})
   set_tests_properties(smoke_${target} PROPERTIES TIMEOUT 300)
 endfunction()
 kc_add_benchmark_smoke(coverage_benchmark --runs 1)
 kc_add_benchmark_smoke(hard_map_writer --out ${CMAKE_BINARY_DIR}/hard_maps --seeds 0:1)
 kc_add_benchmark_smoke(gtsp_benchmark --seeds 1 --instances 11eil51,4br17,20kroA100)
 kc_add_benchmark_smoke(planner_peer_benchmark --runs 1)
-kc_add_benchmark_smoke(scaling_benchmark --sizes 500:10)
+kc_add_benchmark_smoke(scaling_benchmark --sizes 500:10 --plot ${CMAKE_BINARY_DIR}/scaling.png)
 # The time cost of the first shorelines, the lakes, the shipped missions and the peer's
 # polygons against the values recorded before the shoreline-scaling work (at most 1.005
 # times each).
-add_test(NAME planner_reference_check COMMAND planner_reference --runs 1 --shorelines 3
+add_test(NAME planner_reference_check COMMAND ${PROJECT_NAME}_planner_reference --runs 1 --shorelines 3
   --compare ${PROJECT_SOURCE_DIR}/bench/data/planner_reference.csv)
 set_tests_properties(planner_reference_check PROPERTIES TIMEOUT 600)
 kc_add_benchmark_smoke(large_hull_benchmark 300)

@@ -2,7 +2,7 @@
 # A static library for one pipeline stage of the ROS-free core. CGAL is linked privately,
 # so that headers seen by nodes stay free of it and only the stages that need it pay its
 # compile cost.
-set(KC_STAGE_LIBRARIES "" CACHE INTERNAL "")
+set(KC_STAGE_LIBRARIES "")
 function(kc_add_stage_library name)
   cmake_parse_arguments(ARG "CGAL" "" "SOURCES;DEPENDS" ${ARGN})
   add_library(${name} STATIC ${ARG_SOURCES})
@@ -13,5 +13,5 @@ function(kc_add_stage_library name)
     target_link_libraries(${name} PRIVATE CGAL::CGAL)
   endif()
   set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
-  set(KC_STAGE_LIBRARIES ${KC_STAGE_LIBRARIES} ${name} CACHE INTERNAL "")
+  set(KC_STAGE_LIBRARIES ${KC_STAGE_LIBRARIES} ${name} PARENT_SCOPE)
 endfunction()

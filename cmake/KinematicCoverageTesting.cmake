@@ -1,4 +1,5 @@
-# kc_add_gtest(NAME src... [LIBRARIES kc_stage...]): a gtest executable linked to the
+# kc_add_gtest(NAME src... [LIBRARIES kc_stage...]): a gtest executable NAME (target
+# ${PROJECT_NAME}_NAME) linked to the
 # named stage libraries (default: the whole core), registered with ctest
 # through catkin when it is present (env wrapping, `tests` target) and plainly otherwise.
 if(NOT catkin_FOUND)
@@ -12,20 +13,24 @@ endif()
 function(kc_add_gtest name)
   cmake_parse_arguments(ARG "" "" "LIBRARIES" ${ARGN})
   if(NOT ARG_LIBRARIES)
-    set(ARG_LIBRARIES kinematic_coverage_core)
+    set(ARG_LIBRARIES ${PROJECT_NAME}_core)
   endif()
+  # The target carries the package's name (no clash with another package's test_planner
+  # in a workspace); the executable and the plain ctest test keep the short name.
+  set(target ${PROJECT_NAME}_${name})
   if(catkin_FOUND)
-    catkin_add_gtest(${name} ${ARG_UNPARSED_ARGUMENTS})
-    target_link_libraries(${name} ${GTEST_MAIN_LIBRARIES})
+    catkin_add_gtest(${target} ${ARG_UNPARSED_ARGUMENTS})
+    target_link_libraries(${target} ${GTEST_MAIN_LIBRARIES})
   else()
-    add_executable(${name} EXCLUDE_FROM_ALL ${ARG_UNPARSED_ARGUMENTS})
-    target_link_libraries(${name} GTest::gtest GTest::gtest_main)
-    add_test(NAME ${name} COMMAND ${name})
+    add_executable(${target} EXCLUDE_FROM_ALL ${ARG_UNPARSED_ARGUMENTS})
+    target_link_libraries(${target} GTest::gtest GTest::gtest_main)
+    add_test(NAME ${name} COMMAND ${target})
     set_tests_properties(${name} PROPERTIES TIMEOUT 900)
-    add_dependencies(tests ${name})
+    add_dependencies(tests ${target})
   endif()
-  target_link_libraries(${name} ${ARG_LIBRARIES})
-  target_compile_definitions(${name} PRIVATE
+  set_target_properties(${target} PROPERTIES OUTPUT_NAME ${name})
+  target_link_libraries(${target} ${ARG_LIBRARIES})
+  target_compile_definitions(${target} PRIVATE
     KC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     KC_BENCH_DATA_DIR="${PROJECT_SOURCE_DIR}/bench/data"
     KC_TOOL_PATH="${CMAKE_RUNTIME_OUTPUT_DIRECTORY}/coverage_tool")

@@ -4,11 +4,11 @@
 add_custom_target(fuzzers)
 
 function(kc_add_fuzzer name)
-  add_executable(${name} fuzz/${name}.cpp)
-  target_link_libraries(${name} PRIVATE kinematic_coverage_core)
-  target_compile_options(${name} PRIVATE -Wall -Wextra)
-  target_link_options(${name} PRIVATE -fsanitize=fuzzer)
-  add_dependencies(fuzzers ${name})
+  kc_add_executable(${name} fuzz/${name}.cpp)
+  target_link_libraries(${PROJECT_NAME}_${name} PRIVATE ${PROJECT_NAME}_core)
+  target_compile_options(${PROJECT_NAME}_${name} PRIVATE -Wall -Wextra)
+  target_link_options(${PROJECT_NAME}_${name} PRIVATE -fsanitize=fuzzer)
+  add_dependencies(fuzzers ${PROJECT_NAME}_${name})
 endfunction()
 
 kc_add_fuzzer(mission_file_fuzzer)

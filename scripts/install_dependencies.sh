@@ -18,7 +18,7 @@ packages=(
   python3-rosnode python3-roswtf python3-rosbag
   libcgal-dev libeigen3-dev libyaml-cpp-dev libgeographiclib-dev libgtest-dev libbenchmark-dev libcairo2-dev
   librviz-dev rviz pluginlib-dev qtbase5-dev
-  xvfb xauth xdotool x11-utils imagemagick clang-tidy
+  xvfb xauth xdotool x11-utils imagemagick clang-tidy catkin-lint
 )
 if [ "${1:-}" = --clang ]; then packages+=(clang libfuzzer-14-dev libclang-rt-14-dev); fi
 

@@ -6,7 +6,8 @@
 #   docs/images/parallelogram_60_unsmoothed.png the same, smoothing false
 #   docs/images/lake_30x30_replan.png          replan the lake after 40 % of its trajectory,
 #                                              both obstacles moved by (2, 1) m
-# coverage_tool must be built (scripts/build.sh --target coverage_tool); BUILD_DIR as there.
+# coverage_tool must be built (scripts/build.sh --target kinematic_coverage_coverage_tool);
+# BUILD_DIR as there.
 set -euo pipefail
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

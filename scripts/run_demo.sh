@@ -9,7 +9,7 @@ mission=${1:-$root/config/missions/lake_30x30.yaml}
 out=${OUT_DIR:-$root/demo_output/$(basename "$mission" .yaml)}
 "$root/scripts/install_dependencies.sh"
 echo "== build (Release)"
-BUILD_DIR=$build_dir "$root/scripts/build.sh" --target coverage_tool >/dev/null
+BUILD_DIR=$build_dir "$root/scripts/build.sh" --target kinematic_coverage_coverage_tool >/dev/null
 echo "== plan $mission"
 mkdir -p "$out"
 "$build_dir/devel/lib/kinematic_coverage/coverage_tool" plan "$mission" --out "$out"

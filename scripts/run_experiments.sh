@@ -34,7 +34,7 @@ if $print_only; then
 else
   out=${OUT_DIR:-$build_dir/experiments}
   echo "== build coverage_tool" >&2
-  BUILD_DIR=$build_dir "$root/scripts/build.sh" --target coverage_tool >/dev/null
+  BUILD_DIR=$build_dir "$root/scripts/build.sh" --target kinematic_coverage_coverage_tool >/dev/null
 fi
 
 # The robots, as --set overrides of config/default.yaml (the same for every trajectory of an

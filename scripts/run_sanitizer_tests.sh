@@ -11,7 +11,7 @@ build_dir=${BUILD_DIR:-$root/build-asan}
 "$root/scripts/install_dependencies.sh" --clang
 echo "== build (clang, ASan + UBSan) in $build_dir"
 kc_configure_sanitized "$build_dir"
-cmake --build "$build_dir" -j"${JOBS:-$(nproc)}" --target tests coverage_tool >/dev/null
+cmake --build "$build_dir" -j"${JOBS:-$(nproc)}" --target tests kinematic_coverage_coverage_tool >/dev/null
 echo "== unit tests under the sanitizers"
 cd "$build_dir"
 ctest -R gtest --output-on-failure -j"${JOBS:-$(nproc)}"

@@ -8,10 +8,11 @@
 // ru_maxrss) and the slowest stage with its time; then each map's stage lines.
 //
 // Usage: scaling_benchmark [--sizes V:I[,V:I...]] [--seeds S] [--tool PATH] [--out DIR]
-//                          [--timeout SECONDS]
+//                          [--timeout SECONDS] [--plot FILE.png]
 // Defaults: --sizes 500:10,1000:20,2000:40,5000:100,10000:200, one seed, coverage_tool
 // beside this program, a temporary folder (removed after), 300 s per run (a run past it
-// counts as timed out).
+// counts as timed out). Then the growth exponents of planning time, run time and peak memory
+// against vertices, and with --plot a log-log PNG of the times.
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -29,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/support/log_log_plot.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/hard_map_yaml.h"
 
@@ -137,6 +139,7 @@ int main(int argc, char** argv) {
   std::string tool = (std::filesystem::path(argv[0]).parent_path() / "coverage_tool").string();
   std::string out;
   double timeout_s = 300.0;
+  std::string plot;
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
     if (argument == "--sizes" && i + 1 < argc) {
@@ -149,6 +152,8 @@ int main(int argc, char** argv) {
       out = argv[++i];
     } else if (argument == "--timeout" && i + 1 < argc) {
       timeout_s = std::atof(argv[++i]);
+    } else if (argument == "--plot" && i + 1 < argc) {
+      plot = argv[++i];
     } else {
       sizes.clear();
       break;
@@ -157,7 +162,7 @@ int main(int argc, char** argv) {
   if (sizes.empty()) {
     std::fprintf(stderr,
                  "usage: scaling_benchmark [--sizes V:I[,V:I...]] [--seeds S] [--tool PATH] "
-                 "[--out DIR] [--timeout SECONDS]\n");
+                 "[--out DIR] [--timeout SECONDS] [--plot FILE.png]\n");
     return 2;
   }
   const bool temporary = out.empty();
@@ -173,6 +178,9 @@ int main(int argc, char** argv) {
       "(timing) "
       "| peak MB (timing) | slowest stage (timing) |\n|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::string> details;
+  std::vector<std::pair<double, double>> planning_times;  // (vertices, s) of planned charts
+  std::vector<std::pair<double, double>> run_times;
+  std::vector<std::pair<double, double>> peaks;  // (vertices, MB)
   for (const Size& size : sizes) {
     for (int seed = 0; seed < seeds; ++seed) {
       const HardMap map = HardMapGenerator::lakeChart(seed, size.vertices, size.islands);
@@ -205,6 +213,11 @@ int main(int argc, char** argv) {
                   map.mission.polygon.holes.size(), vertices, cell_count.c_str(), outcome.c_str(),
                   planning_s, run.wall_s, run.peak_mb, slowest.first.c_str(), slowest.second);
       std::fflush(stdout);
+      if (run.finished && run.exit_status == 0) {
+        planning_times.emplace_back(static_cast<double>(vertices), planning_s);
+        run_times.emplace_back(static_cast<double>(vertices), run.wall_s);
+        peaks.emplace_back(static_cast<double>(vertices), run.peak_mb);
+      }
       std::ostringstream detail;
       detail << name << ":";
       for (const auto& [stage, seconds] : stages) detail << " " << stage << " " << seconds;
@@ -213,6 +226,20 @@ int main(int argc, char** argv) {
   }
   std::printf("\n");
   for (const std::string& detail : details) std::printf("    %s\n", detail.c_str());
+  std::printf(
+      "\nGrowth exponents over the planned charts (least-squares slope of log value against log "
+      "vertices; nan with fewer than two sizes): planning time %.2f, whole run %.2f, peak "
+      "memory %.2f\n",
+      kinematic_coverage::bench::growthExponent(planning_times),
+      kinematic_coverage::bench::growthExponent(run_times),
+      kinematic_coverage::bench::growthExponent(peaks));
+  if (!plot.empty()) {
+    kinematic_coverage::bench::writeLogLogPlot(
+        plot, "Lake charts: time against size (coverage_tool plan, default parameters)",
+        "vertices (shore and islands)", "seconds",
+        {{"planning (metrics.json planning_time_s)", planning_times, 0.12, 0.38, 0.71},
+         {"whole run (smoothing, coverage, files)", run_times, 0.85, 0.37, 0.05}});
+  }
   if (temporary) std::filesystem::remove_all(out);
   return 0;
 }

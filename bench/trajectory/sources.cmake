@@ -1,2 +1,2 @@
-add_executable(trajectory_benchmark bench/trajectory/trajectory_benchmark.cpp)
-target_link_libraries(trajectory_benchmark PRIVATE kc_parameters kc_trajectory kc_smoothing)
+kc_add_executable(trajectory_benchmark bench/trajectory/trajectory_benchmark.cpp)
+target_link_libraries(${PROJECT_NAME}_trajectory_benchmark PRIVATE kc_parameters kc_trajectory kc_smoothing)

@@ -42,16 +42,30 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
       neighbours_[w].push_back({static_cast<int>(u), c});
     }
   }
-  // Floyd-Warshall over the per-segment costs, a row at a time (vectorized).
+  allPairsCosts();
+}
+
+void VisibilityGraph::allPairsCosts() {
+  // Floyd-Warshall over the per-segment costs, a row at a time (vectorized), on the upper
+  // triangle only: the costs are symmetric, and an update of (i, j) and one of (j, i) add
+  // the same two numbers, so the lower triangle would repeat the upper one bit for bit.
+  // Row k is read whole: its part left of the diagonal is refreshed from column k first
+  // (iteration k changes neither row k nor column k).
+  const std::size_t n = nodes_.size();
   Eigen::ArrayXd via_row(n);
   for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t j = 0; j < k; ++j) node_costs_[k * n + j] = node_costs_[j * n + k];
     via_row = Eigen::Map<const Eigen::ArrayXd>(&node_costs_[k * n], n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double to_via = node_costs_[i * n + k];
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      const double to_via = i < k ? node_costs_[i * n + k] : node_costs_[k * n + i];
       if (i == k || to_via == kUnreachable) continue;
-      Eigen::Map<Eigen::ArrayXd> row(&node_costs_[i * n], n);
-      row = row.min(via_row + to_via);
+      const std::size_t right = n - i - 1;  // columns i + 1 to n - 1
+      Eigen::Map<Eigen::ArrayXd> row(&node_costs_[i * n + i + 1], right);
+      row = row.min(via_row.tail(right) + to_via);
     }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < i; ++j) node_costs_[i * n + j] = node_costs_[j * n + i];
   }
 }
 

@@ -87,6 +87,10 @@ class VisibilityGraph {
     int last = -1;
   };
 
+  /// Turns node_costs_, the segment costs of visible node pairs, into the cheapest costs
+  /// between all pairs of nodes.
+  void allPairsCosts();
+
   QueryPoint locate(const Point2& p) const;
   void attachNodes(QueryPoint* point, bool with_node_costs) const;
   bool straightInside(const QueryPoint& a, const QueryPoint& b) const;

@@ -1,4 +1,5 @@
 kc_add_gtest(test_geometry
+  test/geometry/boundary_simplification_test.cpp
   test/geometry/planar_geometry_test.cpp
   test/geometry/wall_offset_test.cpp
   test/geometry/edge_grid_test.cpp

@@ -1,7 +1,8 @@
 # Repository-wide checks: nothing outside the repository is used, the figures in docs/
 # are what their commands print (scripts/doc_figures.py; CI reruns the ci= rows), every
-# key of package.xml is a rosdep key for Noetic on focal and for bookworm, and every stage
-# includes only the stages of its floor (scripts/stage_graph.py, docs/ARCHITECTURE.md).
+# key of package.xml is a rosdep key for Noetic on focal and for bookworm, catkin_lint -W2
+# finds nothing, and every stage includes only the stages of its floor
+# (scripts/stage_graph.py, docs/ARCHITECTURE.md).
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
 add_test(NAME self_contained COMMAND ${PROJECT_SOURCE_DIR}/test/repository/self_contained_test.sh
   ${PROJECT_SOURCE_DIR})
@@ -14,6 +15,9 @@ add_test(NAME doc_figures_checker COMMAND ${Python3_EXECUTABLE}
   ${PROJECT_SOURCE_DIR}/test/repository/doc_figures_test.py)
 add_test(NAME rosdep_keys COMMAND ${Python3_EXECUTABLE}
   ${PROJECT_SOURCE_DIR}/test/repository/rosdep_keys_test.py)
+add_test(NAME catkin_lint COMMAND ${PROJECT_SOURCE_DIR}/test/repository/catkin_lint_test.sh
+  ${PROJECT_SOURCE_DIR})
+set_tests_properties(catkin_lint PROPERTIES SKIP_RETURN_CODE 77)
 add_test(NAME stage_graph COMMAND ${Python3_EXECUTABLE}
   ${PROJECT_SOURCE_DIR}/scripts/stage_graph.py --check)
 add_test(NAME stage_graph_checker COMMAND ${Python3_EXECUTABLE}

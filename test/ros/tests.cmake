@@ -28,7 +28,7 @@ ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/rostest-test_ros_rviz_tool.xml \
 ${PYTHON_EXECUTABLE} ${KINEMATIC_COVERAGE_ROSTEST} --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} \
 --results-filename test_ros_rviz_tool.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" \
 ${PROJECT_SOURCE_DIR}/test/ros/rviz_tool.test"
-    DEPENDENCIES ${KC_NODE_TARGETS} kinematic_coverage_rviz_plugins)
+    DEPENDENCIES ${KC_NODE_TARGETS} ${PROJECT_NAME}_rviz_plugins)
   set_tests_properties(_ctest_${PROJECT_NAME}_rostest_test_ros_rviz_tool.test PROPERTIES
     SKIP_RETURN_CODE 77)
   # The launch files name only packages and arguments that exist.

@@ -324,6 +324,29 @@ TEST(VisibilityGraph, RandomConvexHoleMapsHaveConsistentInsideRoutes) {
   EXPECT_GT(detours, 500);
 }
 
+// The all-pairs node costs are computed on one triangle and mirrored: they must be
+// symmetric bit for bit, zero on the diagonal, and closed under the triangle inequality
+// (what Floyd-Warshall leaves), on maps with hundreds of nodes.
+TEST(VisibilityGraph, NodeCostsAreSymmetricBitForBitAndShortest) {
+  std::mt19937 rng(77);
+  for (int map_index = 0; map_index < 4; ++map_index) {
+    const PolygonWithHoles area = testing::randomMap(rng, 100.0, 40, 1.0);
+    const VisibilityGraph graph(area, costOf(map_index % 2 == 0 ? "distance" : "time"));
+    const std::size_t n = graph.nodeCount();
+    ASSERT_GT(n, 20u);
+    for (std::size_t u = 0; u < n; ++u) {
+      EXPECT_EQ(graph.nodeCost(u, u), 0.0);
+      for (std::size_t w = 0; w < n; ++w) {
+        ASSERT_EQ(graph.nodeCost(u, w), graph.nodeCost(w, u)) << u << " " << w;
+        for (std::size_t k = 0; k < n; k += 7) {
+          const double via = graph.nodeCost(u, k) + graph.nodeCost(k, w);
+          EXPECT_LE(graph.nodeCost(u, w), via * (1.0 + 1e-12)) << u << " " << k << " " << w;
+        }
+      }
+    }
+  }
+}
+
 TEST(VisibilityGraph, CheckerboardOfHolesTouchingAtCorners) {
   // Square holes touching diagonally: every inner corner is a pinch point that routes
   // may pass through; compared with brute force over all vertices.

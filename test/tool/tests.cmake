@@ -3,4 +3,4 @@ kc_add_gtest(test_tool
   test/tool/output_files_test.cpp
   test/tool/trajectory_csv_writer_test.cpp
   LIBRARIES kc_tool)
-add_dependencies(test_tool coverage_tool)
+add_dependencies(${PROJECT_NAME}_test_tool ${PROJECT_NAME}_coverage_tool)
