@@ -1,6 +1,5 @@
-# kc_add_gtest(NAME src... [LIBRARIES kc_stage...]): a gtest executable NAME (target
-# ${PROJECT_NAME}_NAME) linked to the
-# named stage libraries (default: the whole core), registered with ctest
+# kc_add_gtest(NAME src... [LIBRARIES kc_stage...]): a gtest executable ${PROJECT_NAME}_NAME
+# linked to the named stage libraries (default: the whole core), registered with ctest
 # through catkin when it is present (env wrapping, `tests` target) and plainly otherwise.
 if(NOT catkin_FOUND)
   find_package(GTest REQUIRED)
@@ -15,8 +14,9 @@ function(kc_add_gtest name)
   if(NOT ARG_LIBRARIES)
     set(ARG_LIBRARIES ${PROJECT_NAME}_core)
   endif()
-  # The target carries the package's name (no clash with another package's test_planner
-  # in a workspace); the executable and the plain ctest test keep the short name.
+  # The target and its executable carry the package's name (no clash with another
+  # package's test_planner in a workspace; catkin runs a gtest by its target's name); a
+  # plain-CMake ctest test keeps the short name.
   set(target ${PROJECT_NAME}_${name})
   if(catkin_FOUND)
     catkin_add_gtest(${target} ${ARG_UNPARSED_ARGUMENTS})
@@ -28,7 +28,6 @@ function(kc_add_gtest name)
     set_tests_properties(${name} PROPERTIES TIMEOUT 900)
     add_dependencies(tests ${target})
   endif()
-  set_target_properties(${target} PROPERTIES OUTPUT_NAME ${name})
   target_link_libraries(${target} ${ARG_LIBRARIES})
   target_compile_definitions(${target} PRIVATE
     KC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
