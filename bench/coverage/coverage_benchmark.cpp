@@ -40,10 +40,9 @@ double median(std::vector<double> times) {
 void benchmark(const char* name, const kinematic_coverage::core::Mission& mission,
                const kinematic_coverage::core::PlannedMission& planned, int runs) {
   using namespace kinematic_coverage::core;
-  TrajectoryOptions trajectory_options = trajectoryOptionsOf(mission.parameters);
-  trajectory_options.global.offset_parts = planned.plan.offset_parts;
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(trajectory_options).generate(planned.plan.waypoints, planned.free_area);
+      TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, planned.plan.offset_parts))
+          .generate(planned.plan.waypoints, planned.free_area);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
   const FrustumSensor sensor = sensorOf(mission.parameters);

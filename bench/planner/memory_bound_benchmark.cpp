@@ -190,10 +190,9 @@ int run(const BenchmarkOptions& options) {
               planning_rss, planned.plan.cells.size(), planned.plan.waypoints.size());
   if (options.smoothing) {
     const auto started = std::chrono::steady_clock::now();
-    TrajectoryOptions trajectory_options = trajectoryOptionsOf(mission.parameters);
-    trajectory_options.global.offset_parts = planned.plan.offset_parts;
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(trajectory_options).generate(planned.plan.waypoints, planned.free_area);
+        TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, planned.plan.offset_parts))
+            .generate(planned.plan.waypoints, planned.free_area);
     const double seconds = secondsSince(started);
     std::printf("| smoothing | %.3f | %.1f | %zu primitives, %zu poses, %.1f m, %.0f s |\n",
                 seconds, peakRssMiB(), trajectory.path.size(), trajectory.poses.size(),

@@ -141,10 +141,9 @@ std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
                                          double tolerance, const std::string& label,
                                          MapResult* result) {
   std::vector<std::string> failures;
-  TrajectoryOptions trajectory_options = trajectoryOptionsOf(parameters);
-  trajectory_options.global.offset_parts = plan.offset_parts;
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(trajectory_options).generate(plan.waypoints, free_area);
+      TrajectoryGenerator(trajectoryOptionsOf(parameters, plan.offset_parts))
+          .generate(plan.waypoints, free_area);
   if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
     failures.push_back("collision: min_obstacle_clearance_m " +
                        std::to_string(trajectory.min_obstacle_clearance_m));

@@ -121,10 +121,9 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
     const CoveragePlan plan =
         CoveragePlanner(mission.parameters).plan(mission.polygon, mission.start, mission.goal);
     planning_times_s.push_back(secondsSince(started));
-    TrajectoryOptions trajectory_options = trajectoryOptionsOf(mission.parameters);
-    trajectory_options.global.offset_parts = plan.offset_parts;
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(trajectory_options).generate(plan.waypoints, mission.polygon);
+        TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, plan.offset_parts))
+            .generate(plan.waypoints, mission.polygon);
     if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
       return fail("collision: min_obstacle_clearance_m " +
                   std::to_string(trajectory.min_obstacle_clearance_m));

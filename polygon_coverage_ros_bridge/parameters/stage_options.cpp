@@ -96,6 +96,13 @@ TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters) {
   return options;
 }
 
+TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters,
+                                      const std::vector<PolygonWithHoles>& offset_parts) {
+  TrajectoryOptions options = trajectoryOptionsOf(parameters);
+  options.global.offset_parts = offset_parts;
+  return options;
+}
+
 RobotModel robotModelOf(const PlannerParameters& parameters) {
   const PlannerParameters& p = validated(parameters);
   RobotModel model;

@@ -52,6 +52,11 @@ GlobalSmoothingOptions globalSmoothingOptionsOf(const PlannerParameters& paramet
 /// and the vehicle limits.
 TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters);
 
+/// As above, for a plan's waypoints: coverage-safe smoothing takes the plan's offset free
+/// area (`offset_parts`) instead of offsetting the free area again.
+TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters,
+                                      const std::vector<PolygonWithHoles>& offset_parts);
+
 /// The simulated robot: the vehicle limits, the controllers' gains and tolerances, the
 /// current, sim_dt and sim_time_limit.
 RobotModel robotModelOf(const PlannerParameters& parameters);

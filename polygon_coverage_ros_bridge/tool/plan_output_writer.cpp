@@ -36,9 +36,8 @@ GeneratedTrajectory generateTrajectory(const PlanOutputRequest& request, std::os
   const auto stage_start = std::chrono::steady_clock::now();
   GeneratedTrajectory trajectory;
   try {
-    TrajectoryOptions options = trajectoryOptionsOf(parameters);
-    options.global.offset_parts = request.plan->offset_parts;
-    trajectory = TrajectoryGenerator(options).generate(request.plan->waypoints, *request.free_area);
+    trajectory = TrajectoryGenerator(trajectoryOptionsOf(parameters, request.plan->offset_parts))
+                     .generate(request.plan->waypoints, *request.free_area);
   } catch (const SizeLimitError&) {
     throw;
   } catch (const InvalidInputError& error) {
