@@ -1,8 +1,9 @@
 // libFuzzer target: CoveragePlanner through the path `coverage_tool plan` takes
 // (ParameterValidator as the mission loader applies it, then planMission: validate, clean,
-// plan, with or without coverage_repair) on small fuzzed polygons with holes: at most
-// kMaxHullVertices hull vertices and kMaxHoles holes of at most kMaxHoleVertices vertices,
-// coordinates within [-5, 35] m, parameters in range or, now and then, deliberately out of range.
+// plan, with or without coverage_repair, decomposing the exact or a simplified boundary) on
+// small fuzzed polygons with holes: at most kMaxHullVertices hull vertices and kMaxHoles holes
+// of at most kMaxHoleVertices vertices, coordinates within [-5, 35] m, parameters in range or,
+// now and then, deliberately out of range.
 // Properties of every plan: waypoints are finite and distinct, each yaw is its leg's heading, the
 // path starts at the start and ends at the goal, every leg between first_inside and last_inside
 // lies in the route area (the offset free area's parts joined through their gaps; the planner
@@ -138,6 +139,8 @@ Mission mission(FuzzedDataProvider& input) {
   // Read last, so that the committed corpus decodes as before (an input that ends earlier
   // plans without the repair).
   m.parameters.coverage_repair = input.ConsumeBool();
+  // Later still: an input that ends before it decomposes the exact boundary.
+  m.parameters.boundary_simplification = input.ConsumeFloatingPointInRange(0.0, 0.5);
   return m;
 }
 
@@ -170,16 +173,18 @@ void printMission(const Mission& m, const char* path) {
   text += "\ncost_function: " + p.cost_function;
   text += "\nsensor_model: " + p.sensor_model;
   text += std::string("\ncoverage_repair: ") + (p.coverage_repair ? "true" : "false");
-  const std::pair<const char*, double> numbers[] = {{"wall_distance", p.wall_distance},
-                                                    {"lateral_footprint", p.lateral_footprint},
-                                                    {"sensor_distance", p.sensor_distance},
-                                                    {"lateral_fov", p.lateral_fov},
-                                                    {"onward_fov", p.onward_fov},
-                                                    {"lateral_overlap", p.lateral_overlap},
-                                                    {"turning_radius", p.turning_radius},
-                                                    {"v_max", p.v_max},
-                                                    {"a_max", p.a_max},
-                                                    {"yaw_rate_max", p.yaw_rate_max}};
+  const std::pair<const char*, double> numbers[] = {
+      {"wall_distance", p.wall_distance},
+      {"lateral_footprint", p.lateral_footprint},
+      {"sensor_distance", p.sensor_distance},
+      {"lateral_fov", p.lateral_fov},
+      {"onward_fov", p.onward_fov},
+      {"lateral_overlap", p.lateral_overlap},
+      {"boundary_simplification", p.boundary_simplification},
+      {"turning_radius", p.turning_radius},
+      {"v_max", p.v_max},
+      {"a_max", p.a_max},
+      {"yaw_rate_max", p.yaw_rate_max}};
   for (const auto& [name, value] : numbers)
     text += "\n" + std::string(name) + ": " + yamlNumber(value);
   if (std::FILE* file = std::fopen(path, "w")) {

@@ -8,11 +8,12 @@
 // ru_maxrss) and the slowest stage with its time; then each map's stage lines.
 //
 // Usage: scaling_benchmark [--sizes V:I[,V:I...]] [--seeds S] [--tool PATH] [--out DIR]
-//                          [--timeout SECONDS] [--plot FILE.png]
+//                          [--timeout SECONDS] [--plot FILE.png] [--set NAME=VALUE]...
 // Defaults: --sizes 500:10,1000:20,2000:40,5000:100,10000:200, one seed, coverage_tool
 // beside this program, a temporary folder (removed after), 300 s per run (a run past it
 // counts as timed out). Then the growth exponents of planning time, run time and peak memory
-// against vertices, and with --plot a log-log PNG of the times.
+// against vertices, and with --plot a log-log PNG of the times. --set NAME=VALUE (repeatable)
+// is handed to `coverage_tool plan`, to measure a parameter (boundary_simplification=0.05).
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -55,7 +56,15 @@ struct Run {
 /// Runs `tool plan mission --out dir` in a child, its output to a file, killed after
 /// `timeout_s`.
 Run runPlan(const std::string& tool, const std::string& mission, const std::string& dir,
-            double timeout_s) {
+            const std::vector<std::string>& settings, double timeout_s) {
+  std::vector<std::string> arguments = {tool, "plan", mission, "--out", dir};
+  for (const std::string& setting : settings) {
+    arguments.push_back("--set");
+    arguments.push_back(setting);
+  }
+  std::vector<char*> argv;
+  for (std::string& argument : arguments) argv.push_back(argument.data());
+  argv.push_back(nullptr);
   const std::string log = dir + ".log";
   const auto start = std::chrono::steady_clock::now();
   std::fflush(stdout);  // or the child would write what this process has buffered again
@@ -63,8 +72,7 @@ Run runPlan(const std::string& tool, const std::string& mission, const std::stri
   if (child == 0) {
     std::FILE* out = std::freopen(log.c_str(), "w", stdout);
     if (out == nullptr || dup2(fileno(stdout), fileno(stderr)) < 0) _exit(127);
-    execl(tool.c_str(), tool.c_str(), "plan", mission.c_str(), "--out", dir.c_str(),
-          static_cast<char*>(nullptr));
+    execv(tool.c_str(), argv.data());
     _exit(127);
   }
   Run run;
@@ -140,6 +148,7 @@ int main(int argc, char** argv) {
   std::string out;
   double timeout_s = 300.0;
   std::string plot;
+  std::vector<std::string> settings;
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
     if (argument == "--sizes" && i + 1 < argc) {
@@ -154,6 +163,8 @@ int main(int argc, char** argv) {
       timeout_s = std::atof(argv[++i]);
     } else if (argument == "--plot" && i + 1 < argc) {
       plot = argv[++i];
+    } else if (argument == "--set" && i + 1 < argc) {
+      settings.push_back(argv[++i]);
     } else {
       sizes.clear();
       break;
@@ -162,7 +173,7 @@ int main(int argc, char** argv) {
   if (sizes.empty()) {
     std::fprintf(stderr,
                  "usage: scaling_benchmark [--sizes V:I[,V:I...]] [--seeds S] [--tool PATH] "
-                 "[--out DIR] [--timeout SECONDS] [--plot FILE.png]\n");
+                 "[--out DIR] [--timeout SECONDS] [--plot FILE.png] [--set NAME=VALUE]...\n");
     return 2;
   }
   const bool temporary = out.empty();
@@ -190,7 +201,7 @@ int main(int argc, char** argv) {
                                std::to_string(size.islands) + "_" + std::to_string(seed);
       const std::string mission = out + "/" + name + ".yaml";
       std::ofstream(mission) << kinematic_coverage::core::testing::hardMapYaml(map);
-      const Run run = runPlan(tool, mission, out + "/" + name, timeout_s);
+      const Run run = runPlan(tool, mission, out + "/" + name, settings, timeout_s);
       const auto stages = stageTimes(run.output);
       // coverage_tool's own figure: validation, cleaning and planning, as metrics.json's
       // planning_time_s.

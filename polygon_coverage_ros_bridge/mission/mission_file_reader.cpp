@@ -37,6 +37,7 @@ const std::vector<ParameterField>& parameterFields() {
       {"yaw_rate_max", &P::yaw_rate_max},
       {"wall_distance", &P::wall_distance},
       {"offset_parts", &P::offset_parts},
+      {"boundary_simplification", &P::boundary_simplification},
       {"sensor_model", &P::sensor_model},
       {"lateral_fov", &P::lateral_fov},
       {"onward_fov", &P::onward_fov},

@@ -18,6 +18,18 @@ void requirePositive(const char* name, double value, const char* unit) {
   }
 }
 
+/// A share: 0 <= value < upper, or value <= upper where `upper_included`; `note` ends the
+/// message.
+void requireShare(const char* name, double value, double upper, bool upper_included,
+                  const char* note = "") {
+  if (!(std::isfinite(value) && value >= 0.0 &&
+        (upper_included ? value <= upper : value < upper))) {
+    throw InvalidInputError(std::string(name) + " = " + formatNumber(value) +
+                            " is out of range: it must be in [0, " + formatNumber(upper) +
+                            (upper_included ? "]" : ")") + note);
+  }
+}
+
 void requireOpenAngle(const char* name, double value) {
   if (!(std::isfinite(value) && value > 0.0 && value < M_PI)) {
     throw InvalidInputError(std::string(name) + " = " + formatNumber(value) +
@@ -43,10 +55,7 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   requireOpenAngle("onward_fov", p.onward_fov);
   requirePositive("lateral_footprint", p.lateral_footprint, "m");
   requirePositive("sensor_distance", p.sensor_distance, "m");
-  if (!(std::isfinite(p.lateral_overlap) && p.lateral_overlap >= 0.0 && p.lateral_overlap < 1.0)) {
-    throw InvalidInputError("lateral_overlap = " + formatNumber(p.lateral_overlap) +
-                            " is out of range: it must be in [0, 1)");
-  }
+  requireShare("lateral_overlap", p.lateral_overlap, 1.0, false);
   requirePositive("turning_radius", p.turning_radius, "m");
   choiceOf("offset_parts", p.offset_parts, kOffsetParts);
   choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies);
@@ -68,12 +77,9 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   requirePositive("arc_sampling_distance", p.arc_sampling_distance, "m");
   requirePositive("rotation_sampling_angle", p.rotation_sampling_angle, "rad");
   choiceOf("replanning_method", p.replanning_method, kReplanningMethods);
-  if (!(std::isfinite(p.replanning_sliver_fraction) && p.replanning_sliver_fraction >= 0.0 &&
-        p.replanning_sliver_fraction < 1.0)) {
-    throw InvalidInputError(
-        "replanning_sliver_fraction = " + formatNumber(p.replanning_sliver_fraction) +
-        " is out of range: it must be in [0, 1)");
-  }
+  requireShare("boundary_simplification", p.boundary_simplification, 0.5, true,
+               " (a share of the sweep distance)");
+  requireShare("replanning_sliver_fraction", p.replanning_sliver_fraction, 1.0, false);
   for (const auto& [name, value, unit] :
        {std::tuple<const char*, double, const char*>{"replanning_min_area", p.replanning_min_area,
                                                      "m^2"},

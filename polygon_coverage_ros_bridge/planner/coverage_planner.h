@@ -14,7 +14,8 @@ namespace kinematic_coverage::core {
 
 /// One stage of planning, for log lines and status messages.
 struct PlanningStage {
-  std::string name;  ///< "offset", "decompose", "sweeps", "transitions", "solve",
+  std::string name;  ///< "offset", "simplify" (boundary_simplification > 0), "decompose",
+                     ///< "sweeps", "transitions", "solve",
                      ///< "alternative" (cell_joining longest_overlap), "path", "repair"
   double duration_s = 0.0;
   std::string summary;  ///< one line: what the stage produced

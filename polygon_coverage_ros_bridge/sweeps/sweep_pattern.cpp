@@ -422,23 +422,70 @@ std::vector<double> evenLanePositions(double x_min, double x_max, double margin,
   return positions;
 }
 
+/// Edges, each from its end with the smaller x, sorted by that x.
+using EdgesByX = std::vector<std::pair<Point2, Point2>>;
+
+/// The edges of every ring of the area as EdgesByX; `widest` is set to the largest x extent
+/// of an edge.
+EdgesByX edgesByX(const PolygonWithHoles& area, double* widest) {
+  EdgesByX edges;
+  *widest = 0.0;
+  auto collect = [&](const Ring& ring) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      const Point2& p = ring[i];
+      const Point2& q = ring[(i + 1) % n];
+      edges.push_back(p.x() <= q.x() ? std::make_pair(p, q) : std::make_pair(q, p));
+      *widest = std::max(*widest, std::abs(q.x() - p.x()));
+    }
+  };
+  collect(area.hull);
+  for (const Ring& hole : area.holes) collect(hole);
+  std::sort(edges.begin(), edges.end(),
+            [](const auto& a, const auto& b) { return a.first.x() < b.first.x(); });
+  return edges;
+}
+
+/// Calls visit(edge) for the edges whose x extent meets [x_lo, x_hi].
+template <typename Visit>
+void visitEdgesOver(const EdgesByX& edges, double widest, double x_lo, double x_hi, Visit&& visit) {
+  auto it = std::lower_bound(edges.begin(), edges.end(), x_lo - widest,
+                             [](const auto& edge, double x) { return edge.first.x() < x; });
+  for (; it != edges.end() && it->first.x() <= x_hi; ++it) {
+    if (it->second.x() >= x_lo) visit(*it);
+  }
+}
+
+/// The nearest point of the edges when one lies within `reach` of p, else p.
+Point2 nearestOnEdges(const EdgesByX& edges, double widest, const Point2& p, double reach) {
+  Point2 nearest = p;
+  double nearest_distance = reach;
+  visitEdgesOver(edges, widest, p.x() - reach, p.x() + reach, [&](const auto& edge) {
+    const Point2 candidate = closestPointOnSegment(p, edge.first, edge.second);
+    const double distance = (candidate - p).norm();
+    if (distance <= nearest_distance) nearest_distance = distance, nearest = candidate;
+  });
+  return nearest;
+}
+
+/// True when an edge passes within `reach` of p.
+bool nearEdges(const EdgesByX& edges, double widest, const Point2& p, double reach) {
+  bool near = false;
+  visitEdgesOver(edges, widest, p.x() - reach, p.x() + reach, [&](const auto& edge) {
+    near = near || (closestPointOnSegment(p, edge.first, edge.second) - p).norm() <= reach;
+  });
+  return near;
+}
+
 }  // namespace
 
 SweepPatternGenerator::SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
                                              const PolygonWithHoles& area)
     : sensor_(sensor), lane_end_inset_(lane_end_inset) {
+  area_edges_ = edgesByX(area, &widest_area_edge_);
   double scale = 1.0;
   auto collect = [&](const Ring& ring) {
-    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-      const Point2& p = ring[i];
-      const Point2& q = ring[(i + 1) % n];
+    for (const Point2& p : ring) {
       area_vertices_.push_back(p);
-      if (p.x() <= q.x()) {
-        area_edges_.emplace_back(p, q);
-      } else {
-        area_edges_.emplace_back(q, p);
-      }
-      widest_area_edge_ = std::max(widest_area_edge_, std::abs(q.x() - p.x()));
       scale = std::max(scale, p.cwiseAbs().maxCoeff());
     }
   };
@@ -446,22 +493,42 @@ SweepPatternGenerator::SweepPatternGenerator(const FrustumSensor& sensor, double
   for (const Ring& hole : area.holes) collect(hole);
   std::sort(area_vertices_.begin(), area_vertices_.end(),
             [](const Point2& a, const Point2& b) { return a.x() < b.x(); });
-  std::sort(area_edges_.begin(), area_edges_.end(),
-            [](const auto& a, const auto& b) { return a.first.x() < b.first.x(); });
   vertex_tolerance_ = kRelativeLaneMerge * scale;
 }
 
+SweepPatternGenerator::SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
+                                             const PolygonWithHoles& area,
+                                             const PolygonWithHoles& exact_area,
+                                             double simplification_tolerance)
+    : SweepPatternGenerator(sensor, lane_end_inset, area) {
+  if (simplification_tolerance <= 0.0) return;
+  exact_edges_ = edgesByX(exact_area, &widest_exact_edge_);
+}
+
 Point2 SweepPatternGenerator::onNearbyAreaBoundary(const Point2& p, double reach) const {
-  Point2 nearest = p;
-  double nearest_distance = reach;
-  auto it =
-      std::lower_bound(area_edges_.begin(), area_edges_.end(), p.x() - reach - widest_area_edge_,
-                       [](const auto& edge, double x) { return edge.first.x() < x; });
-  for (; it != area_edges_.end() && it->first.x() <= p.x() + reach; ++it) {
-    const Point2 candidate = closestPointOnSegment(p, it->first, it->second);
-    const double distance = (candidate - p).norm();
-    if (distance <= nearest_distance) nearest_distance = distance, nearest = candidate;
-  }
+  return nearestOnEdges(area_edges_, widest_area_edge_, p, reach);
+}
+
+double SweepPatternGenerator::extensionToExactBoundary(const Point2& end, const Point2& along,
+                                                       double snap) const {
+  if (exact_edges_.empty()) return 0.0;
+  const double reach = sensor_.sweepDistance();
+  const Point2 far = end + reach * along;
+  double nearest = reach;
+  visitEdgesOver(exact_edges_, widest_exact_edge_, std::min(end.x(), far.x()) - snap,
+                 std::max(end.x(), far.x()) + snap, [&](const auto& edge) {
+                   const auto& [c, d] = edge;
+                   if ((closestPointOnSegment(end, c, d) - end).norm() <= snap) {
+                     nearest = 0.0;
+                     return;
+                   }
+                   const Point2 v = d - c;
+                   const double denominator = cross({0, 0}, along, v);
+                   if (denominator == 0.0) return;
+                   const double t = cross({0, 0}, c - end, v) / denominator;
+                   const double u = cross({0, 0}, c - end, along) / denominator;
+                   if (t >= 0.0 && u >= 0.0 && u <= 1.0) nearest = std::min(nearest, t);
+                 });
   return nearest;
 }
 
@@ -603,12 +670,33 @@ std::vector<std::pair<Point2, Point2>> SweepPatternGenerator::laneEnds(
     }
     return onNearbyAreaBoundary(nearest, kRelativeBoundarySnap * scale);
   };
+  // With a simplified area, an end on its boundary first goes on to the exact boundary
+  // (extensionToExactBoundary); an end that then lies beyond the cell moves onto the exact
+  // boundary when it is within rounding of it, as above.
+  const double boundary_reach = kRelativeLaneMerge * scale;
+  const double snap = kRelativeBoundarySnap * scale;
+  auto extension = [&](const Point2& end, const Point2& along) {
+    if (exact_edges_.empty() || !nearEdges(area_edges_, widest_area_edge_, end, boundary_reach)) {
+      return 0.0;
+    }
+    return extensionToExactBoundary(end, along, boundary_reach);
+  };
+  auto placed = [&](double x, double y, double beyond_cell) {
+    const Point2 end = fromSweepFrame({x, y}, direction);
+    if (beyond_cell <= 0.0) return insideCell(end);
+    return nearestOnEdges(exact_edges_, widest_exact_edge_, end, snap);
+  };
+  const Point2 up = fromSweepFrame({0.0, 1.0}, direction) - fromSweepFrame({0.0, 0.0}, direction);
   std::vector<std::pair<Point2, Point2>> result;
   for (std::size_t k = 0; k < positions.size(); ++k) {
-    const auto [lo, hi] = spans[k];
+    const auto [cell_lo, cell_hi] = spans[k];
+    const double below = extension(fromSweepFrame({positions[k], cell_lo}, direction), -up);
+    const double above = extension(fromSweepFrame({positions[k], cell_hi}, direction), up);
+    const double lo = cell_lo - below;
+    const double hi = cell_hi + above;
     const double inset = std::min(lane_end_inset_, 0.5 * (hi - lo));
-    result.emplace_back(insideCell(fromSweepFrame({positions[k], lo + inset}, direction)),
-                        insideCell(fromSweepFrame({positions[k], hi - inset}, direction)));
+    result.emplace_back(placed(positions[k], lo + inset, below - inset),
+                        placed(positions[k], hi - inset, above - inset));
   }
   return result;
 }

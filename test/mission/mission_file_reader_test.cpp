@@ -92,6 +92,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"rotation_sampling_angle", "0.1"},
       {"replanning_method", "convex_hull"},
       {"replanning_sliver_fraction", "0.3"},
+      {"boundary_simplification", "0.05"},
       {"replanning_min_area", "2.5"},
       {"replanning_simplify_tolerance", "0.25"},
       {"alpha", "6"},
@@ -119,6 +120,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.lateral_fov, 1.1);
   EXPECT_EQ(p.onward_fov, 0.3);
   EXPECT_EQ(p.replanning_sliver_fraction, 0.3);
+  EXPECT_EQ(p.boundary_simplification, 0.05);
   EXPECT_EQ(p.replanning_min_area, 2.5);
   EXPECT_EQ(p.replanning_simplify_tolerance, 0.25);
   EXPECT_EQ(p.lateral_footprint, 4.5);

@@ -94,6 +94,20 @@ TEST(ParameterValidator, RejectsOverlapOutsideZeroToOne) {
             "lateral_overlap = -0.2 is out of range: it must be in [0, 1)");
 }
 
+TEST(ParameterValidator, ChecksTheBoundarySimplificationShare) {
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.boundary_simplification = 0.5; }), "");
+  const std::string expected =
+      " is out of range: it must be in [0, 0.5] (a share of the sweep distance)";
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.boundary_simplification = 0.6; }),
+            "boundary_simplification = 0.6" + expected);
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.boundary_simplification = -0.01; }),
+            "boundary_simplification = -0.01" + expected);
+  EXPECT_EQ(errorOf([](PlannerParameters& p) {
+              p.boundary_simplification = std::numeric_limits<double>::quiet_NaN();
+            }),
+            "boundary_simplification = nan" + expected);
+}
+
 TEST(ParameterValidator, RejectsFieldsOfViewOutsideZeroToPi) {
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.lateral_fov = M_PI; }),
             "lateral_fov = 3.141592654 is out of range: it must be in (0, pi) rad");

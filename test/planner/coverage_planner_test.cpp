@@ -407,6 +407,59 @@ TEST(CoveragePlanner, JoinedCellsCoverANoisyShorelineInFewerCellsAndLessTime) {
   EXPECT_GE(coverage.report.reachable_coverage_percent, 99.9);
 }
 
+/// The reachable coverage of the trajectory the default smoothing makes of the plan.
+double trajectoryReachableCoverage(const testing::HardMap& map, const PlannerParameters& parameters,
+                                   const CoveragePlan& plan) {
+  PlannerParameters smoothed = parameters;
+  smoothed.smoothing = true;
+  const GeneratedTrajectory trajectory =
+      TrajectoryGenerator(trajectoryOptionsOf(smoothed, plan.offset_parts))
+          .generate(plan.waypoints, map.mission.polygon);
+  std::vector<Pose2> poses;
+  for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
+  return measureTrajectoryCoverage(map.mission.polygon, plan.offset_parts, smoothed, poses)
+      .report.reachable_coverage_percent;
+}
+
+/// A 500-vertex lake chart with 10 islands: decomposed with its offset boundary simplified
+/// within 5 % of the sweep distance, it has fewer cells, its legs stay in the exact offset
+/// free area, its smoothed trajectory sees at least 99.9 % of the reachable area, and its
+/// tour costs no more than with the exact boundary (0.5 % allowed).
+TEST(CoveragePlanner, ASimplifiedBoundaryPlansAChartInFewerCellsAndSeesItsRim) {
+  const testing::HardMap map = testing::HardMapGenerator::lakeChart(0, 500, 10);
+  PlannerParameters parameters = map.mission.parameters;
+  parameters.smoothing = false;
+  const CoveragePlan exact =
+      CoveragePlanner(parameters).plan(map.mission.polygon, map.mission.start, map.mission.goal);
+  EXPECT_EQ(stageSummary(exact, "simplify"), "");
+  parameters.boundary_simplification = 0.05;
+  const CoveragePlan simplified =
+      CoveragePlanner(parameters).plan(map.mission.polygon, map.mission.start, map.mission.goal);
+  expectValidPlan(map.mission.polygon, simplified, parameters, map.mission.start, map.mission.goal);
+  EXPECT_NE(stageSummary(simplified, "simplify").find("vertices"), std::string::npos);
+  EXPECT_LT(simplified.cells.size(), exact.cells.size());
+  EXPECT_LE(simplified.time_cost_s, 1.005 * exact.time_cost_s);
+  EXPECT_GE(trajectoryReachableCoverage(map, parameters, simplified), 99.9);
+}
+
+/// The first shorelines of HardMapGenerator's family, simplified within a tenth of the sweep
+/// distance: valid plans (legs in the exact offset free area, the reachable area seen) whose
+/// smoothed trajectories see at least 99.9 % of the reachable area.
+TEST(CoveragePlanner, SimplifiedShorelinesPlanValidlyAndSeeTheReachableArea) {
+  const testing::HardMapGenerator generator(testing::MapFamily::kShoreline);
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const testing::HardMap map = generator.generate(seed);
+    SCOPED_TRACE(::testing::Message() << "shoreline seed " << seed);
+    PlannerParameters parameters = map.mission.parameters;
+    parameters.smoothing = false;
+    parameters.boundary_simplification = 0.1;
+    const CoveragePlan plan =
+        CoveragePlanner(parameters).plan(map.mission.polygon, map.mission.start, map.mission.goal);
+    expectValidPlan(map.mission.polygon, plan, parameters, map.mission.start, map.mission.goal);
+    EXPECT_GE(trajectoryReachableCoverage(map, parameters, plan), 99.9);
+  }
+}
+
 /// The planner's guarantee: on 200 seeded random maps (hulls 50 to 200 m across, 0 to 15 holes,
 /// footprints from 12.9 m down to 2 m), every leg lies in the offset free area and the
 /// footprints swept along the legs cover at least 99 % of the reachable area.

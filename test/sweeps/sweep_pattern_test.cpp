@@ -290,5 +290,61 @@ TEST(SweepPattern, LanesThroughAcuteCornersEndInsideTheCell) {
   }
 }
 
+/// A 20 m x 10 m area whose right wall (x = 20) has a saw of teeth `depth` deep, and the
+/// rectangle that BoundarySimplification makes of it within that depth.
+struct SawWall {
+  PolygonWithHoles exact;
+  PolygonWithHoles simplified{{{0, 0}, {20, 0}, {20, 10}, {0, 10}}, {}};
+};
+
+SawWall sawWall(double depth) {
+  SawWall wall;
+  wall.exact.hull = {{0, 0}, {20, 0}};
+  for (int k = 0; k < 10; ++k) {
+    wall.exact.hull.emplace_back(20 + depth, k + 0.5);
+    wall.exact.hull.emplace_back(20, k + 1.0);
+  }
+  wall.exact.hull.emplace_back(0, 10);
+  return wall;
+}
+
+/// Lanes of a cell of a simplified area end where the lanes would end in the exact area: an
+/// end on the simplified boundary goes on along the lane to the exact wall, inside the exact
+/// area; an end on a wall that both share stays.
+TEST(SweepPattern, LaneEndsOnASimplifiedBoundaryGoOnToTheExactWall) {
+  const SawWall wall = sawWall(0.3);
+  const FrustumSensor sensor(4.0, 1.0, 0.25);
+  const SweepPatternGenerator generator(sensor, 0.0, wall.simplified, wall.exact, 0.3);
+  const auto lanes = generator.lanes(wall.simplified.hull, 0.0);
+  ASSERT_FALSE(lanes.empty());
+  bool some_beyond = false;
+  for (const auto& [a, b] : lanes) {
+    EXPECT_NEAR(a.x(), 0.0, 1e-9);
+    EXPECT_NEAR(distanceToRing(b, wall.exact.hull), 0.0, 1e-9) << b.transpose();
+    EXPECT_GE(b.x(), 20.0 - 1e-9);
+    EXPECT_TRUE(segmentInside(wall.exact, a, b, 1e-9));
+    some_beyond = some_beyond || b.x() > 20.01;
+  }
+  EXPECT_TRUE(some_beyond);
+  // Without the exact area, the same lanes end on the simplified wall.
+  for (const auto& [a, b] :
+       SweepPatternGenerator(sensor, 0.0, wall.simplified).lanes(wall.simplified.hull, 0.0)) {
+    EXPECT_NEAR(b.x(), 20.0, 1e-9);
+  }
+}
+
+/// A lane end on a decomposition cut (not on the area's boundary) stays on the cut: going on
+/// would sweep the neighbouring cell.
+TEST(SweepPattern, LaneEndsOnACutDoNotGoOn) {
+  const SawWall wall = sawWall(0.3);
+  const FrustumSensor sensor(4.0, 1.0, 0.25);
+  const SweepPatternGenerator generator(sensor, 0.0, wall.simplified, wall.exact, 0.3);
+  const Ring left_cell = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  for (const auto& [a, b] : generator.lanes(left_cell, 0.0)) {
+    EXPECT_NEAR(a.x(), 0.0, 1e-9);
+    EXPECT_NEAR(b.x(), 10.0, 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core
