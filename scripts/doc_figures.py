@@ -23,17 +23,20 @@ it equal to the document's: whole numbers (counts) exactly, decimals within one 
 document's last printed digit (they are printed rounded; the unit absorbs a last-digit
 rounding flip, nothing more).
 
-    scripts/doc_figures.py check [--ci] [--build-dir DIR] [--only FILE] [--skip PROGRAM]
-    scripts/doc_figures.py regenerate [--build-dir DIR] [--only FILE] [--skip PROGRAM]
+    scripts/doc_figures.py check [--ci] [--build-dir DIR] [--only FILE] [--skip PROGRAM] [--jobs N]
+    scripts/doc_figures.py regenerate [--build-dir DIR] [--only FILE] [--skip PROGRAM] [--jobs N]
 
 --only limits the run to one document, --skip leaves out the tables of one program (e.g.
-`--skip scripts/run_fuzzers.sh`, hours of fuzzing); both may be repeated.
+`--skip scripts/run_fuzzers.sh`, hours of fuzzing); both may be repeated. --jobs N runs up to
+N distinct commands at once (default 1; the tables' timings then share the machine, and
+say so only if the prose around them does).
 
 `regenerate` reruns every command in full and writes its tables (timings included) into the
 documents; the prose around them is the writer's. Exit status: 0 the figures hold, 1 a
 figure drifted or a command failed, 2 a malformed document or call.
 """
 import argparse
+import concurrent.futures
 import os
 import re
 import shlex
@@ -158,6 +161,31 @@ def run_command(command, build_dir, cache):
     return result.stdout
 
 
+def run_all(commands, build_dir, cache, jobs):
+    """Runs the distinct commands, up to `jobs` at once, into the cache of run_command."""
+    distinct = list(dict.fromkeys(command for command in commands if command not in cache))
+    if jobs <= 1 or len(distinct) <= 1:
+        return
+    results = {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(run_command, command, build_dir, results): command
+                   for command in distinct}
+        for future in concurrent.futures.as_completed(futures):
+            future.result()
+    cache.update(results)
+
+
+def commands_of(documents, ci, skip):
+    """The commands that check or regenerate would run for the documents."""
+    commands = []
+    for document in documents:
+        for marker in find_markers(document, read_lines(document)):
+            command = marker.ci if ci else marker.command
+            if not command.startswith('skip') and not skipped_program(marker.command, skip):
+                commands.append(command)
+    return commands
+
+
 def output_table(output, marker, command):
     tables = read_tables(output.splitlines())
     if len(tables) < marker.table:
@@ -237,8 +265,9 @@ def skipped_program(command, skip):
     return shlex.split(command)[0] in skip
 
 
-def check(documents, build_dir, ci, skip=()):
+def check(documents, build_dir, ci, skip=(), jobs=1):
     cache = {}
+    run_all(commands_of(documents, ci, skip), build_dir, cache, jobs)
     problems = []
     checked = skipped = 0
     for document in documents:
@@ -268,8 +297,9 @@ def check(documents, build_dir, ci, skip=()):
     return 1 if problems else 0
 
 
-def regenerate(documents, build_dir, skip=()):
+def regenerate(documents, build_dir, skip=(), jobs=1):
     cache = {}
+    run_all(commands_of(documents, False, skip), build_dir, cache, jobs)
     failed = 0
     for document in documents:
         lines = read_lines(document)
@@ -306,13 +336,14 @@ def main():
     parser.add_argument('--only', action='append', help='one document (repeatable)')
     parser.add_argument('--skip', action='append', default=[],
                         help="leave out one program's tables (repeatable)")
+    parser.add_argument('--jobs', type=int, default=1, help='commands run at once')
     arguments = parser.parse_args()
     documents = arguments.only or DOCUMENTS
     build_dir = os.path.abspath(arguments.build_dir)
     try:
         if arguments.action == 'check':
-            return check(documents, build_dir, arguments.ci, arguments.skip)
-        return regenerate(documents, build_dir, arguments.skip)
+            return check(documents, build_dir, arguments.ci, arguments.skip, arguments.jobs)
+        return regenerate(documents, build_dir, arguments.skip, arguments.jobs)
     except DocumentError as error:
         print(f'doc_figures: {error}', file=sys.stderr)
         return 2

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <utility>
 
+#include "polygon_coverage_ros_bridge/base/parallel_for.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
 namespace kinematic_coverage::core {
@@ -28,14 +29,22 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
     node_contacts_.push_back({cluster, {}});
   }
   const std::size_t n = nodes_.size();
+  // The visibility tests (most of the work) on every hardware thread, row u testing the
+  // nodes after u; the graph is then built in the same order as one thread would.
+  std::vector<std::vector<char>> visible(n);
+  parallelFor(n, [&](std::size_t u) {
+    visible[u].resize(n - u, 0);
+    for (std::size_t w = u + 1; w < n; ++w) {
+      visible[u][w - u] =
+          grid_.segmentInside(nodes_[u], node_contacts_[u], nodes_[w], node_contacts_[w]);
+    }
+  });
   node_costs_.assign(n * n, kUnreachable);
   neighbours_.assign(n, {});
   for (std::size_t u = 0; u < n; ++u) {
     node_costs_[u * n + u] = 0.0;
     for (std::size_t w = u + 1; w < n; ++w) {
-      if (!grid_.segmentInside(nodes_[u], node_contacts_[u], nodes_[w], node_contacts_[w])) {
-        continue;
-      }
+      if (!visible[u][w - u]) continue;
       const double c = segment_cost_.of(nodes_[u], nodes_[w]);
       node_costs_[u * n + w] = node_costs_[w * n + u] = c;
       neighbours_[u].push_back({static_cast<int>(w), c});
@@ -50,19 +59,20 @@ void VisibilityGraph::allPairsCosts() {
   // triangle only: the costs are symmetric, and an update of (i, j) and one of (j, i) add
   // the same two numbers, so the lower triangle would repeat the upper one bit for bit.
   // Row k is read whole: its part left of the diagonal is refreshed from column k first
-  // (iteration k changes neither row k nor column k).
+  // (iteration k changes neither row k nor column k). Within an iteration each row reads
+  // only itself and the copy of row k, so the rows are updated on every hardware thread.
   const std::size_t n = nodes_.size();
   Eigen::ArrayXd via_row(n);
   for (std::size_t k = 0; k < n; ++k) {
     for (std::size_t j = 0; j < k; ++j) node_costs_[k * n + j] = node_costs_[j * n + k];
     via_row = Eigen::Map<const Eigen::ArrayXd>(&node_costs_[k * n], n);
-    for (std::size_t i = 0; i + 1 < n; ++i) {
+    parallelFor(n - 1, [&](std::size_t i) {
       const double to_via = i < k ? node_costs_[i * n + k] : node_costs_[k * n + i];
-      if (i == k || to_via == kUnreachable) continue;
+      if (i == k || to_via == kUnreachable) return;
       const std::size_t right = n - i - 1;  // columns i + 1 to n - 1
       Eigen::Map<Eigen::ArrayXd> row(&node_costs_[i * n + i + 1], right);
       row = row.min(via_row.tail(right) + to_via);
-    }
+    });
   }
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < i; ++j) node_costs_[i * n + j] = node_costs_[j * n + i];
@@ -238,7 +248,7 @@ std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sourc
   std::vector<std::size_t> target_points;
   for (const Point2& p : sources) source_points.push_back(indexOf(p, true));
   for (const Point2& p : targets) target_points.push_back(indexOf(p, false));
-  for (std::size_t i = 0; i < points.size(); ++i) attachNodes(&points[i], is_source[i]);
+  parallelFor(points.size(), [&](std::size_t i) { attachNodes(&points[i], is_source[i]); });
 
   // Costs between distinct points only, then spread over the requested rows and columns.
   auto slots = [&](const std::vector<std::size_t>& uses, std::vector<std::size_t>* distinct) {
@@ -255,17 +265,32 @@ std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sourc
   std::vector<std::size_t> distinct_targets;
   const std::vector<std::size_t> source_slot = slots(source_points, &distinct_sources);
   const std::vector<std::size_t> target_slot = slots(target_points, &distinct_targets);
-  // Routes are symmetric: a pair already computed the other way round is reused.
+  // Routes are symmetric: a pair already computed the other way round, in an earlier row, is
+  // reused. The entries so reused are never reuses themselves (their reverse lies in a later
+  // row), so every other entry is computed first, rows on every hardware thread, and the
+  // reuses copied after.
   const std::size_t columns = distinct_targets.size();
-  std::vector<double> distinct_costs;
-  distinct_costs.reserve(distinct_sources.size() * columns);
+  std::vector<double> distinct_costs(distinct_sources.size() * columns);
+  auto reversedKnown = [&](std::size_t row, std::size_t s, std::size_t t) {
+    return target_slot[s] < columns && source_slot[t] < row;
+  };
+  parallelFor(distinct_sources.size(), [&](std::size_t row) {
+    const std::size_t s = distinct_sources[row];
+    for (std::size_t column = 0; column < columns; ++column) {
+      const std::size_t t = distinct_targets[column];
+      if (!reversedKnown(row, s, t)) {
+        distinct_costs[row * columns + column] = bestRoute(points[s], points[t]).cost;
+      }
+    }
+  });
   for (std::size_t row = 0; row < distinct_sources.size(); ++row) {
     const std::size_t s = distinct_sources[row];
-    for (std::size_t t : distinct_targets) {
-      const bool reversed_known = target_slot[s] < columns && source_slot[t] < row;
-      distinct_costs.push_back(reversed_known
-                                   ? distinct_costs[source_slot[t] * columns + target_slot[s]]
-                                   : bestRoute(points[s], points[t]).cost);
+    for (std::size_t column = 0; column < columns; ++column) {
+      const std::size_t t = distinct_targets[column];
+      if (reversedKnown(row, s, t)) {
+        distinct_costs[row * columns + column] =
+            distinct_costs[source_slot[t] * columns + target_slot[s]];
+      }
     }
   }
   std::vector<double> result;

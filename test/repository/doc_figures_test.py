@@ -113,6 +113,20 @@ class CheckTest(unittest.TestCase):
         with open(self.document) as stream:
             self.assertIn('| lake | 52 | 7420.95 | 13.2 |', stream.read())
 
+    def test_jobs_run_the_commands_at_once_with_the_same_outcome(self):
+        with open(self.document, 'a') as stream:
+            stream.write('\n    fake_bench --runs 5\n\n'
+                         '<!-- figures: command="fake_bench --runs 5" ci="skip: slow" -->\n'
+                         '| map | cells | length m | time ms (timing) |\n|---|---|---|---|\n'
+                         '| lake | 52 | 7420.70 | 13.2 |\n| pond | 3 | 19.34 | 0.2 |\n')
+        self.program(['| lake | 52 | 7420.70 | 13.2 |', '| pond | 3 | 19.34 | 0.2 |'])
+        self.assertEqual(doc_figures.check([self.document], self.build, False, jobs=2), 0)
+        self.program(['| lake | 52 | 7420.95 | 13.2 |', '| pond | 3 | 19.34 | 0.2 |'])
+        self.assertEqual(doc_figures.check([self.document], self.build, False, jobs=2), 1)
+        self.assertEqual(doc_figures.regenerate([self.document], self.build, jobs=2), 0)
+        with open(self.document) as stream:
+            self.assertEqual(stream.read().count('| lake | 52 | 7420.95 | 13.2 |'), 2)
+
 
 if __name__ == '__main__':
     unittest.main()

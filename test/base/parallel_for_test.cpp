@@ -1,0 +1,52 @@
+#include "polygon_coverage_ros_bridge/base/parallel_for.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace kinematic_coverage::core {
+namespace {
+
+TEST(ParallelFor, CallsTheBodyOnceForEveryIndex) {
+  for (std::size_t count : {0u, 1u, 2u, 7u, 1000u}) {
+    std::vector<std::atomic<int>> calls(count);
+    parallelFor(count, [&](std::size_t i) { ++calls[i]; });
+    for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(calls[i], 1) << "index " << i;
+  }
+}
+
+TEST(ParallelFor, UnevenRowsGiveWhatOneThreadGives) {
+  // A triangle of work, as the visibility graph's rows: each row writes its own results.
+  const std::size_t n = 300;
+  std::vector<std::vector<double>> rows(n);
+  parallelFor(n, [&](std::size_t u) {
+    for (std::size_t w = u; w < n; ++w) rows[u].push_back(static_cast<double>(u * n + w) / 7.0);
+  });
+  for (std::size_t u = 0; u < n; ++u) {
+    ASSERT_EQ(rows[u].size(), n - u);
+    for (std::size_t w = u; w < n; ++w) {
+      EXPECT_EQ(rows[u][w - u], static_cast<double>(u * n + w) / 7.0);
+    }
+  }
+}
+
+TEST(ParallelFor, RethrowsWhatABodyThrewAfterEveryThreadStopped) {
+  std::atomic<int> running{0};
+  EXPECT_THROW(parallelFor(100,
+                           [&](std::size_t i) {
+                             ++running;
+                             if (i == 17) {
+                               --running;
+                               throw std::runtime_error("index 17");
+                             }
+                             --running;
+                           }),
+               std::runtime_error);
+  EXPECT_EQ(running, 0);
+}
+
+}  // namespace
+}  // namespace kinematic_coverage::core

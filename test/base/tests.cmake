@@ -1,0 +1,4 @@
+# base/ is header-only; kc_route, which runs parallelFor, brings its include path and threads.
+kc_add_gtest(test_base
+  test/base/parallel_for_test.cpp
+  LIBRARIES kc_route)
