@@ -93,9 +93,8 @@ PolygonWithHoles toPolygonWithHoles(const ExactPolygonWithHoles& polygon) {
   return result;
 }
 
-/// Throws InvalidInputError when the straight skeleton of `ring` would hold more than
-/// kMaxSkeletonPairs vertex pairs (see wall_offset.h); `name` names it ("the hull", "hole 2").
-void checkSkeletonSize(const Ring& ring, const std::string& name) {
+/// The reflex vertices of the ring taken counter-clockwise.
+std::size_t reflexVertexCount(const Ring& ring) {
   const std::size_t n = ring.size();
   const bool counter_clockwise = signedArea(ring) > 0.0;
   std::size_t reflex = 0;
@@ -103,7 +102,15 @@ void checkSkeletonSize(const Ring& ring, const std::string& name) {
     const double turn = cross(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]);
     if (counter_clockwise ? turn < 0.0 : turn > 0.0) ++reflex;
   }
-  const double pairs = static_cast<double>(n) * static_cast<double>(reflex);
+  return reflex;
+}
+
+/// Throws InvalidInputError when the straight skeleton of `ring` would hold more than
+/// kMaxSkeletonPairs vertex pairs (see wall_offset.h); `name` names it ("the hull", "hole 2").
+void checkSkeletonSize(const Ring& ring, const std::string& name) {
+  const std::size_t n = ring.size();
+  const std::size_t reflex = reflexVertexCount(ring);
+  const double pairs = skeletonPairs(ring);
   if (pairs <= kMaxSkeletonPairs) return;
   std::ostringstream message;
   message << name << " has " << n << " vertices, " << reflex
@@ -113,11 +120,24 @@ void checkSkeletonSize(const Ring& ring, const std::string& name) {
           << pairs / kMaxSkeletonPairs << " times the limit of "
           << static_cast<long long>(kMaxSkeletonPairs) << ": simplify " << name
           << " to fewer vertices (noise far below wall_distance and the sweep distance only adds "
-             "vertices) or plan the area in parts";
+             "vertices; boundary_simplification does it within a share of the sweep distance) or "
+             "plan the area in parts";
   throw SizeLimitError(message.str());
 }
 
 }  // namespace
+
+double skeletonPairs(const Ring& ring) {
+  return static_cast<double>(ring.size()) * static_cast<double>(reflexVertexCount(ring));
+}
+
+bool fitsSkeletonLimit(const PolygonWithHoles& area) {
+  if (skeletonPairs(area.hull) > kMaxSkeletonPairs) return false;
+  for (const Ring& hole : area.holes) {
+    if (skeletonPairs(hole) > kMaxSkeletonPairs) return false;
+  }
+  return true;
+}
 
 OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance) {
   if (wall_distance > 0.0) {

@@ -14,6 +14,13 @@ namespace kinematic_coverage::core {
 /// with 1 966 take 396 MB), so the limit keeps one offset under about 400 MB.
 constexpr double kMaxSkeletonPairs = 8e6;
 
+/// The vertex pairs of the ring's straight skeleton (its vertices times its reflex vertices,
+/// the ring taken counter-clockwise), which kMaxSkeletonPairs bounds.
+double skeletonPairs(const Ring& ring);
+
+/// True when the straight skeleton of every ring of the area is within kMaxSkeletonPairs.
+bool fitsSkeletonLimit(const PolygonWithHoles& area);
+
 /// The offset free area (docs/REFERENCE.md, Geometry and input rules): one part, or
 /// several where the offset splits the free area (a strait narrower than two wall
 /// distances).

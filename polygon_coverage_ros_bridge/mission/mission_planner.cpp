@@ -5,6 +5,7 @@
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 
 namespace kinematic_coverage::core {
@@ -19,7 +20,8 @@ PlannedMission planMission(const Mission& mission, const StageCallback& on_stage
   std::vector<PlanningStage> stages;
 
   BuiltFreeArea built =
-      FreeAreaBuilder().build(mission.polygon, {{"start", mission.start}, {"goal", mission.goal}});
+      FreeAreaBuilder(boundarySimplificationOf(mission.parameters))
+          .build(mission.polygon, {{"start", mission.start}, {"goal", mission.goal}});
   CleanedPolygon& cleaned = built.cleaned;
   stages.push_back({"validate", built.validate_s, "polygon, start and goal valid"});
   if (on_stage) on_stage(stages.back());

@@ -61,6 +61,10 @@ FrustumSensor sensorOf(const PlannerParameters& parameters) {
   return FrustumSensor::fromOptions(sensorOptionsOf(parameters));
 }
 
+double boundarySimplificationOf(const PlannerParameters& parameters) {
+  return validated(parameters).boundary_simplification * sensorOf(parameters).sweepDistance();
+}
+
 DecompositionType decompositionTypeOf(const PlannerParameters& parameters) {
   return choiceOf("decomposition_type", validated(parameters).decomposition_type,
                   kDecompositionTypes);

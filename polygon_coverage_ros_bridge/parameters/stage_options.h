@@ -30,6 +30,9 @@ SensorOptions sensorOptionsOf(const PlannerParameters& parameters);
 /// The sensor of sensorOptionsOf.
 FrustumSensor sensorOf(const PlannerParameters& parameters);
 
+/// boundary_simplification as a distance (m): that share of the sensor's sweep distance.
+double boundarySimplificationOf(const PlannerParameters& parameters);
+
 /// decomposition_type.
 DecompositionType decompositionTypeOf(const PlannerParameters& parameters);
 

@@ -746,7 +746,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   const char* failing_stage = "simplify";
   try {
     const FrustumSensor sensor = sensorOf(parameters_);
-    const double simplification = parameters_.boundary_simplification * sensor.sweepDistance();
+    const double simplification = boundarySimplificationOf(parameters_);
     const std::vector<PolygonWithHoles> simplified = simplifyStage(run, parts, simplification);
     const DecomposedParts decomposed{parts, simplified, simplification};
 

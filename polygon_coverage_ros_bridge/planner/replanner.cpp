@@ -98,7 +98,8 @@ ReplannedMission Replanner::replanFrom(
   if (!std::isfinite(last.x) || !std::isfinite(last.y)) {
     throw InvalidInputError("the last visited pose has a non-finite coordinate");
   }
-  BuiltFreeArea built = FreeAreaBuilder().build(updated_polygon, {{"goal", goal}});
+  BuiltFreeArea built = FreeAreaBuilder(boundarySimplificationOf(parameters_))
+                            .build(updated_polygon, {{"goal", goal}});
   stage_took("validate", built.validate_s,
              "updated polygon and goal valid, " + std::to_string(visited_count) + " visited poses");
 

@@ -10,6 +10,7 @@
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/tool/command_line.h"
 #include "polygon_coverage_ros_bridge/tool/coverage_metrics.h"
 #include "polygon_coverage_ros_bridge/tool/json_object.h"
@@ -61,7 +62,8 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
 
   // The free area and offset free area as `plan` makes them.
   const auto evaluation_start = std::chrono::steady_clock::now();
-  const BuiltFreeArea built = FreeAreaBuilder().build(mission.polygon);
+  const BuiltFreeArea built =
+      FreeAreaBuilder(boundarySimplificationOf(mission.parameters)).build(mission.polygon);
   const CleanedPolygon& cleaned = built.cleaned;
   out << "validate: polygon valid (" << formatSeconds(built.validate_s) << ")" << std::endl;
   out << "clean: free area " << area(cleaned.free_area) << " m^2, "

@@ -128,7 +128,8 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   // The free area and offset free area as `plan` makes them, for the
   // coverage of the actual poses.
   stage_start = std::chrono::steady_clock::now();
-  const CleanedPolygon cleaned = FreeAreaBuilder().build(mission.polygon).cleaned;
+  const CleanedPolygon cleaned =
+      FreeAreaBuilder(boundarySimplificationOf(mission.parameters)).build(mission.polygon).cleaned;
   const OffsetFreeArea offset =
       computeOffsetFreeArea(cleaned.free_area, mission.parameters.wall_distance);
   out << "area: free area " << area(cleaned.free_area) << " m^2, offset free area "

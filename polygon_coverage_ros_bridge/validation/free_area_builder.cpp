@@ -1,11 +1,54 @@
 #include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 
 #include <chrono>
+#include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/geometry/boundary_simplification.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
 namespace kinematic_coverage::core {
+namespace {
+
+/// True when an endpoint lies in a hole of `simplified` but not in that hole of `free_area`
+/// (the simplification grew the hole over it): planning would then blame the user's point.
+bool swallowsAnEndpoint(const PolygonWithHoles& free_area, const PolygonWithHoles& simplified,
+                        const std::vector<NamedEndpoint>& endpoints) {
+  for (const auto& [name, point] : endpoints) {
+    for (std::size_t i = 0; i < simplified.holes.size(); ++i) {
+      if (insideRing(point, simplified.holes[i]) && !insideRing(point, free_area.holes[i])) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+/// The cleaned free area simplified inward within `tolerance` where its wall offset would not
+/// fit the straight skeleton's limit, with a warning; unchanged otherwise.
+void fitToTheSkeletonLimit(double tolerance, const std::vector<NamedEndpoint>& endpoints,
+                           CleanedPolygon* cleaned) {
+  const PolygonWithHoles& free_area = cleaned->free_area;
+  if (tolerance <= 0.0 || fitsSkeletonLimit(free_area)) return;
+  PolygonWithHoles simplified = BoundarySimplification(tolerance).simplify(free_area);
+  if (swallowsAnEndpoint(free_area, simplified, endpoints)) return;
+  std::ostringstream warning;
+  warning << "the free area has too many vertices for the wall offset's straight skeleton (the "
+             "hull "
+          << free_area.hull.size() << " vertices, " << skeletonPairs(free_area.hull)
+          << " vertex pairs, limit " << kMaxSkeletonPairs << " per ring): simplified inward within "
+          << tolerance << " m (boundary_simplification), "
+          << BoundarySimplification::vertexCount(free_area) << " -> "
+          << BoundarySimplification::vertexCount(simplified) << " vertices, "
+          << area(free_area) - area(simplified)
+          << " m^2 along the boundary given up as wall (neither planned nor counted)";
+  cleaned->warnings.push_back(warning.str());
+  cleaned->free_area = std::move(simplified);
+}
+
+}  // namespace
 
 BuiltFreeArea FreeAreaBuilder::build(const PolygonWithHoles& raw,
                                      const std::vector<NamedEndpoint>& endpoints) const {
@@ -18,6 +61,7 @@ BuiltFreeArea FreeAreaBuilder::build(const PolygonWithHoles& raw,
 
   start = std::chrono::steady_clock::now();
   built.cleaned = PolygonCleaner().clean(raw);
+  fitToTheSkeletonLimit(skeleton_simplification_, endpoints, &built.cleaned);
   built.clean_s = secondsSince(start);
   return built;
 }

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
@@ -131,6 +132,31 @@ TEST(MissionPlans, GlobalSmoothingIsNeverSlowerThanLocal) {
     EXPECT_GT(by_variable.min_obstacle_clearance_m, 0.0);
     EXPECT_GE(by_variable.statistics.turns_smoothed, by_global.statistics.turns_smoothed);
   }
+}
+
+/// A lake 120 m across whose shore has 6 000 vertices, a saw of 0.2 m teeth: 3 000 reflex
+/// vertices, over twice the straight skeleton's limit. Refused with the exact boundary; with
+/// boundary_simplification the free area is simplified inward (one warning naming what is
+/// given up), planned, and the plan stays in the offset free area and sees the reachable area.
+TEST(MissionPlans, AChartTooLargeForTheWallOffsetIsSimplifiedAndPlanned) {
+  Mission mission;
+  const int n = 6000;
+  for (int i = 0; i < n; ++i) {
+    const double angle = 2.0 * M_PI * i / n;
+    const double radius = i % 2 == 0 ? 60.2 : 60.0;
+    mission.polygon.hull.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+  }
+  mission.start = {0, -50};
+  mission.goal = {0, 50};
+  EXPECT_THROW(planMission(mission), SizeLimitError);
+  mission.parameters.boundary_simplification = 0.1;
+  mission.parameters.smoothing = false;
+  const PlannedMission planned = planMission(mission);
+  ASSERT_FALSE(planned.warnings.empty());
+  EXPECT_NE(planned.warnings.front().find("simplified inward"), std::string::npos)
+      << planned.warnings.front();
+  EXPECT_LT(planned.free_area.hull.size(), 3100u);
+  expectValidPlan(planned.free_area, planned.plan, mission.parameters, mission.start, mission.goal);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -45,6 +46,54 @@ TEST(FreeAreaBuilder, RejectsInvalidPolygonsAndEndpointsBeforeCleaning) {
   // Holes splitting the free area are the cleaner's error, after validation passed.
   const PolygonWithHoles split{rectangle(0, 0, 20, 10), {rectangle(8, -1, 12, 11)}};
   EXPECT_NE(errorOf(split, {}), "");
+}
+
+/// A lake 120 m across whose shore has 6 000 vertices, a saw of 0.2 m teeth (3 000 reflex
+/// vertices, 18 million skeleton pairs), and a 4 m island with a bay 0.3 m deep cut into it.
+PolygonWithHoles sawShoreLake() {
+  PolygonWithHoles lake;
+  const int n = 6000;
+  for (int i = 0; i < n; ++i) {
+    const double angle = 2.0 * M_PI * i / n;
+    const double radius = i % 2 == 0 ? 60.2 : 60.0;
+    lake.hull.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+  }
+  // Clockwise, with the bay between x = 0.85 and 1.15 at the island's top (y = 2).
+  lake.holes.push_back({{-2, -2}, {-2, 2}, {0.85, 2}, {1.0, 1.7}, {1.15, 2}, {2, 2}, {2, -2}});
+  return lake;
+}
+
+TEST(FreeAreaBuilder, SimplifiesAnAreaTooLargeForTheWallOffsetInwardWithAWarning) {
+  const PolygonWithHoles lake = sawShoreLake();
+  ASSERT_FALSE(fitsSkeletonLimit(lake));
+  const BuiltFreeArea exact = FreeAreaBuilder().build(lake);
+  EXPECT_TRUE(exact.cleaned.warnings.empty());
+  EXPECT_EQ(exact.cleaned.free_area.hull.size(), lake.hull.size());
+
+  const double tolerance = 0.5;
+  const BuiltFreeArea built = FreeAreaBuilder(tolerance).build(lake, {{"start", {10, 10}}});
+  const PolygonWithHoles& simplified = built.cleaned.free_area;
+  EXPECT_TRUE(fitsSkeletonLimit(simplified));
+  ASSERT_EQ(built.cleaned.warnings.size(), 1u);
+  EXPECT_NE(built.cleaned.warnings[0].find("simplified inward within 0.5 m"), std::string::npos)
+      << built.cleaned.warnings[0];
+  // Inward and within the tolerance: the area shrinks by at most the tolerance along the
+  // boundary, and every given vertex lies within the tolerance of the simplified boundary.
+  const double given_up = area(lake) - area(simplified);
+  EXPECT_GT(given_up, 0.0);
+  EXPECT_LT(given_up, tolerance * 2.0 * M_PI * 60.2);
+  for (const Point2& p : lake.hull) EXPECT_LE(distanceToRing(p, simplified.hull), tolerance + 1e-9);
+  ASSERT_EQ(simplified.holes.size(), 1u);
+  EXPECT_TRUE(insideRing({1.0, 1.9}, simplified.holes[0]));  // the bay, 0.3 m deep, is closed
+}
+
+/// A start in the island's bay would end inside the grown island: the area is then left as it
+/// is (and the wall offset refuses it), rather than the user's start blamed for lying in a hole.
+TEST(FreeAreaBuilder, LeavesTheAreaExactWhereSimplifyingWouldSwallowAnEndpoint) {
+  const PolygonWithHoles lake = sawShoreLake();
+  const BuiltFreeArea built = FreeAreaBuilder(0.5).build(lake, {{"start", {1.0, 1.95}}});
+  EXPECT_TRUE(built.cleaned.warnings.empty());
+  EXPECT_EQ(built.cleaned.free_area.hull.size(), lake.hull.size());
 }
 
 }  // namespace

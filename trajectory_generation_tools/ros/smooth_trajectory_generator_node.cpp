@@ -59,7 +59,10 @@ void SmoothTrajectoryGeneratorNode::onPolygon(
   free_area_.reset();
   try {
     const core::PolygonWithHoles raw = fromMessage(message->polygon);
-    core::CleanedPolygon cleaned = core::FreeAreaBuilder().build(raw).cleaned;
+    core::CleanedPolygon cleaned =
+        core::FreeAreaBuilder(core::boundarySimplificationOf(readPlannerParameters(private_node_)))
+            .build(raw)
+            .cleaned;
     for (const std::string& warning : cleaned.warnings) {
       ROS_WARN("smooth_trajectory_generator: %s", warning.c_str());
     }
