@@ -71,6 +71,30 @@ TEST(Replanner, CoverageRepairRepairsTheReplannedPath) {
   EXPECT_GE(combined[1], 99.9);
 }
 
+/// Replanning decomposes the remaining region simplified too (stage `simplify`): the lanes go
+/// on to the region's exact boundary, and the visited and new footprints together see the
+/// reachable area as with the exact region (0.1 point allowed).
+TEST(Replanner, ASimplifiedRegionIsReplannedAndSeen) {
+  const testing::DriftScenario scenario = testing::lakeDriftScenario(0.4, {2.0, 1.0});
+  double combined[2] = {0.0, 0.0};
+  for (const double simplification : {0.0, 0.1}) {
+    PlannerParameters parameters = scenario.mission.parameters;
+    parameters.boundary_simplification = simplification;
+    const ReplannedMission replanned =
+        Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
+    bool simplified = false;
+    for (const PlanningStage& stage : replanned.plan.stages) simplified |= stage.name == "simplify";
+    EXPECT_EQ(simplified, simplification > 0.0);
+    parameters.smoothing = false;
+    const GeneratedTrajectory trajectory =
+        TrajectoryGenerator(trajectoryOptionsOf(parameters))
+            .generate(replanned.plan.waypoints, replanned.free_area);
+    combined[simplified ? 1 : 0] = testing::combinedReachableCoverage(
+        replanned.free_area, parameters, scenario.visited, trajectory.poses);
+  }
+  EXPECT_GE(combined[1], combined[0] - 0.1);
+}
+
 /// Every method gives valid parts and a plan; the convex hull discards unvisited area, so
 /// it keeps no more than the footprint method (thesis Fig. 3.9 and 3.11).
 TEST(Replanner, EveryMethodGivesValidPartsAndAPlan) {
