@@ -441,11 +441,10 @@ void warnOfALongFootprint(const FrustumSensor& sensor, CoveragePlan* plan) {
 }
 
 /// The parts to cover and what was decomposed of them: the same parts, or their
-/// simplifications within `tolerance` (simplifyStage).
+/// simplifications (simplifyStage).
 struct DecomposedParts {
   const std::vector<PolygonWithHoles>& exact;
   const std::vector<PolygonWithHoles>& decomposed;
-  double tolerance = 0.0;
 };
 
 /// Sweep patterns per cell and direction, spaced by the sensor's footprint (begun at
@@ -461,12 +460,9 @@ SweepStage sweepStage(const PlanningRun& run, Clock::time_point since, const Dec
   SweepStage sweeps;
   sweeps.clusters = {{0}, {1}};  // start, goal
   for (std::size_t k = 0; k < parts.exact.size(); ++k) {
-    // A part the simplification left as it was is swept as an exact one.
-    const bool simplified = BoundarySimplification::vertexCount(parts.decomposed[k]) <
-                            BoundarySimplification::vertexCount(parts.exact[k]);
     const SweepPatternGenerator generator(
         sensor, SweepPatternGenerator::laneEndInset(sensor, run.parameters.wall_distance),
-        parts.decomposed[k], parts.exact[k], simplified ? parts.tolerance : 0.0);
+        parts.decomposed[k], parts.exact[k]);
     for (const Cell& cell : decompositions[k].cells) {
       std::vector<int> cluster;
       for (double direction : cell.sweep_directions) {
@@ -748,7 +744,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     const FrustumSensor sensor = sensorOf(parameters_);
     const double simplification = boundarySimplificationOf(parameters_);
     const std::vector<PolygonWithHoles> simplified = simplifyStage(run, parts, simplification);
-    const DecomposedParts decomposed{parts, simplified, simplification};
+    const DecomposedParts decomposed{parts, simplified};
 
     failing_stage = "decompose";
     const CellJoining joining =

@@ -498,11 +498,13 @@ SweepPatternGenerator::SweepPatternGenerator(const FrustumSensor& sensor, double
 
 SweepPatternGenerator::SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
                                              const PolygonWithHoles& area,
-                                             const PolygonWithHoles& exact_area,
-                                             double simplification_tolerance)
+                                             const PolygonWithHoles& exact_area)
     : SweepPatternGenerator(sensor, lane_end_inset, area) {
-  if (simplification_tolerance <= 0.0) return;
-  exact_edges_ = edgesByX(exact_area, &widest_exact_edge_);
+  double widest_exact_edge = 0.0;
+  EdgesByX exact_edges = edgesByX(exact_area, &widest_exact_edge);
+  if (exact_edges.size() == area_edges_.size()) return;  // every vertex kept: exact
+  exact_edges_ = std::move(exact_edges);
+  widest_exact_edge_ = widest_exact_edge;
 }
 
 Point2 SweepPatternGenerator::onNearbyAreaBoundary(const Point2& p, double reach) const {

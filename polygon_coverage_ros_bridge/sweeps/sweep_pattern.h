@@ -54,18 +54,17 @@ class SweepPatternGenerator {
   SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
                         const PolygonWithHoles& area);
 
-  /// As above for the cells of `area`, a simplification of `exact_area` whose boundary lies
-  /// within `simplification_tolerance` inside it (BoundarySimplification; 0: `area` is
-  /// exact): a lane end on the area's boundary goes on along the lane to the exact area's
-  /// boundary, at most one sweep distance (then in by the lane-end inset), so that lanes see
-  /// up to the exact walls that the simplified boundary cut off. The outermost lanes keep
-  /// their margin from the simplified sides, up to the tolerance farther from the exact ones
-  /// (taking it off the margin added lanes to every cell where W/2 - L/2 bounds the margin:
-  /// up to 8 % time cost on trapezoidal shorelines); the planner's coverage repair sees what
-  /// that leaves unseen.
+  /// As above for the cells of `area`, a simplification of `exact_area` (BoundarySimplification:
+  /// a subset of its vertices, the boundary moved inward; with every vertex kept, `area` is
+  /// exact and swept as above): a lane end on the area's boundary goes on along the lane to
+  /// the exact area's boundary, at most one sweep distance (then in by the lane-end inset), so
+  /// that lanes see up to the exact walls that the simplified boundary cut off. The outermost
+  /// lanes keep their margin from the simplified sides, up to the simplification's tolerance
+  /// farther from the exact ones (taking it off the margin added lanes to every cell where
+  /// W/2 - L/2 bounds the margin: up to 8 % time cost on trapezoidal shorelines); the
+  /// planner's coverage repair sees what that leaves unseen.
   SweepPatternGenerator(const FrustumSensor& sensor, double lane_end_inset,
-                        const PolygonWithHoles& area, const PolygonWithHoles& exact_area,
-                        double simplification_tolerance);
+                        const PolygonWithHoles& area, const PolygonWithHoles& exact_area);
 
   /// The inset that keeps the reachable band seen (see the class comment).
   static double laneEndInset(const FrustumSensor& sensor, double wall_distance);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
@@ -46,6 +48,28 @@ TEST(Replanner, LakeDriftScenarioCoversTheUpdatedReachableArea) {
             99.0);
 }
 
+/// A replanned drift scenario: whether its plan has the stage `name`, and the reachable
+/// coverage of the visited and the new (unsmoothed) footprints together.
+struct ReplannedCoverage {
+  bool has_stage = false;
+  double combined = 0.0;
+};
+
+ReplannedCoverage replannedCoverage(const testing::DriftScenario& scenario,
+                                    PlannerParameters parameters, const std::string& name) {
+  const ReplannedMission replanned =
+      Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
+  ReplannedCoverage result;
+  for (const PlanningStage& stage : replanned.plan.stages) result.has_stage |= stage.name == name;
+  parameters.smoothing = false;
+  const GeneratedTrajectory trajectory =
+      TrajectoryGenerator(trajectoryOptionsOf(parameters))
+          .generate(replanned.plan.waypoints, replanned.free_area);
+  result.combined = testing::combinedReachableCoverage(replanned.free_area, parameters,
+                                                       scenario.visited, trajectory.poses);
+  return result;
+}
+
 /// With coverage_repair, the replanned path is repaired too (stage `repair`), against the
 /// remaining area: the visited and new footprints together see at least what they see
 /// without it.
@@ -55,17 +79,9 @@ TEST(Replanner, CoverageRepairRepairsTheReplannedPath) {
   for (const bool repair : {false, true}) {
     PlannerParameters parameters = scenario.mission.parameters;
     parameters.coverage_repair = repair;
-    const ReplannedMission replanned =
-        Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
-    bool repaired = false;
-    for (const PlanningStage& stage : replanned.plan.stages) repaired |= stage.name == "repair";
-    EXPECT_EQ(repaired, repair);
-    parameters.smoothing = false;
-    const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(trajectoryOptionsOf(parameters))
-            .generate(replanned.plan.waypoints, replanned.free_area);
-    combined[repair ? 1 : 0] = testing::combinedReachableCoverage(
-        replanned.free_area, parameters, scenario.visited, trajectory.poses);
+    const ReplannedCoverage replanned = replannedCoverage(scenario, parameters, "repair");
+    EXPECT_EQ(replanned.has_stage, repair);
+    combined[repair ? 1 : 0] = replanned.combined;
   }
   EXPECT_GE(combined[1], combined[0] - 1e-9);
   EXPECT_GE(combined[1], 99.9);
@@ -80,17 +96,9 @@ TEST(Replanner, ASimplifiedRegionIsReplannedAndSeen) {
   for (const double simplification : {0.0, 0.1}) {
     PlannerParameters parameters = scenario.mission.parameters;
     parameters.boundary_simplification = simplification;
-    const ReplannedMission replanned =
-        Replanner(parameters).replan(scenario.updated, scenario.visited, scenario.mission.goal);
-    bool simplified = false;
-    for (const PlanningStage& stage : replanned.plan.stages) simplified |= stage.name == "simplify";
-    EXPECT_EQ(simplified, simplification > 0.0);
-    parameters.smoothing = false;
-    const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(trajectoryOptionsOf(parameters))
-            .generate(replanned.plan.waypoints, replanned.free_area);
-    combined[simplified ? 1 : 0] = testing::combinedReachableCoverage(
-        replanned.free_area, parameters, scenario.visited, trajectory.poses);
+    const ReplannedCoverage replanned = replannedCoverage(scenario, parameters, "simplify");
+    EXPECT_EQ(replanned.has_stage, simplification > 0.0);
+    combined[replanned.has_stage ? 1 : 0] = replanned.combined;
   }
   EXPECT_GE(combined[1], combined[0] - 0.1);
 }

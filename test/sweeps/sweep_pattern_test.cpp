@@ -314,7 +314,7 @@ SawWall sawWall(double depth) {
 TEST(SweepPattern, LaneEndsOnASimplifiedBoundaryGoOnToTheExactWall) {
   const SawWall wall = sawWall(0.3);
   const FrustumSensor sensor(4.0, 1.0, 0.25);
-  const SweepPatternGenerator generator(sensor, 0.0, wall.simplified, wall.exact, 0.3);
+  const SweepPatternGenerator generator(sensor, 0.0, wall.simplified, wall.exact);
   const auto lanes = generator.lanes(wall.simplified.hull, 0.0);
   ASSERT_FALSE(lanes.empty());
   bool some_beyond = false;
@@ -338,7 +338,7 @@ TEST(SweepPattern, LaneEndsOnASimplifiedBoundaryGoOnToTheExactWall) {
 TEST(SweepPattern, LaneEndsOnACutDoNotGoOn) {
   const SawWall wall = sawWall(0.3);
   const FrustumSensor sensor(4.0, 1.0, 0.25);
-  const SweepPatternGenerator generator(sensor, 0.0, wall.simplified, wall.exact, 0.3);
+  const SweepPatternGenerator generator(sensor, 0.0, wall.simplified, wall.exact);
   const Ring left_cell = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
   for (const auto& [a, b] : generator.lanes(left_cell, 0.0)) {
     EXPECT_NEAR(a.x(), 0.0, 1e-9);
