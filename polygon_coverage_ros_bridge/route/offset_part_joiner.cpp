@@ -28,6 +28,19 @@ constexpr int kRefinementDepth = 5;
 constexpr double kCorridorShare = 0.1;
 /// Rounding of the Boolean operations' results, relative to the map's scale.
 constexpr double kRelativeVertexTolerance = 1e-9;
+/// Free areas with more vertices than this are joined in windows first: each offset of the
+/// whole area costs seconds there, while most gaps are short straits beside their parts.
+constexpr std::size_t kWindowedJoinVertices = 2000;
+/// A part's window reaches this many wall distances beyond its bounding box (a strait up
+/// to about 6 wall distances long is found in it; a longer one on the whole area); the
+/// other parts are sampled 2 wall distances less far, so the window's own edges (which
+/// the offsets move inward by at most a wall distance) never touch what is compared.
+constexpr double kWindowMarginShare = 10.0;
+constexpr double kSampleMarginShare = 8.0;
+
+/// Boundary vertices standing for one part in a joining problem; the first tells which
+/// offset component holds the part.
+using PartVertices = std::vector<Point2>;
 
 /// The offset free area at one distance and the component each part falls into.
 struct Level {
@@ -36,17 +49,17 @@ struct Level {
   std::vector<int> component_of_part;  ///< -1: the part lies in no component
 };
 
-Level levelAt(const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& parts,
+Level levelAt(const PolygonWithHoles& free_area, const std::vector<PartVertices>& parts,
               double distance) {
   Level level;
   level.distance = distance;
   level.components = computeOffsetFreeArea(free_area, distance).parts;
-  for (const PolygonWithHoles& part : parts) {
+  for (const PartVertices& part : parts) {
     // A part lies deep inside the offset at a smaller distance (offsets are nested), so
     // one of its vertices tells which component holds it.
     int found = -1;
     for (std::size_t c = 0; c < level.components.size() && found < 0; ++c) {
-      if (contains(level.components[c], part.hull.front())) found = static_cast<int>(c);
+      if (contains(level.components[c], part.front())) found = static_cast<int>(c);
     }
     level.component_of_part.push_back(found);
   }
@@ -73,7 +86,7 @@ struct Merge {
 
 /// Halves [lower, upper] where the grouping changes, down to kRefinementDepth, collecting
 /// the brackets of every change, largest distances first.
-void refine(const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& parts,
+void refine(const PolygonWithHoles& free_area, const std::vector<PartVertices>& parts,
             const Level& lower, const Level& upper, int depth, std::vector<Merge>* merges) {
   const std::vector<int> lower_groups = grouping(lower);
   const std::vector<int> upper_groups = grouping(upper);
@@ -87,26 +100,17 @@ void refine(const PolygonWithHoles& free_area, const std::vector<PolygonWithHole
   refine(free_area, parts, lower, middle, depth - 1, merges);
 }
 
-/// The closest pair of boundary vertices, one of the parts in `from`, one of those in `to`.
-std::pair<Point2, Point2> closestVertices(const std::vector<PolygonWithHoles>& parts,
+/// The closest pair of vertices, one of the parts in `from`, one of those in `to`.
+std::pair<Point2, Point2> closestVertices(const std::vector<PartVertices>& parts,
                                           const std::vector<std::size_t>& from,
                                           const std::vector<std::size_t>& to,
                                           std::size_t* from_part, std::size_t* to_part) {
-  auto vertices = [&](std::size_t k) {
-    std::vector<Point2> result = parts[k].hull;
-    for (const Ring& hole : parts[k].holes) result.insert(result.end(), hole.begin(), hole.end());
-    return result;
-  };
-  std::vector<std::vector<Point2>> to_vertices;
-  for (std::size_t j : to) to_vertices.push_back(vertices(j));
   double best = std::numeric_limits<double>::infinity();
   std::pair<Point2, Point2> result;
   for (std::size_t i : from) {
-    const std::vector<Point2> a = vertices(i);
-    for (std::size_t k = 0; k < to.size(); ++k) {
-      const std::size_t j = to[k];
-      for (const Point2& q : to_vertices[k]) {
-        for (const Point2& p : a) {
+    for (std::size_t j : to) {
+      for (const Point2& q : parts[j]) {
+        for (const Point2& p : parts[i]) {
           const double d = (p - q).squaredNorm();
           if (d < best) {
             best = d;
@@ -171,6 +175,161 @@ std::vector<PolygonWithHoles> corridor(const std::vector<Point2>& path, double h
   return pieces;
 }
 
+/// Which parts are joined already, as a union-find over the parts.
+class PartGroups {
+ public:
+  explicit PartGroups(std::size_t count) : root_(count) {
+    for (std::size_t k = 0; k < count; ++k) root_[k] = k;
+  }
+  std::size_t find(std::size_t k) {
+    while (root_[k] != k) k = root_[k] = root_[root_[k]];
+    return k;
+  }
+  /// Joins the group of `to` to the group of `from`.
+  void join(std::size_t from, std::size_t to) { root_[find(to)] = find(from); }
+
+ private:
+  std::vector<std::size_t> root_;
+};
+
+/// The hull's vertices, then the holes'.
+PartVertices verticesOf(const PolygonWithHoles& part) {
+  PartVertices result = part.hull;
+  for (const Ring& hole : part.holes) result.insert(result.end(), hole.begin(), hole.end());
+  return result;
+}
+
+/// The shortest path from a to b inside `area`: straight when the segment stays inside (no
+/// visibility graph is built then, which on a whole lake costs seconds).
+std::vector<Point2> shortestPathInside(const PolygonWithHoles& area, const Point2& a,
+                                       const Point2& b) {
+  if (a == b) return {a};
+  const BoundaryGrid grid(area);
+  if (grid.contains(a) && grid.contains(b) && grid.segmentInside(a, b)) return {a, b};
+  const SegmentCost distance_cost(CostFunction::kDistance, VehicleLimits{});
+  return VisibilityGraph(area, distance_cost).shortestPath(a, b);
+}
+
+/// The gaps that join the parts of `area`'s offset at decreasing distances, largest
+/// clearance first. `parts[k]` stands for part `owner[k]` of `part_count` (a part may be
+/// sampled in several pieces); the gaps name the owners, and each joins two groups that
+/// no earlier gap joined. Clearances are measured against `free_area`.
+std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<PartVertices>& parts,
+                              const std::vector<std::size_t>& owner, std::size_t part_count,
+                              double wall_distance, const PolygonWithHoles& free_area) {
+  Level upper;
+  upper.distance = wall_distance;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    upper.component_of_part.push_back(static_cast<int>(owner[k]));
+  }
+  const Level lower = levelAt(area, parts, kMinClearanceShare * wall_distance);
+  std::vector<Merge> merges;
+  refine(area, parts, lower, upper, kRefinementDepth, &merges);
+
+  PartGroups groups(part_count);
+  std::vector<OffsetGap> gaps;
+  for (const Merge& merge : merges) {
+    for (std::size_t c = 0; c < merge.lower.components.size(); ++c) {
+      // The groups (at the merge's upper distance) that this component holds.
+      std::map<std::size_t, std::vector<std::size_t>> held;
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        if (merge.lower.component_of_part[k] == static_cast<int>(c)) {
+          held[groups.find(owner[k])].push_back(k);
+        }
+      }
+      if (held.size() <= 1) continue;
+      std::vector<std::size_t> joined = held.begin()->second;
+      for (auto it = std::next(held.begin()); it != held.end(); ++it) {
+        std::size_t from = 0;
+        std::size_t to = 0;
+        const auto [a, b] = closestVertices(parts, joined, it->second, &from, &to);
+        OffsetGap gap;
+        gap.from_part = owner[from];
+        gap.to_part = owner[to];
+        gap.path = shortestPathInside(merge.lower.components[c], a, b);
+        std::tie(gap.clearance_m, gap.narrowest_point) = pathClearance(free_area, gap.path);
+        groups.join(gap.from_part, gap.to_part);
+        joined.insert(joined.end(), it->second.begin(), it->second.end());
+        gaps.push_back(std::move(gap));
+      }
+    }
+  }
+  return gaps;
+}
+
+/// An axis-aligned rectangle around `ring` with `margin` on every side.
+PolygonWithHoles boxAround(const Ring& ring, double margin) {
+  Point2 low = ring.front();
+  Point2 high = ring.front();
+  for (const Point2& p : ring) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  low -= Point2(margin, margin);
+  high += Point2(margin, margin);
+  return {{low, {high.x(), low.y()}, high, {low.x(), high.y()}}, {}};
+}
+
+/// True when the axis-aligned bounds of `a` and `b` overlap.
+bool boundsOverlap(const Ring& a, const Ring& b) {
+  const auto bounds = [](const Ring& ring) {
+    Point2 low = ring.front();
+    Point2 high = ring.front();
+    for (const Point2& p : ring) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    return std::make_pair(low, high);
+  };
+  const auto [a_low, a_high] = bounds(a);
+  const auto [b_low, b_high] = bounds(b);
+  return (a_low.array() <= b_high.array()).all() && (b_low.array() <= a_high.array()).all();
+}
+
+/// gapsIn run in a window around every part but the largest: the free area clipped to the
+/// part's bounds and kWindowMarginShare wall distances, the other parts sampled where they
+/// come within kSampleMarginShare wall distances. A gap that the window finds is a path in
+/// the free area whose clearance is measured exactly; a part the windows leave apart from
+/// the others is for the caller to join on the whole area.
+std::vector<OffsetGap> windowedGaps(const PolygonWithHoles& free_area,
+                                    const std::vector<PolygonWithHoles>& parts,
+                                    double wall_distance) {
+  std::vector<OffsetGap> gaps;
+  for (std::size_t k = 1; k < parts.size(); ++k) {
+    const PolygonWithHoles window = boxAround(parts[k].hull, kWindowMarginShare * wall_distance);
+    const PolygonWithHoles sample = boxAround(parts[k].hull, kSampleMarginShare * wall_distance);
+    PolygonWithHoles nearby{free_area.hull, {}};
+    for (const Ring& hole : free_area.holes) {
+      if (boundsOverlap(hole, window.hull)) nearby.holes.push_back(hole);
+    }
+    const PolygonWithHoles* area = nullptr;
+    const std::vector<PolygonWithHoles> pieces = intersectWithRegions(nearby, {window}, 0.0);
+    for (const PolygonWithHoles& piece : pieces) {
+      if (contains(piece, parts[k].hull.front())) area = &piece;
+    }
+    if (area == nullptr) continue;
+    std::vector<PartVertices> local = {verticesOf(parts[k])};
+    std::vector<std::size_t> owner = {k};
+    for (std::size_t j = 0; j < parts.size(); ++j) {
+      if (j == k || !boundsOverlap(parts[j].hull, sample.hull)) continue;
+      for (const PolygonWithHoles& clipped : intersectWithRegions(parts[j], {sample}, 0.0)) {
+        local.push_back(verticesOf(clipped));
+        owner.push_back(j);
+      }
+    }
+    const std::vector<OffsetGap> found =
+        gapsIn(*area, local, owner, parts.size(), wall_distance, free_area);
+    gaps.insert(gaps.end(), found.begin(), found.end());
+  }
+  return gaps;
+}
+
+std::size_t vertexCount(const PolygonWithHoles& area) {
+  std::size_t count = area.hull.size();
+  for (const Ring& hole : area.holes) count += hole.size();
+  return count;
+}
+
 }  // namespace
 
 OffsetPartJoiner::OffsetPartJoiner(const PolygonWithHoles& free_area, double wall_distance)
@@ -184,46 +343,37 @@ JoinedOffsetArea OffsetPartJoiner::join(const std::vector<PolygonWithHoles>& par
     for (std::size_t k = 0; k < parts.size(); ++k) result.joined_parts.push_back(k);
     return result;
   }
-  Level upper;
-  upper.distance = wall_distance_;
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    upper.component_of_part.push_back(static_cast<int>(k));
-  }
-  const Level lower = levelAt(free_area_, parts, kMinClearanceShare * wall_distance_);
-  std::vector<Merge> merges;
-  refine(free_area_, parts, lower, upper, kRefinementDepth, &merges);
-
-  // Groups already joined, as a union-find over the parts.
-  std::vector<std::size_t> root(parts.size());
-  for (std::size_t k = 0; k < parts.size(); ++k) root[k] = k;
-  auto find = [&](std::size_t k) {
-    while (root[k] != k) k = root[k] = root[root[k]];
-    return k;
-  };
-  const SegmentCost distance_cost(CostFunction::kDistance, VehicleLimits{});
+  // Gaps, replayed into groups; a gap that joins what is joined already is dropped.
+  PartGroups groups(parts.size());
   std::vector<OffsetGap> gaps;
-  for (const Merge& merge : merges) {
-    for (std::size_t c = 0; c < merge.lower.components.size(); ++c) {
-      // The groups (at the merge's upper distance) that this component holds.
-      std::map<std::size_t, std::vector<std::size_t>> groups;
-      for (std::size_t k = 0; k < parts.size(); ++k) {
-        if (merge.lower.component_of_part[k] == static_cast<int>(c)) groups[find(k)].push_back(k);
-      }
-      if (groups.size() <= 1) continue;
-      const VisibilityGraph graph(merge.lower.components[c], distance_cost);
-      std::vector<std::size_t> joined = groups.begin()->second;
-      for (auto it = std::next(groups.begin()); it != groups.end(); ++it) {
-        OffsetGap gap;
-        const auto [a, b] =
-            closestVertices(parts, joined, it->second, &gap.from_part, &gap.to_part);
-        gap.path = graph.shortestPath(a, b);
-        std::tie(gap.clearance_m, gap.narrowest_point) = pathClearance(free_area_, gap.path);
-        root[find(gap.to_part)] = find(gap.from_part);
-        joined.insert(joined.end(), it->second.begin(), it->second.end());
-        gaps.push_back(std::move(gap));
-      }
+  auto keepJoining = [&](std::vector<OffsetGap> found) {
+    for (OffsetGap& gap : found) {
+      if (groups.find(gap.from_part) == groups.find(gap.to_part)) continue;
+      groups.join(gap.from_part, gap.to_part);
+      gaps.push_back(std::move(gap));
     }
+  };
+  auto allJoined = [&] {
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      if (groups.find(k) != groups.find(anchor)) return false;
+    }
+    return true;
+  };
+  if (vertexCount(free_area_) > kWindowedJoinVertices) {
+    keepJoining(windowedGaps(free_area_, parts, wall_distance_));
   }
+  if (!allJoined()) {
+    groups = PartGroups(parts.size());
+    gaps.clear();
+    std::vector<PartVertices> all;
+    std::vector<std::size_t> owner;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      all.push_back(verticesOf(parts[k]));
+      owner.push_back(k);
+    }
+    keepJoining(gapsIn(free_area_, all, owner, parts.size(), wall_distance_, free_area_));
+  }
+  auto find = [&](std::size_t k) { return groups.find(k); };
 
   // The anchor's group, its parts and corridors united into one area.
   std::vector<PolygonWithHoles> pieces;

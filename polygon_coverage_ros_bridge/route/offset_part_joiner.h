@@ -44,6 +44,9 @@ struct JoinedOffsetArea {
 /// that clearance (a maximin path: its narrowest point is as wide as the gap allows).
 /// The transit is the shortest path between the groups inside that component, and a
 /// corridor a small share of the clearance wide along it joins the parts into one area.
+/// On a free area of thousands of vertices the offsets are taken in a window around each
+/// smaller part first (a gap lies within two wall distances of its parts), and on the
+/// whole area only when the windows leave a part apart.
 class OffsetPartJoiner {
  public:
   /// `free_area` cleaned, `wall_distance` > 0 the distance that split it.

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
@@ -34,6 +35,23 @@ void expectPathInside(const PolygonWithHoles& free_area, const std::vector<Point
       EXPECT_GE(distanceToBoundary(p, free_area), clearance - 1e-9);
     }
   }
+}
+
+/// `area` with every edge cut into `pieces` collinear pieces: the same area, with as many
+/// vertices as a chart (the joiner works in windows beyond 2 000).
+PolygonWithHoles subdivided(const PolygonWithHoles& area, int pieces) {
+  auto ring = [pieces](const Ring& given) {
+    Ring result;
+    for (std::size_t i = 0; i < given.size(); ++i) {
+      const Point2& a = given[i];
+      const Point2& b = given[(i + 1) % given.size()];
+      for (int k = 0; k < pieces; ++k) result.push_back(a + (b - a) * (k / double(pieces)));
+    }
+    return result;
+  };
+  PolygonWithHoles result{ring(area.hull), {}};
+  for (const Ring& hole : area.holes) result.holes.push_back(ring(hole));
+  return result;
 }
 
 TEST(OffsetPartJoiner, JoinsThreeRoomsThroughTheirStraitsWithTheMostClearance) {
@@ -133,6 +151,61 @@ TEST(OffsetPartJoiner, AnIslandCloseToTheShoreCutsOffAPocket) {
   EXPECT_LE(joined.gaps.front().clearance_m, 0.8 + 1e-9);
   EXPECT_GE(joined.gaps.front().clearance_m, 0.8 - kClearanceResolution);
   expectPathInside(free_area, joined.gaps.front().path, joined.gaps.front().clearance_m);
+}
+
+/// The three rooms drawn with 2 020 vertices: joined in windows around the two smaller
+/// rooms, through the same straits with the same clearances and corridors as the
+/// 20-vertex drawing joined on the whole area.
+TEST(OffsetPartJoiner, AChartSizedAreaIsJoinedInWindowsAsOnTheWholeArea) {
+  const PolygonWithHoles coarse = threeRooms();
+  const PolygonWithHoles fine = subdivided(coarse, 101);
+  ASSERT_GT(fine.hull.size(), 2000u);
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(fine, kWallDistance).parts;
+  ASSERT_EQ(parts.size(), 3u);
+  const JoinedOffsetArea windowed = OffsetPartJoiner(fine, kWallDistance).join(parts, 0);
+  const JoinedOffsetArea whole = OffsetPartJoiner(coarse, kWallDistance).join(parts, 0);
+  EXPECT_EQ(windowed.joined_parts.size(), 3u);
+  EXPECT_TRUE(windowed.sealed_parts.empty());
+  ASSERT_EQ(windowed.gaps.size(), 2u);
+  ASSERT_EQ(whole.gaps.size(), 2u);
+  auto byClearance = [](std::vector<OffsetGap> gaps) {
+    std::sort(gaps.begin(), gaps.end(),
+              [](const OffsetGap& a, const OffsetGap& b) { return a.clearance_m < b.clearance_m; });
+    return gaps;
+  };
+  const std::vector<OffsetGap> a = byClearance(windowed.gaps);
+  const std::vector<OffsetGap> b = byClearance(whole.gaps);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(a[i].clearance_m, b[i].clearance_m, 1e-9);
+    EXPECT_EQ(std::minmax(a[i].from_part, a[i].to_part), std::minmax(b[i].from_part, b[i].to_part));
+    expectPathInside(fine, a[i].path, a[i].clearance_m);
+  }
+  EXPECT_NEAR(area(windowed.route_area), area(whole.route_area), 1e-6);
+}
+
+/// A part that no window joins (the strait seals it) is judged on the whole area: sealed.
+TEST(OffsetPartJoiner, AChartSizedAreaSealsWhatNoStraitJoins) {
+  const PolygonWithHoles free_area = subdivided({{{0, 0},
+                                                  {10, 0},
+                                                  {10, 4.99},
+                                                  {12, 4.99},
+                                                  {12, 0},
+                                                  {22, 0},
+                                                  {22, 10},
+                                                  {12, 10},
+                                                  {12, 5.01},
+                                                  {10, 5.01},
+                                                  {10, 10},
+                                                  {0, 10}},
+                                                 {}},
+                                                170);
+  ASSERT_GT(free_area.hull.size(), 2000u);
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
+  ASSERT_EQ(parts.size(), 2u);
+  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 1);
+  EXPECT_EQ(joined.joined_parts, std::vector<std::size_t>{1});
+  EXPECT_EQ(joined.sealed_parts, std::vector<std::size_t>{0});
+  EXPECT_TRUE(joined.gaps.empty());
 }
 
 }  // namespace
