@@ -31,6 +31,21 @@ TEST(WallOffset, ShrinksASquareByTheWallDistance) {
   EXPECT_NEAR(area(offset.parts.front()), 64.0, 1e-9);
 }
 
+/// Holes whose grown outlines overlap each other and the hull's offset are taken away as
+/// their union: two 2 m squares 1 m apart grow into one 7 m x 4 m hole, and a third one
+/// 1.5 m from the shore grows into the shore's offset, a notch rather than a hole.
+TEST(WallOffset, GrownHolesThatOverlapAreTakenAwayAsTheirUnion) {
+  const PolygonWithHoles lake = {{{0, 0}, {20, 0}, {20, 20}, {0, 20}},
+                                 {{{4, 9}, {6, 9}, {6, 11}, {4, 11}},
+                                  {{7, 9}, {9, 9}, {9, 11}, {7, 11}},
+                                  {{14, 1.5}, {16, 1.5}, {16, 3.5}, {14, 3.5}}}};
+  const OffsetFreeArea offset = computeOffsetFreeArea(lake, 1.0);
+  ASSERT_EQ(offset.parts.size(), 1u);
+  EXPECT_EQ(offset.parts.front().holes.size(), 1u);
+  // 18 x 18 less the merged hole [3, 10] x [8, 12] and the notch [13, 17] x [1, 4.5].
+  EXPECT_NEAR(area(offset.parts.front()), 324.0 - 28.0 - 4.0 * 3.5, 1e-9);
+}
+
 TEST(WallOffset, RingsWhoseSkeletonWouldNotFitAreRefusedBeforeItIsBuilt) {
   // 6 000 vertices, 3 000 reflex: 18e6 vertex pairs, over 2 times the limit (the skeleton
   // would take about 900 MB); refused in milliseconds.
