@@ -11,6 +11,7 @@ add_library(${PROJECT_NAME}_rviz_plugins SHARED
   rviz_plugins/labelled_point_tool.cpp
   rviz_plugins/start_tool.cpp)
 set_target_properties(${PROJECT_NAME}_rviz_plugins PROPERTIES AUTOMOC ON)
+add_dependencies(${PROJECT_NAME}_rviz_plugins ${PROJECT_NAME}_generate_messages_cpp)
 target_include_directories(${PROJECT_NAME}_rviz_plugins PRIVATE ${PROJECT_SOURCE_DIR})
 target_include_directories(${PROJECT_NAME}_rviz_plugins SYSTEM PRIVATE
   ${rviz_INCLUDE_DIRS} ${pluginlib_INCLUDE_DIRS} ${catkin_INCLUDE_DIRS})

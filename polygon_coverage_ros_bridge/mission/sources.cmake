@@ -3,6 +3,7 @@ kc_add_stage_library(kc_mission
     polygon_coverage_ros_bridge/mission/geojson_mission_reader.cpp
     polygon_coverage_ros_bridge/mission/local_east_north_frame.cpp
     polygon_coverage_ros_bridge/mission/mission_file_reader.cpp
+    polygon_coverage_ros_bridge/mission/mission_file_writer.cpp
     polygon_coverage_ros_bridge/mission/mission_planner.cpp
     polygon_coverage_ros_bridge/mission/pose_csv_reader.cpp
     polygon_coverage_ros_bridge/mission/trajectory_coverage.cpp

@@ -12,6 +12,7 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/mission/mission_file_writer.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/plan_markers.h"
@@ -49,6 +50,8 @@ CoveragePlannerNode::CoveragePlannerNode(const ros::NodeHandle& node,
   goal_subscriber_ = node_.subscribe("goal", 1, &CoveragePlannerNode::onGoal, this);
   activate_subscriber_ = node_.subscribe("activate", 1, &CoveragePlannerNode::onActivate, this);
   plan_service_ = private_node_.advertiseService("plan", &CoveragePlannerNode::onPlanService, this);
+  save_mission_service_ = private_node_.advertiseService(
+      "save_mission", &CoveragePlannerNode::onSaveMissionService, this);
   ROS_INFO("coverage_planner: waiting for polygon, start and goal");
 }
 
@@ -114,27 +117,49 @@ geometry_msgs::PointStamped CoveragePlannerNode::inPolygonFrame(
   }
 }
 
+core::Mission CoveragePlannerNode::currentMission() const {
+  if (!polygon_ || !start_ || !goal_) {
+    std::string missing;
+    for (const auto& [known, name] : {std::pair<bool, const char*>{polygon_.has_value(), "polygon"},
+                                      {start_.has_value(), "start"},
+                                      {goal_.has_value(), "goal"}}) {
+      if (!known) missing += std::string(missing.empty() ? "" : ", ") + name;
+    }
+    throw core::InvalidInputError("cannot plan yet: no " + missing + " received");
+  }
+  core::Mission mission;
+  mission.frame_id = frameOf(polygon_->header);
+  mission.polygon = fromMessage(polygon_->polygon);
+  mission.start = fromMessage(inPolygonFrame(*start_, "start").point);
+  mission.goal = fromMessage(inPolygonFrame(*goal_, "goal").point);
+  mission.parameters = readPlannerParameters(private_node_);
+  return mission;
+}
+
+bool CoveragePlannerNode::onSaveMissionService(
+    kinematic_coverage::SaveMission::Request& request,
+    kinematic_coverage::SaveMission::Response& response) {
+  try {
+    if (request.path.empty()) throw core::InvalidInputError("no path given");
+    core::MissionFileWriter::write(currentMission(), request.path,
+                                   "mission saved by coverage_planner");
+    response.success = true;
+    response.message = request.path;
+    ROS_INFO("coverage_planner: mission saved to %s", request.path.c_str());
+  } catch (const core::InvalidInputError& error) {
+    response.success = false;
+    response.message = std::string("mission not saved: ") + error.what();
+    ROS_ERROR("coverage_planner: %s", response.message.c_str());
+  }
+  return true;
+}
+
 bool CoveragePlannerNode::plan(std::string& message) {
   const auto start_time = std::chrono::steady_clock::now();
   std::string finished;
   std::string failed_stage;  // the stage an internal error names
   try {
-    if (!polygon_ || !start_ || !goal_) {
-      std::string missing;
-      for (const auto& [known, name] :
-           {std::pair<bool, const char*>{polygon_.has_value(), "polygon"},
-            {start_.has_value(), "start"},
-            {goal_.has_value(), "goal"}}) {
-        if (!known) missing += std::string(missing.empty() ? "" : ", ") + name;
-      }
-      throw core::InvalidInputError("cannot plan yet: no " + missing + " received");
-    }
-    core::Mission mission;
-    mission.frame_id = frameOf(polygon_->header);
-    mission.polygon = fromMessage(polygon_->polygon);
-    mission.start = fromMessage(inPolygonFrame(*start_, "start").point);
-    mission.goal = fromMessage(inPolygonFrame(*goal_, "goal").point);
-    mission.parameters = readPlannerParameters(private_node_);
+    const core::Mission mission = currentMission();
     const core::PlannedMission planned =
         core::planMission(mission, [&](const core::PlanningStage& stage) {
           finished = stage.name;

@@ -11,6 +11,8 @@
 #include <string>
 
 #include "kinematic_coverage/PolygonWithHolesStamped.h"
+#include "kinematic_coverage/SaveMission.h"
+#include "polygon_coverage_ros_bridge/mission/mission.h"
 
 namespace kinematic_coverage::nodes {
 
@@ -24,8 +26,8 @@ namespace kinematic_coverage::nodes {
 class CoveragePlannerNode {
  public:
   /// Subscribes and advertises in `node`'s namespace (relative names) and under
-  /// `private_node` (~markers, ~status, ~plan); parameters are read from `private_node`
-  /// at every request, so `rosparam set` takes effect at the next plan.
+  /// `private_node` (~markers, ~status, ~plan, ~save_mission); parameters are read from
+  /// `private_node` at every request, so `rosparam set` takes effect at the next plan.
   CoveragePlannerNode(const ros::NodeHandle& node, const ros::NodeHandle& private_node);
 
  private:
@@ -34,6 +36,13 @@ class CoveragePlannerNode {
   void onGoal(const geometry_msgs::PointStamped::ConstPtr& message);
   void onActivate(const std_msgs::Empty::ConstPtr& message);
   bool onPlanService(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  /// `~save_mission`: writes currentMission() as a mission file (MissionFileWriter).
+  bool onSaveMissionService(kinematic_coverage::SaveMission::Request& request,
+                            kinematic_coverage::SaveMission::Response& response);
+
+  /// The newest polygon, start and goal (in the polygon's frame) with the parameters read
+  /// now. Throws core::InvalidInputError when one is missing or a parameter is invalid.
+  core::Mission currentMission() const;
 
   /// Plans when `plan_on_receive` is set and every input is known; a `plan_on_receive` that
   /// is not true or false is a failed request.
@@ -61,6 +70,7 @@ class CoveragePlannerNode {
   ros::Publisher marker_publisher_;
   ros::Publisher status_publisher_;
   ros::ServiceServer plan_service_;
+  ros::ServiceServer save_mission_service_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   std::optional<kinematic_coverage::PolygonWithHolesStamped> polygon_;

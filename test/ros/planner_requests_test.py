@@ -1,17 +1,25 @@
 #!/usr/bin/python3
-"""Node rostest: bad input, the ~plan service, replanning on a changed polygon and
-start/goal in another frame, against a running coverage_planner and
+"""Node rostest: bad input, the ~plan service, replanning on a changed polygon,
+start/goal in another frame and the ~save_mission service (the saved mission plans the same
+waypoints with coverage_tool), against a running coverage_planner and
 smooth_trajectory_generator."""
 
+import csv
 import math
+import os
+import subprocess
 import sys
+import tempfile
 import time
 import unittest
+
+import roslib.packages
 
 import rospy
 import rostest
 from geometry_msgs.msg import PointStamped, PoseArray
 from kinematic_coverage.msg import PlanStatus, PolygonWithHolesStamped
+from kinematic_coverage.srv import SaveMission
 from rosgraph_msgs.msg import Log
 from std_msgs.msg import Empty
 from std_srvs.srv import Trigger
@@ -38,6 +46,8 @@ class PlannerRequestsTest(unittest.TestCase):
         cls.log = Collector('/rosout', Log)
         rospy.wait_for_service('coverage_planner/plan', TIMEOUT_S)
         cls.plan_service = rospy.ServiceProxy('coverage_planner/plan', Trigger)
+        rospy.wait_for_service('coverage_planner/save_mission', TIMEOUT_S)
+        cls.save_service = rospy.ServiceProxy('coverage_planner/save_mission', SaveMission)
         while cls.activate.get_num_connections() == 0 and not rospy.is_shutdown():
             time.sleep(0.05)
 
@@ -129,6 +139,44 @@ class PlannerRequestsTest(unittest.TestCase):
         first = self.waypoints.messages[-1].poses[0].position
         self.assertLess(math.hypot(first.x - 2.0, first.y - 2.0), 1e-5)
         self.assertEqual(self.waypoints.messages[-1].header.frame_id, 'map')
+
+    def test_4_a_saved_mission_plans_the_same_waypoints_with_coverage_tool(self):
+        hole = [(12, 8), (18, 8), (18, 22), (12, 22)]
+        rospy.set_param('coverage_planner/turning_radius', 0.8)
+        try:
+            status, errors, published = self.send(holes=[hole], start=(-8, -3), start_frame='boat')
+            self.assertTrue(status.success, status.message)
+            planned = [(p.position.x, p.position.y) for p in self.waypoints.messages[-1].poses]
+            directory = tempfile.mkdtemp(prefix='save_mission_')
+            path = os.path.join(directory, 'saved.yaml')
+            answer = self.save_service(path)
+        finally:
+            rospy.delete_param('coverage_planner/turning_radius')
+        self.assertTrue(answer.success, answer.message)
+        self.assertEqual(answer.message, path)
+        with open(path) as stream:
+            text = stream.read()
+        self.assertIn('\nturning_radius: 0.8\n', text)
+        tool = roslib.packages.find_node('kinematic_coverage', 'coverage_tool')
+        self.assertTrue(tool, 'no coverage_tool executable')
+        out = os.path.join(directory, 'plan')
+        done = subprocess.run([tool[0], 'plan', path, '--out', out], capture_output=True,
+                              text=True, timeout=120)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        with open(os.path.join(out, 'waypoints.csv')) as stream:
+            replanned = [(float(row['x']), float(row['y'])) for row in csv.DictReader(stream)]
+        self.assertEqual(len(replanned), len(planned))
+        for (x, y), (u, v) in zip(planned, replanned):
+            self.assertLess(math.hypot(x - u, y - v), 1e-9)
+
+    def test_5_a_mission_that_cannot_be_saved_is_named(self):
+        self.send()
+        answer = self.save_service('')
+        self.assertFalse(answer.success)
+        self.assertIn('no path given', answer.message)
+        answer = self.save_service('/nonexistent-directory/saved.yaml')
+        self.assertFalse(answer.success)
+        self.assertIn('/nonexistent-directory/saved.yaml', answer.message)
 
 
 if __name__ == '__main__':
