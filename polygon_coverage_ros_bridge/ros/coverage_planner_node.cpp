@@ -61,18 +61,21 @@ void CoveragePlannerNode::onPolygon(
   ROS_INFO("coverage_planner: polygon received (%zu hull vertices, %zu holes, frame %s)",
            message->polygon.hull.points.size(), message->polygon.holes.size(),
            message->header.frame_id.c_str());
+  publishInputMarkers();
   planIfReceiving();
 }
 
 void CoveragePlannerNode::onStart(const geometry_msgs::PointStamped::ConstPtr& message) {
   start_ = *message;
   ROS_INFO("coverage_planner: start (%g, %g) received", message->point.x, message->point.y);
+  publishInputMarkers();
   planIfReceiving();
 }
 
 void CoveragePlannerNode::onGoal(const geometry_msgs::PointStamped::ConstPtr& message) {
   goal_ = *message;
   ROS_INFO("coverage_planner: goal (%g, %g) received", message->point.x, message->point.y);
+  publishInputMarkers();
   planIfReceiving();
 }
 
@@ -115,6 +118,11 @@ geometry_msgs::PointStamped CoveragePlannerNode::inPolygonFrame(
                                   "' and no transform to the polygon's frame '" + frame +
                                   "' is available: " + error.what());
   }
+}
+
+void CoveragePlannerNode::publishInputMarkers() {
+  marker_publisher_.publish(inputMarkers(polygon_ ? &*polygon_ : nullptr,
+                                         start_ ? &*start_ : nullptr, goal_ ? &*goal_ : nullptr));
 }
 
 core::Mission CoveragePlannerNode::currentMission() const {

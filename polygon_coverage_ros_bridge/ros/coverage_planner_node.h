@@ -44,6 +44,9 @@ class CoveragePlannerNode {
   /// now. Throws core::InvalidInputError when one is missing or a parameter is invalid.
   core::Mission currentMission() const;
 
+  /// Draws the inputs received so far on `~markers` (inputMarkers), as soon as each arrives.
+  void publishInputMarkers();
+
   /// Plans when `plan_on_receive` is set and every input is known; a `plan_on_receive` that
   /// is not true or false is a failed request.
   void planIfReceiving();

@@ -2,6 +2,10 @@
 
 #include <geometry_msgs/Point.h>
 
+#include <algorithm>
+
+#include "polygon_coverage_ros_bridge/ros/message_conversion.h"
+
 namespace kinematic_coverage::nodes {
 namespace {
 
@@ -33,6 +37,30 @@ visualization_msgs::Marker baseMarker(const std::string& ns, int id, int type,
   return marker;
 }
 
+/// The hull (dark) and holes (grey) of the polygon, namespace `polygon`.
+void appendPolygon(const core::PolygonWithHoles& polygon, const std_msgs::Header& header,
+                   visualization_msgs::MarkerArray* markers) {
+  markers->markers.push_back(ringMarker(polygon.hull, "polygon", 0, header, 0.1f, 0.1f, 0.1f, 0.1));
+  int id = 1;
+  for (const core::Ring& hole : polygon.holes) {
+    markers->markers.push_back(ringMarker(hole, "polygon", id++, header, 0.4f, 0.4f, 0.4f, 0.1));
+  }
+}
+
+visualization_msgs::Marker startMarker(const core::Point2& start, const std_msgs::Header& header) {
+  visualization_msgs::Marker marker = baseMarker(
+      "start_goal", 0, visualization_msgs::Marker::SPHERE, header, 0.1f, 0.7f, 0.2f, 0.6);
+  marker.pose.position = point(start);
+  return marker;
+}
+
+visualization_msgs::Marker goalMarker(const core::Point2& goal, const std_msgs::Header& header) {
+  visualization_msgs::Marker marker =
+      baseMarker("start_goal", 1, visualization_msgs::Marker::CUBE, header, 0.5f, 0.2f, 0.6f, 0.6);
+  marker.pose.position = point(goal);
+  return marker;
+}
+
 }  // namespace
 
 visualization_msgs::Marker ringMarker(const core::Ring& ring, const std::string& ns, int id,
@@ -58,13 +86,8 @@ visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_a
                                             const std_msgs::Header& header) {
   visualization_msgs::MarkerArray markers;
   markers.markers.push_back(deleteAllMarker(header));
-  markers.markers.push_back(
-      ringMarker(free_area.hull, "polygon", 0, header, 0.1f, 0.1f, 0.1f, 0.1));
-  int id = 1;
-  for (const core::Ring& hole : free_area.holes) {
-    markers.markers.push_back(ringMarker(hole, "polygon", id++, header, 0.4f, 0.4f, 0.4f, 0.1));
-  }
-  id = 0;
+  appendPolygon(free_area, header, &markers);
+  int id = 0;
   for (const core::PolygonWithHoles& part : plan.offset_parts) {
     markers.markers.push_back(
         ringMarker(part.hull, "offset_free_area", id++, header, 0.6f, 0.6f, 0.6f, 0.04));
@@ -94,14 +117,38 @@ visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_a
   }
   markers.markers.push_back(path);
   markers.markers.push_back(waypoints);
-  visualization_msgs::Marker start_marker = baseMarker(
-      "start_goal", 0, visualization_msgs::Marker::SPHERE, header, 0.1f, 0.7f, 0.2f, 0.6);
-  start_marker.pose.position = point(start);
-  visualization_msgs::Marker goal_marker =
-      baseMarker("start_goal", 1, visualization_msgs::Marker::CUBE, header, 0.5f, 0.2f, 0.6f, 0.6);
-  goal_marker.pose.position = point(goal);
-  markers.markers.push_back(start_marker);
-  markers.markers.push_back(goal_marker);
+  markers.markers.push_back(startMarker(start, header));
+  markers.markers.push_back(goalMarker(goal, header));
+  return markers;
+}
+
+visualization_msgs::MarkerArray inputMarkers(
+    const kinematic_coverage::PolygonWithHolesStamped* polygon,
+    const geometry_msgs::PointStamped* start, const geometry_msgs::PointStamped* goal) {
+  visualization_msgs::MarkerArray markers;
+  const std_msgs::Header& any = polygon != nullptr ? polygon->header
+                                : start != nullptr ? start->header
+                                                   : goal->header;
+  markers.markers.push_back(deleteAllMarker(any));
+  // Non-finite input is drawn in no part (rviz refuses such markers); the planner names it.
+  const auto finite = [](const core::Point2& p) { return p.allFinite(); };
+  if (polygon != nullptr) {
+    const core::PolygonWithHoles rings = fromMessage(polygon->polygon);
+    bool drawable = std::all_of(rings.hull.begin(), rings.hull.end(), finite);
+    for (const core::Ring& hole : rings.holes) {
+      drawable = drawable && std::all_of(hole.begin(), hole.end(), finite);
+    }
+    if (drawable) appendPolygon(rings, polygon->header, &markers);
+  }
+  const auto position = [](const geometry_msgs::PointStamped& p) {
+    return core::Point2(p.point.x, p.point.y);
+  };
+  if (start != nullptr && finite(position(*start))) {
+    markers.markers.push_back(startMarker(position(*start), start->header));
+  }
+  if (goal != nullptr && finite(position(*goal))) {
+    markers.markers.push_back(goalMarker(position(*goal), goal->header));
+  }
   return markers;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 
+#include <geometry_msgs/PointStamped.h>
 #include <std_msgs/Header.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include "kinematic_coverage/PolygonWithHolesStamped.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 
@@ -16,6 +18,14 @@ visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_a
                                             const core::CoveragePlan& plan,
                                             const core::Point2& start, const core::Point2& goal,
                                             const std_msgs::Header& header);
+
+/// The inputs as coverage_planner received them, before any plan (`~markers`): the
+/// polygon's rings and the start and goal known so far (null: not received), each in its
+/// message's frame; every earlier marker is deleted first, as a new input makes the last
+/// plan's picture stale.
+visualization_msgs::MarkerArray inputMarkers(
+    const kinematic_coverage::PolygonWithHolesStamped* polygon,
+    const geometry_msgs::PointStamped* start, const geometry_msgs::PointStamped* goal);
 
 /// A LINE_STRIP marker of a closed ring (the first point repeated at the end).
 visualization_msgs::Marker ringMarker(const core::Ring& ring, const std::string& ns, int id,

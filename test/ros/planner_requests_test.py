@@ -22,6 +22,7 @@ from kinematic_coverage.msg import PlanStatus, PolygonWithHolesStamped
 from kinematic_coverage.srv import SaveMission
 from rosgraph_msgs.msg import Log
 from std_msgs.msg import Empty
+from visualization_msgs.msg import MarkerArray
 from std_srvs.srv import Trigger
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
@@ -43,6 +44,7 @@ class PlannerRequestsTest(unittest.TestCase):
         cls.waypoints = Collector('waypoint_list', PoseArray)
         cls.trajectory = Collector('trajectory', PoseArray)
         cls.status = Collector('coverage_planner/status', PlanStatus)
+        cls.markers = Collector('coverage_planner/markers', MarkerArray)
         cls.log = Collector('/rosout', Log)
         rospy.wait_for_service('coverage_planner/plan', TIMEOUT_S)
         cls.plan_service = rospy.ServiceProxy('coverage_planner/plan', Trigger)
@@ -71,6 +73,23 @@ class PlannerRequestsTest(unittest.TestCase):
         time.sleep(1.0)  # a second error or a waypoint list would have arrived by now
         return (self.status.messages[-1], self.planner_errors() - errors,
                 len(self.waypoints.messages) - waypoints)
+
+    def test_0_inputs_are_drawn_as_soon_as_they_arrive(self):
+        # Before any plan: the polygon's hull and hole, then the start, each on arrival.
+        hole = [(12, 8), (18, 8), (18, 22), (12, 22)]
+        count = len(self.markers.messages)
+        self.polygon.publish(stamped_polygon(SQUARE, [hole]))
+        self.assertTrue(self.markers.wait_for(count + 1, TIMEOUT_S), 'no markers')
+        drawn = self.markers.messages[-1].markers
+        self.assertEqual(sorted(m.ns for m in drawn if m.ns), ['polygon', 'polygon'])
+        self.assertEqual(len([m for m in drawn if m.ns == 'polygon' and len(m.points) == 5]), 2)
+        self.start.publish(point_message(3, 4))
+        self.assertTrue(self.markers.wait_for(count + 2, TIMEOUT_S), 'no markers')
+        drawn = self.markers.messages[-1].markers
+        self.assertEqual(sorted(m.ns for m in drawn if m.ns),
+                         ['polygon', 'polygon', 'start_goal'])
+        start = [m for m in drawn if m.ns == 'start_goal'][0]
+        self.assertEqual((start.pose.position.x, start.pose.position.y), (3, 4))
 
     def planner_errors(self):
         return sum(1 for entry in self.log.messages
