@@ -179,6 +179,8 @@ bool GeoJsonMissionReader::isGeoJsonPath(const std::string& path) {
   return endsWith(".geojson") || endsWith(".json");
 }
 
+GeoJsonMissionReader::GeoJsonMissionReader(std::optional<GeoPoint> datum) : datum_(datum) {}
+
 Mission GeoJsonMissionReader::read(const std::string& path,
                                    const std::vector<std::string>& overrides,
                                    const PlannerParameters& base) const {
@@ -199,7 +201,9 @@ Mission GeoJsonMissionReader::parse(const std::string& text, const std::string& 
   const GeoPolygon& first = features.polygons.front();
   if (first.rings.empty() || first.rings.front().empty())
     parser.fail("", "the hull has no vertices");
-  const LocalEastNorthFrame frame(features.datum ? *features.datum : first.rings.front().front());
+  const LocalEastNorthFrame frame(datum_           ? *datum_
+                                  : features.datum ? *features.datum
+                                                   : first.rings.front().front());
 
   Mission mission;
   mission.frame_id = features.frame_id;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ namespace kinematic_coverage::core {
 /// datum, an unknown parameter or one out of range.
 class GeoJsonMissionReader {
  public:
+  /// `datum`, when given, anchors the local frame instead of the file's `datum` (or its
+  /// hull's first vertex): missions from several charts then share one frame, e.g. a
+  /// robot's map whose origin is known (mission_publisher's `~datum`).
+  explicit GeoJsonMissionReader(std::optional<GeoPoint> datum = std::nullopt);
+
   /// True when `path` names a GeoJSON file (extension .geojson or .json, any case).
   static bool isGeoJsonPath(const std::string& path);
 
@@ -33,6 +39,9 @@ class GeoJsonMissionReader {
   Mission parse(const std::string& text, const std::string& source_name,
                 const std::vector<std::string>& overrides = {},
                 const PlannerParameters& base = PlannerParameters{}) const;
+
+ private:
+  std::optional<GeoPoint> datum_;
 };
 
 }  // namespace kinematic_coverage::core

@@ -1,10 +1,13 @@
 // The mission_publisher node (docs/REFERENCE.md, Nodes and topics): publishes the polygon,
 // start and goal of the mission file named by `~mission`, latched, in the mission's frame,
-// so that a launch file can run a mission without anyone publishing by hand.
+// so that a launch file can run a mission without anyone publishing by hand. A GeoJSON
+// mission is published in metres east and north of `~datum` ([latitude, longitude]) when
+// that is set, else of the file's datum.
 
 #include <geometry_msgs/PointStamped.h>
 #include <ros/ros.h>
 
+#include <optional>
 #include <string>
 
 #include "kinematic_coverage/PolygonWithHolesStamped.h"
@@ -39,9 +42,17 @@ int main(int argc, char** argv) {
       ROS_ERROR("mission_publisher: the parameter ~mission (a mission file) is not set");
       return 2;
     }
-    mission = kinematic_coverage::core::GeoJsonMissionReader::isGeoJsonPath(path)
-                  ? kinematic_coverage::core::GeoJsonMissionReader().read(path)
-                  : kinematic_coverage::core::MissionFileReader().read(path);
+    const std::optional<kinematic_coverage::core::GeoPoint> datum =
+        kinematic_coverage::nodes::readGeoPointParameter(private_node, "datum");
+    if (kinematic_coverage::core::GeoJsonMissionReader::isGeoJsonPath(path)) {
+      mission = kinematic_coverage::core::GeoJsonMissionReader(datum).read(path);
+    } else {
+      mission = kinematic_coverage::core::MissionFileReader().read(path);
+      if (datum) {
+        ROS_WARN("mission_publisher: ~datum is for GeoJSON missions; %s is in metres already",
+                 path.c_str());
+      }
+    }
   } catch (const kinematic_coverage::core::InvalidInputError& error) {
     ROS_ERROR("mission_publisher: %s", error.what());
     return 2;

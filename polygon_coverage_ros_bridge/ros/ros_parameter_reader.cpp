@@ -82,6 +82,28 @@ std::string readStringParameter(const ros::NodeHandle& node, const std::string& 
   wrongType(node, name, "a string", value);
 }
 
+std::optional<core::GeoPoint> readGeoPointParameter(const ros::NodeHandle& node,
+                                                    const std::string& name) {
+  XmlRpc::XmlRpcValue value;
+  if (!node.getParam(name, value)) return std::nullopt;
+  const std::string expected = "[latitude, longitude] (two numbers, WGS84 degrees)";
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray || value.size() != 2) {
+    wrongType(node, name, expected, value);
+  }
+  double degrees[2];
+  for (int i = 0; i < 2; ++i) {
+    XmlRpc::XmlRpcValue& element = value[i];
+    if (element.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
+      degrees[i] = static_cast<double>(element);
+    } else if (element.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+      degrees[i] = static_cast<int>(element);
+    } else {
+      wrongType(node, name, expected, value);
+    }
+  }
+  return core::GeoPoint{degrees[0], degrees[1]};
+}
+
 core::PlannerParameters readPlannerParameters(const ros::NodeHandle& private_node) {
   std::vector<std::string> overrides;
   for (const std::string& name : core::MissionFileReader::parameterNames()) {

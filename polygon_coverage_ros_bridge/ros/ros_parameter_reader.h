@@ -2,8 +2,10 @@
 
 #include <ros/node_handle.h>
 
+#include <optional>
 #include <string>
 
+#include "polygon_coverage_ros_bridge/mission/mission.h"
 #include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
 
 namespace kinematic_coverage::nodes {
@@ -26,5 +28,11 @@ bool readFlagParameter(const ros::NodeHandle& node, const std::string& name, boo
 /// A node-only string parameter, as readNumberParameter.
 std::string readStringParameter(const ros::NodeHandle& node, const std::string& name,
                                 const std::string& default_value);
+
+/// A node-only `[latitude, longitude]` parameter (WGS84 degrees, two numbers): nothing when
+/// it is not set. Throws core::InvalidInputError naming the parameter for another shape or
+/// type (the range is the caller's to check).
+std::optional<core::GeoPoint> readGeoPointParameter(const ros::NodeHandle& node,
+                                                    const std::string& name);
 
 }  // namespace kinematic_coverage::nodes

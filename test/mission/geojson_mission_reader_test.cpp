@@ -61,6 +61,28 @@ TEST(GeoJsonMissionReader, TheDatumDefaultsToTheHullsFirstVertex) {
   EXPECT_EQ(multi.polygon.holes.size(), 1u);
 }
 
+TEST(GeoJsonMissionReader, AGivenDatumAnchorsTheFrameInsteadOfTheFiles) {
+  const GeoPoint given{47.3750, 8.5400};
+  const Mission anchored =
+      GeoJsonMissionReader(given).parse(lake(R"({"datum": [47.3760, 8.5410]})"), "lake.geojson");
+  const Mission written =
+      GeoJsonMissionReader().parse(lake(R"({"datum": [47.3750, 8.5400]})"), "lake.geojson");
+  ASSERT_TRUE(anchored.datum.has_value());
+  EXPECT_EQ(anchored.datum->latitude, given.latitude);
+  EXPECT_EQ(anchored.datum->longitude, given.longitude);
+  EXPECT_EQ(anchored.polygon.hull, written.polygon.hull);
+  EXPECT_EQ(anchored.start, written.start);
+  // The hull's first corner lies about 111 m north and 75 m east of the given datum.
+  EXPECT_NEAR(anchored.polygon.hull.front().y(), 111.2, 0.5);
+  EXPECT_NEAR(anchored.polygon.hull.front().x(), 75.4, 0.5);
+  try {
+    GeoJsonMissionReader(GeoPoint{91.0, 8.5}).parse(lake("{}"), "lake.geojson");
+    FAIL() << "a latitude of 91 degrees was taken";
+  } catch (const InvalidInputError& error) {
+    EXPECT_NE(std::string(error.what()).find("91"), std::string::npos) << error.what();
+  }
+}
+
 TEST(GeoJsonMissionReader, NamesEachProblem) {
   EXPECT_NE(errorOf("[1, 2]").find("not a GeoJSON FeatureCollection"), std::string::npos);
   EXPECT_NE(errorOf(R"({"type": "FeatureCollection", "features": []})").find("no Polygon"),

@@ -5,7 +5,9 @@ refuse to start (exit status 2); a running auv_simulator refuses a trajectory wh
 planner parameter has the wrong type, and a trajectory with a bad pose, then follows the
 next good one."""
 
+import json
 import math
+import os
 import subprocess
 import sys
 import unittest
@@ -14,7 +16,7 @@ import roslib.packages
 import rospy
 import rostest
 from geometry_msgs.msg import Pose, PoseArray, PoseStamped
-from kinematic_coverage.msg import PlanStatus
+from kinematic_coverage.msg import PlanStatus, PolygonWithHolesStamped
 from rosgraph_msgs.msg import Log
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
@@ -73,6 +75,46 @@ class NodeParametersTest(RejectionChecks, unittest.TestCase):
         status, output = run_node('mission_publisher', 'typed_mission', '_mission:=5')
         self.assertEqual(status, 2, output)
         self.assertIn('/typed_mission/mission must be a string, not an integer (5)', output)
+
+    def test_mission_publisher_refuses_a_datum_that_is_not_a_point_on_earth(self):
+        mission = os.path.join(roslib.packages.get_pkg_dir('kinematic_coverage'), 'config',
+                               'missions', 'kleinhesseloher_see.geojson')
+        # A list parameter is set on the server (the command line's _name:= gives scalars).
+        for case, (value, expected) in enumerate((
+                ('abc', 'datum must be [latitude, longitude] (two numbers, WGS84 degrees), '
+                        "not a string ('abc')"),
+                ([48.1], 'datum must be [latitude, longitude] (two numbers, WGS84 degrees), '
+                         'not a list'),
+                ([91, 11.6], 'the datum (longitude 11.6, latitude 91) lies outside'))):
+            name = 'typed_datum_%d' % case
+            rospy.set_param(name + '/datum', value)
+            status, output = run_node('mission_publisher', name, '_mission:=' + mission)
+            self.assertEqual(status, 2, output)
+            self.assertIn(expected, output)
+
+    def test_mission_publisher_publishes_a_geojson_mission_in_metres_from_its_datum(self):
+        mission = os.path.join(roslib.packages.get_pkg_dir('kinematic_coverage'), 'config',
+                               'missions', 'kleinhesseloher_see.geojson')
+        with open(mission) as stream:
+            longitude, latitude = json.load(stream)['features'][0]['geometry']['coordinates'][0][0]
+        # The datum 0.001 degrees south of the hull's first vertex: that vertex is published
+        # about 111.2 m north of the origin.
+        polygons = Collector('datum_test/polygon', PolygonWithHolesStamped)
+        executable = roslib.packages.find_node('kinematic_coverage', 'mission_publisher')[0]
+        rospy.set_param('datum_publisher/datum', [latitude - 0.001, longitude])
+        process = subprocess.Popen(
+            [executable, '__name:=datum_publisher', '_mission:=' + mission,
+             'polygon:=datum_test/polygon'],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        try:
+            received = polygons.wait_for(1, START_TIMEOUT_S)
+        finally:
+            process.terminate()
+            output = process.communicate(timeout=START_TIMEOUT_S)[0]
+        self.assertTrue(received, 'no polygon: ' + output)
+        first = polygons.messages[-1].polygon.hull.points[0]
+        self.assertLess(abs(first.x), 0.01)
+        self.assertLess(abs(first.y - 111.2), 0.5)
 
     def test_running_simulator_refuses_bad_requests_then_follows(self):
         self.log = Collector('/rosout', Log)
