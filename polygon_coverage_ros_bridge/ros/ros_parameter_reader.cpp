@@ -8,6 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/mission/geojson_mission_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 
 namespace kinematic_coverage::nodes {
@@ -105,13 +106,22 @@ std::optional<core::GeoPoint> readGeoPointParameter(const ros::NodeHandle& node,
 }
 
 core::PlannerParameters readPlannerParameters(const ros::NodeHandle& private_node) {
+  core::PlannerParameters base;
+  const std::string config = readStringParameter(private_node, "config", "");
+  if (!config.empty()) base = core::MissionFileReader().readParameters(config);
+  const std::string mission = readStringParameter(private_node, "mission", "");
+  if (!mission.empty()) {
+    base = core::GeoJsonMissionReader::isGeoJsonPath(mission)
+               ? core::GeoJsonMissionReader().read(mission, {}, base).parameters
+               : core::MissionFileReader().read(mission, {}, base).parameters;
+  }
   std::vector<std::string> overrides;
   for (const std::string& name : core::MissionFileReader::parameterNames()) {
     XmlRpc::XmlRpcValue value;
     if (!private_node.getParam(name, value)) continue;
     overrides.push_back(name + "=" + asYamlScalar(name, value));
   }
-  return core::MissionFileReader().withOverrides(core::PlannerParameters(), overrides);
+  return core::MissionFileReader().withOverrides(base, overrides);
 }
 
 }  // namespace kinematic_coverage::nodes

@@ -10,10 +10,14 @@
 
 namespace kinematic_coverage::nodes {
 
-/// The planner parameters (docs/REFERENCE.md, Parameters) from a node's private namespace: the
-/// built-in defaults (equal to config/default.yaml), overridden by each parameter that is
-/// set, read and validated exactly as a mission file's keys. Throws
-/// core::InvalidInputError naming the parameter for a wrong type or a value out of range.
+/// The planner parameters (docs/REFERENCE.md, Parameters) of a node: the built-in defaults
+/// (equal to config/default.yaml), then the parameter file named by `~config` and the
+/// parameter keys of the mission file named by `~mission` (YAML or GeoJSON), each when set,
+/// then each parameter set in the node's private namespace, read and validated exactly as a
+/// mission file's keys. The launch files set the two paths only, so the parameter server
+/// holds what a user changes, not every parameter in every node. Throws
+/// core::InvalidInputError naming the parameter or file for a wrong type, a value out of
+/// range or a file that cannot be read.
 core::PlannerParameters readPlannerParameters(const ros::NodeHandle& private_node);
 
 /// A node-only number parameter (docs/REFERENCE.md, Parameters): `default_value` when it is

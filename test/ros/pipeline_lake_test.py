@@ -119,6 +119,18 @@ class PipelineLakeTest(unittest.TestCase):
         unseen = sum(1 for value in grid.data if value == 100)
         self.assertGreater(seen, 100 * max(1, unseen))
 
+    def test_nodes_hold_only_the_paths_of_their_parameter_files(self):
+        # pipeline.launch sets each node's config and mission paths, not 121 parameters and
+        # the mission's geometry in every node's namespace.
+        names = rospy.get_param_names()
+        for node in ('coverage_planner', 'smooth_trajectory_generator', 'replanner'):
+            self.assertTrue(rospy.get_param('/%s/config' % node).endswith('config/default.yaml'))
+            self.assertEqual(rospy.get_param('/%s/mission' % node), rospy.get_param('~mission'))
+            held = sorted(name for name in names if name.startswith('/%s/' % node))
+            self.assertLessEqual(len(held), 3, held)
+            self.assertNotIn('/%s/turning_radius' % node, held)
+            self.assertNotIn('/%s/polygon' % node, names)
+
 
 if __name__ == '__main__':
     rostest.rosrun('kinematic_coverage', 'pipeline_lake', PipelineLakeTest)
