@@ -159,11 +159,7 @@ OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double w
       if (polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
       set.join(polygon);
     }
-    // The grown holes united first and taken away at once: one overlay with the hull's
-    // offset instead of one per hole (each costs time in the hull's vertices).
-    ExactPolygonSet grown_holes;
-    for (const Ring& hole : free_area.holes) grown_holes.join(grownHole(hole, wall_distance));
-    set.difference(grown_holes);
+    for (const Ring& hole : free_area.holes) set.difference(grownHole(hole, wall_distance));
   }
 
   std::vector<ExactPolygonWithHoles> parts;

@@ -20,7 +20,7 @@ Mission lakeWithAnIsland() {
   mission.parameters.turning_radius = 0.7;
   mission.parameters.smoothing = false;
   mission.parameters.decomposition_type = "trapezoidal";
-  mission.parameters.boundary_simplification = 0.0;
+  mission.parameters.boundary_simplification = 0.05;
   return mission;
 }
 
@@ -46,7 +46,7 @@ TEST(MissionFileWriter, WritesOnlyTheParametersThatDifferFromTheDefaults) {
   EXPECT_NE(text.find("\nturning_radius: 0.7\n"), std::string::npos);
   EXPECT_NE(text.find("\nsmoothing: false\n"), std::string::npos);
   EXPECT_NE(text.find("\ndecomposition_type: trapezoidal\n"), std::string::npos);
-  EXPECT_NE(text.find("\nboundary_simplification: 0\n"), std::string::npos);
+  EXPECT_NE(text.find("\nboundary_simplification: 0.05\n"), std::string::npos);
   EXPECT_EQ(text.find("v_max"), std::string::npos);
   // A mission at the defaults has no parameter lines after its goal.
   const std::string defaults = MissionFileWriter::text(Mission{}, "");

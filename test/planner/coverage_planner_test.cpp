@@ -388,6 +388,7 @@ TEST(CoveragePlanner, JoinedCellsCoverANoisyShorelineInFewerCellsAndLessTime) {
   parameters.smoothing = false;
   parameters.decomposition_type = "boustrophedon";
   parameters.cell_joining = "critical_points";
+  parameters.boundary_simplification = 0.0;  // the cells of the exact boundary
   const CoveragePlan choset =
       CoveragePlanner(parameters).plan(map.mission.polygon, map.mission.start, map.mission.goal);
   parameters.cell_joining = "longest_overlap";
@@ -429,6 +430,7 @@ TEST(CoveragePlanner, ASimplifiedBoundaryPlansAChartInFewerCellsAndSeesItsRim) {
   const testing::HardMap map = testing::HardMapGenerator::lakeChart(0, 500, 10);
   PlannerParameters parameters = map.mission.parameters;
   parameters.smoothing = false;
+  parameters.boundary_simplification = 0.0;
   const CoveragePlan exact =
       CoveragePlanner(parameters).plan(map.mission.polygon, map.mission.start, map.mission.goal);
   EXPECT_EQ(stageSummary(exact, "simplify"), "");

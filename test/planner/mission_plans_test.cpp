@@ -148,6 +148,7 @@ TEST(MissionPlans, AChartTooLargeForTheWallOffsetIsSimplifiedAndPlanned) {
   }
   mission.start = {0, -50};
   mission.goal = {0, 50};
+  mission.parameters.boundary_simplification = 0.0;
   EXPECT_THROW(planMission(mission), SizeLimitError);
   mission.parameters.boundary_simplification = 0.1;
   mission.parameters.smoothing = false;
