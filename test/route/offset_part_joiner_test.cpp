@@ -24,6 +24,24 @@ PolygonWithHoles threeRooms() {
           {}};
 }
 
+/// Two 10 m squares joined by a strait 2 cm wide: 1 cm clearance, below the 2 cm (2 % of the
+/// wall distance) that a transit keeps at least.
+PolygonWithHoles twoSquaresJoinedByAHairline() {
+  return {{{0, 0},
+           {10, 0},
+           {10, 4.99},
+           {12, 4.99},
+           {12, 0},
+           {22, 0},
+           {22, 10},
+           {12, 10},
+           {12, 5.01},
+           {10, 5.01},
+           {10, 10},
+           {0, 10}},
+          {}};
+}
+
 /// Every point of the path at least `clearance` from the free area's boundary, every leg
 /// inside it.
 void expectPathInside(const PolygonWithHoles& free_area, const std::vector<Point2>& path,
@@ -106,19 +124,7 @@ TEST(OffsetPartJoiner, AnchorChoosesTheGroupButEveryReachablePartIsJoined) {
 TEST(OffsetPartJoiner, AStraitNoRobotPassesSealsThePartBeyondIt) {
   // Two squares joined by a strait 2 cm wide: 1 cm clearance, below the 2 cm (2 % of the
   // wall distance) that a transit keeps at least.
-  const PolygonWithHoles free_area = {{{0, 0},
-                                       {10, 0},
-                                       {10, 4.99},
-                                       {12, 4.99},
-                                       {12, 0},
-                                       {22, 0},
-                                       {22, 10},
-                                       {12, 10},
-                                       {12, 5.01},
-                                       {10, 5.01},
-                                       {10, 10},
-                                       {0, 10}},
-                                      {}};
+  const PolygonWithHoles free_area = twoSquaresJoinedByAHairline();
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
   ASSERT_EQ(parts.size(), 2u);
   const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 1);
@@ -185,20 +191,7 @@ TEST(OffsetPartJoiner, AChartSizedAreaIsJoinedInWindowsAsOnTheWholeArea) {
 
 /// A part that no window joins (the strait seals it) is judged on the whole area: sealed.
 TEST(OffsetPartJoiner, AChartSizedAreaSealsWhatNoStraitJoins) {
-  const PolygonWithHoles free_area = subdivided({{{0, 0},
-                                                  {10, 0},
-                                                  {10, 4.99},
-                                                  {12, 4.99},
-                                                  {12, 0},
-                                                  {22, 0},
-                                                  {22, 10},
-                                                  {12, 10},
-                                                  {12, 5.01},
-                                                  {10, 5.01},
-                                                  {10, 10},
-                                                  {0, 10}},
-                                                 {}},
-                                                170);
+  const PolygonWithHoles free_area = subdivided(twoSquaresJoinedByAHairline(), 170);
   ASSERT_GT(free_area.hull.size(), 2000u);
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
   ASSERT_EQ(parts.size(), 2u);
