@@ -12,8 +12,7 @@
 
 #include "kinematic_coverage/PolygonWithHolesStamped.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/mission/geojson_mission_reader.h"
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/mission/read_mission.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
 
@@ -44,14 +43,10 @@ int main(int argc, char** argv) {
     }
     const std::optional<kinematic_coverage::core::GeoPoint> datum =
         kinematic_coverage::nodes::readGeoPointParameter(private_node, "datum");
-    if (kinematic_coverage::core::GeoJsonMissionReader::isGeoJsonPath(path)) {
-      mission = kinematic_coverage::core::GeoJsonMissionReader(datum).read(path);
-    } else {
-      mission = kinematic_coverage::core::MissionFileReader().read(path);
-      if (datum) {
-        ROS_WARN("mission_publisher: ~datum is for GeoJSON missions; %s is in metres already",
-                 path.c_str());
-      }
+    mission = kinematic_coverage::core::readMission(path, {}, {}, datum);
+    if (datum && !mission.datum) {
+      ROS_WARN("mission_publisher: ~datum is for GeoJSON missions; %s is in metres already",
+               path.c_str());
     }
   } catch (const kinematic_coverage::core::InvalidInputError& error) {
     ROS_ERROR("mission_publisher: %s", error.what());

@@ -2,14 +2,15 @@
 
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/mission/geojson_mission_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/mission/read_mission.h"
 
 namespace kinematic_coverage::nodes {
 namespace {
@@ -57,14 +58,20 @@ std::string typeName(XmlRpc::XmlRpcValue& value) {
                                 ", not " + typeName(value));
 }
 
+/// A number parameter's value, an integer or a double; nothing for another type.
+std::optional<double> numberOf(XmlRpc::XmlRpcValue& value) {
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(value);
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(value);
+  return std::nullopt;
+}
+
 }  // namespace
 
 double readNumberParameter(const ros::NodeHandle& node, const std::string& name,
                            double default_value) {
   XmlRpc::XmlRpcValue value;
   if (!node.getParam(name, value)) return default_value;
-  if (value.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(value);
-  if (value.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(value);
+  if (const std::optional<double> number = numberOf(value)) return *number;
   wrongType(node, name, "a number (double)", value);
 }
 
@@ -91,18 +98,10 @@ std::optional<core::GeoPoint> readGeoPointParameter(const ros::NodeHandle& node,
   if (value.getType() != XmlRpc::XmlRpcValue::TypeArray || value.size() != 2) {
     wrongType(node, name, expected, value);
   }
-  double degrees[2];
-  for (int i = 0; i < 2; ++i) {
-    XmlRpc::XmlRpcValue& element = value[i];
-    if (element.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
-      degrees[i] = static_cast<double>(element);
-    } else if (element.getType() == XmlRpc::XmlRpcValue::TypeInt) {
-      degrees[i] = static_cast<int>(element);
-    } else {
-      wrongType(node, name, expected, value);
-    }
-  }
-  return core::GeoPoint{degrees[0], degrees[1]};
+  const std::optional<double> latitude = numberOf(value[0]);
+  const std::optional<double> longitude = numberOf(value[1]);
+  if (!latitude || !longitude) wrongType(node, name, expected, value);
+  return core::GeoPoint{*latitude, *longitude};
 }
 
 core::PlannerParameters readPlannerParameters(const ros::NodeHandle& private_node) {
@@ -110,11 +109,7 @@ core::PlannerParameters readPlannerParameters(const ros::NodeHandle& private_nod
   const std::string config = readStringParameter(private_node, "config", "");
   if (!config.empty()) base = core::MissionFileReader().readParameters(config);
   const std::string mission = readStringParameter(private_node, "mission", "");
-  if (!mission.empty()) {
-    base = core::GeoJsonMissionReader::isGeoJsonPath(mission)
-               ? core::GeoJsonMissionReader().read(mission, {}, base).parameters
-               : core::MissionFileReader().read(mission, {}, base).parameters;
-  }
+  if (!mission.empty()) base = core::readMission(mission, {}, base).parameters;
   std::vector<std::string> overrides;
   for (const std::string& name : core::MissionFileReader::parameterNames()) {
     XmlRpc::XmlRpcValue value;

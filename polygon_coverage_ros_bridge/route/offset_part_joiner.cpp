@@ -257,14 +257,20 @@ std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<Pa
   return gaps;
 }
 
-/// An axis-aligned rectangle around `ring` with `margin` on every side.
-PolygonWithHoles boxAround(const Ring& ring, double margin) {
+/// The lower-left and upper-right corners of the ring's axis-aligned bounds.
+std::pair<Point2, Point2> boundsOf(const Ring& ring) {
   Point2 low = ring.front();
   Point2 high = ring.front();
   for (const Point2& p : ring) {
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }
+  return {low, high};
+}
+
+/// An axis-aligned rectangle around `ring` with `margin` on every side.
+PolygonWithHoles boxAround(const Ring& ring, double margin) {
+  auto [low, high] = boundsOf(ring);
   low -= Point2(margin, margin);
   high += Point2(margin, margin);
   return {{low, {high.x(), low.y()}, high, {low.x(), high.y()}}, {}};
@@ -272,17 +278,8 @@ PolygonWithHoles boxAround(const Ring& ring, double margin) {
 
 /// True when the axis-aligned bounds of `a` and `b` overlap.
 bool boundsOverlap(const Ring& a, const Ring& b) {
-  const auto bounds = [](const Ring& ring) {
-    Point2 low = ring.front();
-    Point2 high = ring.front();
-    for (const Point2& p : ring) {
-      low = low.cwiseMin(p);
-      high = high.cwiseMax(p);
-    }
-    return std::make_pair(low, high);
-  };
-  const auto [a_low, a_high] = bounds(a);
-  const auto [b_low, b_high] = bounds(b);
+  const auto [a_low, a_high] = boundsOf(a);
+  const auto [b_low, b_high] = boundsOf(b);
   return (a_low.array() <= b_high.array()).all() && (b_low.array() <= a_high.array()).all();
 }
 
@@ -373,15 +370,14 @@ JoinedOffsetArea OffsetPartJoiner::join(const std::vector<PolygonWithHoles>& par
     }
     keepJoining(gapsIn(free_area_, all, owner, parts.size(), wall_distance_, free_area_));
   }
-  auto find = [&](std::size_t k) { return groups.find(k); };
 
   // The anchor's group, its parts and corridors united into one area.
   std::vector<PolygonWithHoles> pieces;
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    if (find(k) == find(anchor)) pieces.push_back(parts[k]);
+    if (groups.find(k) == groups.find(anchor)) pieces.push_back(parts[k]);
   }
   for (OffsetGap& gap : gaps) {
-    if (find(gap.from_part) != find(anchor)) continue;
+    if (groups.find(gap.from_part) != groups.find(anchor)) continue;
     const std::vector<PolygonWithHoles> strips =
         corridor(gap.path, kCorridorShare * gap.clearance_m);
     pieces.insert(pieces.end(), strips.begin(), strips.end());
@@ -398,8 +394,8 @@ JoinedOffsetArea OffsetPartJoiner::join(const std::vector<PolygonWithHoles>& par
     }
   }
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    const bool joined =
-        find(k) == find(anchor) && contains(result.route_area, parts[k].hull.front(), tolerance);
+    const bool joined = groups.find(k) == groups.find(anchor) &&
+                        contains(result.route_area, parts[k].hull.front(), tolerance);
     (joined ? result.joined_parts : result.sealed_parts).push_back(k);
   }
   return result;

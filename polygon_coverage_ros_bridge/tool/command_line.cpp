@@ -8,8 +8,8 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/mission/geojson_mission_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/mission/read_mission.h"
 
 namespace kinematic_coverage::core {
 
@@ -62,14 +62,10 @@ CommandArguments parseCommandArguments(const std::string& command,
 
 Mission loadMission(const CommandArguments& arguments, std::ostream& out) {
   const auto start = std::chrono::steady_clock::now();
-  const MissionFileReader reader;
   const PlannerParameters base = arguments.config_path.empty()
                                      ? PlannerParameters{}
-                                     : reader.readParameters(arguments.config_path);
-  Mission mission =
-      GeoJsonMissionReader::isGeoJsonPath(arguments.mission_path)
-          ? GeoJsonMissionReader().read(arguments.mission_path, arguments.overrides, base)
-          : reader.read(arguments.mission_path, arguments.overrides, base);
+                                     : MissionFileReader().readParameters(arguments.config_path);
+  Mission mission = readMission(arguments.mission_path, arguments.overrides, base);
   out << "load: " << arguments.mission_path << ": hull of " << mission.polygon.hull.size()
       << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id;
   if (mission.datum) {

@@ -42,6 +42,18 @@ PolygonWithHoles twoSquaresJoinedByAHairline() {
           {}};
 }
 
+/// The hairline map (or a redrawing of it) joined from part 1: part 0 sealed, no gap, the
+/// route area part 1 alone.
+void expectTheHairlineSeals(const PolygonWithHoles& free_area) {
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
+  ASSERT_EQ(parts.size(), 2u);
+  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 1);
+  EXPECT_EQ(joined.joined_parts, std::vector<std::size_t>{1});
+  EXPECT_EQ(joined.sealed_parts, std::vector<std::size_t>{0});
+  EXPECT_TRUE(joined.gaps.empty());
+  EXPECT_NEAR(area(joined.route_area), area(parts[1]), 1e-9);
+}
+
 /// Every point of the path at least `clearance` from the free area's boundary, every leg
 /// inside it.
 void expectPathInside(const PolygonWithHoles& free_area, const std::vector<Point2>& path,
@@ -124,14 +136,7 @@ TEST(OffsetPartJoiner, AnchorChoosesTheGroupButEveryReachablePartIsJoined) {
 TEST(OffsetPartJoiner, AStraitNoRobotPassesSealsThePartBeyondIt) {
   // Two squares joined by a strait 2 cm wide: 1 cm clearance, below the 2 cm (2 % of the
   // wall distance) that a transit keeps at least.
-  const PolygonWithHoles free_area = twoSquaresJoinedByAHairline();
-  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
-  ASSERT_EQ(parts.size(), 2u);
-  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 1);
-  EXPECT_EQ(joined.joined_parts, std::vector<std::size_t>{1});
-  EXPECT_EQ(joined.sealed_parts, std::vector<std::size_t>{0});
-  EXPECT_TRUE(joined.gaps.empty());
-  EXPECT_NEAR(area(joined.route_area), area(parts[1]), 1e-9);
+  expectTheHairlineSeals(twoSquaresJoinedByAHairline());
 }
 
 TEST(OffsetPartJoiner, OnePartIsItsOwnRouteArea) {
@@ -193,12 +198,7 @@ TEST(OffsetPartJoiner, AChartSizedAreaIsJoinedInWindowsAsOnTheWholeArea) {
 TEST(OffsetPartJoiner, AChartSizedAreaSealsWhatNoStraitJoins) {
   const PolygonWithHoles free_area = subdivided(twoSquaresJoinedByAHairline(), 170);
   ASSERT_GT(free_area.hull.size(), 2000u);
-  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
-  ASSERT_EQ(parts.size(), 2u);
-  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 1);
-  EXPECT_EQ(joined.joined_parts, std::vector<std::size_t>{1});
-  EXPECT_EQ(joined.sealed_parts, std::vector<std::size_t>{0});
-  EXPECT_TRUE(joined.gaps.empty());
+  expectTheHairlineSeals(free_area);
 }
 
 }  // namespace
