@@ -6,13 +6,14 @@
 #include <OgreVector3.h>
 #include <geometry_msgs/PointStamped.h>
 #include <ros/console.h>
-#include <ros/names.h>
 #include <rviz/display_context.h>
 #include <rviz/geometry.h>
 #include <rviz/ogre_helpers/movable_text.h>
 #include <rviz/ogre_helpers/shape.h>
 #include <rviz/properties/string_property.h>
 #include <rviz/viewport_mouse_event.h>
+
+#include "rviz_plugins/topic_advertiser.h"
 
 namespace kinematic_coverage::rviz_plugins {
 namespace {
@@ -89,24 +90,14 @@ int LabelledPointTool::processMouseEvent(rviz::ViewportMouseEvent& event) {
 
 void LabelledPointTool::updateTopic() {
   const std::string topic = topic_property_->getStdString();
-  std::string problem;
-  if (topic.empty()) {
-    problem = "the name is empty";
-  } else if (ros::names::validate(topic, problem)) {
-    try {
-      publisher_ = node_.advertise<geometry_msgs::PointStamped>(topic, 1);
-      return;
-    } catch (const ros::Exception& error) {
-      problem = error.what();
-    }
-  }
-  // An invalid name keeps the topic published so far (the default one at start-up).
-  if (!publisher_) publisher_ = node_.advertise<geometry_msgs::PointStamped>(default_topic_, 1);
+  const std::optional<std::string> problem =
+      advertiseTopic<geometry_msgs::PointStamped>(node_, topic, default_topic_, false, &publisher_);
+  if (!problem) return;
   const QString message =
       QString(
           "Topic \"%1\" is not a valid topic name (%2); the %3 is still "
           "published on %4.")
-          .arg(QString::fromStdString(topic), QString::fromStdString(problem),
+          .arg(QString::fromStdString(topic), QString::fromStdString(*problem),
                QString::fromStdString(label_), QString::fromStdString(publisher_.getTopic()));
   ROS_ERROR("%s tool: %s", label_.c_str(), message.toStdString().c_str());
   setStatus(message);

@@ -1,5 +1,5 @@
-# The rviz plugins (catkin builds only): the Set Start and Set Goal tools and the
-# Activate panel. rviz is found here, not in catkin's COMPONENTS, so only this library links
+# The rviz plugins (catkin builds only): the Set Start, Set Goal and Draw Polygon tools and
+# the Activate panel. rviz is found here, not in catkin's COMPONENTS, so only this library links
 # Ogre and Qt; AUTOMOC is on for this target only.
 find_package(rviz REQUIRED)
 find_package(pluginlib REQUIRED)
@@ -9,13 +9,15 @@ add_library(${PROJECT_NAME}_rviz_plugins SHARED
   rviz_plugins/activate_panel.cpp
   rviz_plugins/goal_tool.cpp
   rviz_plugins/labelled_point_tool.cpp
+  rviz_plugins/polygon_tool.cpp
   rviz_plugins/start_tool.cpp)
 set_target_properties(${PROJECT_NAME}_rviz_plugins PROPERTIES AUTOMOC ON)
 add_dependencies(${PROJECT_NAME}_rviz_plugins ${PROJECT_NAME}_generate_messages_cpp)
 target_include_directories(${PROJECT_NAME}_rviz_plugins PRIVATE ${PROJECT_SOURCE_DIR})
 target_include_directories(${PROJECT_NAME}_rviz_plugins SYSTEM PRIVATE
   ${rviz_INCLUDE_DIRS} ${pluginlib_INCLUDE_DIRS} ${catkin_INCLUDE_DIRS})
-target_link_libraries(${PROJECT_NAME}_rviz_plugins PRIVATE
+# Draw Polygon edits a core::PolygonSketch: the drawing model and the validator only.
+target_link_libraries(${PROJECT_NAME}_rviz_plugins PRIVATE kc_polygon_sketch
   ${rviz_LIBRARIES} ${pluginlib_LIBRARIES} ${catkin_LIBRARIES} Qt5::Widgets)
 target_compile_options(${PROJECT_NAME}_rviz_plugins PRIVATE -Wall -Wextra)
 

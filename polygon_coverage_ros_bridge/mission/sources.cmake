@@ -12,3 +12,9 @@ kc_add_stage_library(kc_mission
 # GeographicLib (the local east-north frame of GeoJSON missions) stays out of the headers.
 target_include_directories(kc_mission PRIVATE ${GeographicLib_INCLUDE_DIRS})
 target_link_libraries(kc_mission PRIVATE ${GeographicLib_LIBRARIES})
+# The drawing model of the rviz Draw Polygon tool: a library of its own, so that the rviz
+# plugins link only it and the validator, not the planner.
+kc_add_stage_library(kc_polygon_sketch
+  SOURCES
+    polygon_coverage_ros_bridge/mission/polygon_sketch.cpp
+  DEPENDS kc_geometry kc_validation)

@@ -309,8 +309,9 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
   double unseen = result.unseen_before_m2;
   for (int round = 0; round < kRepairRounds; ++round) {
     // First with any leg replaced where that is cheaper, then only legs whose view others
-    // have, then spurs only: the first that loses no more of what the path saw (a replaced
-    // leg may have been a lane) than it sees.
+    // have: the first that loses no more of what the path saw than a sliver (a replaced leg
+    // may have been a lane) and sees more; else spurs only, which keep every leg, so what
+    // they lose is the raster's sampling of the legs they split: taken when they see more.
     bool accepted = false;
     for (const LegReplacement replacement :
          {LegReplacement::kAnyLeg, LegReplacement::kUnneededLeg, LegReplacement::kNone}) {
@@ -332,7 +333,8 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
       std::vector<UnseenRegion> left =
           evaluator_.unseenRegions(patched_seen, kSamplesPerRegion, join_distance_);
       const double patched_unseen = totalArea(left);
-      if (static_cast<double>(lost) * cell_area > min_region_m2_ ||
+      const bool keeps_every_leg = replacement == LegReplacement::kNone;
+      if ((!keeps_every_leg && static_cast<double>(lost) * cell_area > min_region_m2_) ||
           patched_unseen >= unseen - min_region_m2_) {
         continue;  // the patches lost more than they saw, or saw nothing worth their cost
       }

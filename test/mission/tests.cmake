@@ -5,5 +5,6 @@ kc_add_gtest(test_mission
   test/mission/local_east_north_frame_test.cpp
   test/mission/coverage_finding_test.cpp
   test/mission/coverage_safe_bars_test.cpp
+  test/mission/polygon_sketch_test.cpp
   test/support/hard_map_generator.cpp
-  LIBRARIES kc_mission)
+  LIBRARIES kc_mission kc_polygon_sketch)

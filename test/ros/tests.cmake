@@ -14,7 +14,7 @@ if(catkin_FOUND)
   add_rostest(test/ros/unseen_area.test DEPENDENCIES ${KC_NODE_TARGETS})
   # The replanner's resident memory over 100 000 visited poses.
   add_rostest(test/ros/replanner_memory.test DEPENDENCIES ${KC_NODE_TARGETS})
-  # GUI test of the rviz tools: needs a DISPLAY (xvfb-run). Registered as add_rostest
+  # GUI tests of the rviz tools: need a DISPLAY (xvfb-run). Registered as add_rostest
   # does, through gui_rostest.sh, which without a DISPLAY writes the result as skipped and
   # exits 77: ctest reports it skipped, catkin_test_results counts it skipped.
   find_program(KINEMATIC_COVERAGE_ROSTEST rostest)
@@ -30,6 +30,16 @@ ${PYTHON_EXECUTABLE} ${KINEMATIC_COVERAGE_ROSTEST} --pkgdir=${PROJECT_SOURCE_DIR
 ${PROJECT_SOURCE_DIR}/test/ros/rviz_tool.test"
     DEPENDENCIES ${KC_NODE_TARGETS} ${PROJECT_NAME}_rviz_plugins)
   set_tests_properties(_ctest_${PROJECT_NAME}_rostest_test_ros_rviz_tool.test PROPERTIES
+    SKIP_RETURN_CODE 77)
+  # The Draw Polygon tool: a hull and a hole drawn by clicks, then planned around the hole.
+  catkin_run_tests_target("rostest" test_ros_polygon_tool.test rostest-test_ros_polygon_tool.xml
+    COMMAND "${PROJECT_SOURCE_DIR}/test/ros/gui_rostest.sh \
+${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/rostest-test_ros_polygon_tool.xml \
+${PYTHON_EXECUTABLE} ${KINEMATIC_COVERAGE_ROSTEST} --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} \
+--results-filename test_ros_polygon_tool.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" \
+${PROJECT_SOURCE_DIR}/test/ros/polygon_tool.test"
+    DEPENDENCIES ${KC_NODE_TARGETS} ${PROJECT_NAME}_rviz_plugins)
+  set_tests_properties(_ctest_${PROJECT_NAME}_rostest_test_ros_polygon_tool.test PROPERTIES
     SKIP_RETURN_CODE 77)
   # The launch files name only packages and arguments that exist.
   find_package(roslaunch REQUIRED)
