@@ -9,6 +9,10 @@ include(bench/trajectory/sources.cmake OPTIONAL)
 
 # Smoke runs: each benchmark for a few seconds under ctest, so that a benchmark that stops
 # building or running fails CI. Their figures are checked against docs/ by doc_figures.
+# Tests, so left out with testing off (as the root CMakeLists.txt leaves test/ out).
+if(catkin_FOUND AND NOT CATKIN_ENABLE_TESTING)
+  return()
+endif()
 function(kc_add_benchmark_smoke target)
   add_test(NAME smoke_${target} COMMAND ${PROJECT_NAME}_${target} ${ARGN})
   set_tests_properties(smoke_${target} PROPERTIES TIMEOUT 300)

@@ -22,7 +22,7 @@ struct PlannerParameters {
   std::string offset_parts = "all";
   /// Share of the sweep distance by which the offset free area's boundary may move inward
   /// before it is decomposed (BoundarySimplification); in [0, 0.5], 0: decomposed exactly.
-  double boundary_simplification = 0.0;
+  double boundary_simplification = 0.1;
   std::string sensor_model = "frustum";  ///< or "line"
   double lateral_fov = 2.27;             ///< rad
   double onward_fov = 0.52;              ///< rad

@@ -300,7 +300,8 @@ TEST(ThesisYaml, DiffersFromTheDefaultsOnlyWhereTheDefaultsGoBeyondTheThesis) {
   // The README's "Defaults that differ from the thesis" lists these, with the reasons.
   const std::map<std::string, std::string> thesis_values = {{"cell_joining", "critical_points"},
                                                             {"smoothing_strategy", "local"},
-                                                            {"coverage_repair", "false"}};
+                                                            {"coverage_repair", "false"},
+                                                            {"boundary_simplification", "0"}};
   const PlannerParameters thesis =
       MissionFileReader().readParameters(std::string(KC_SOURCE_DIR) + "/config/thesis.yaml");
   const PlannerParameters defaults;
