@@ -22,25 +22,22 @@ if(catkin_FOUND)
     message(FATAL_ERROR "rostest not found: source your ROS setup or run "
       "scripts/install_dependencies.sh")
   endif()
-  catkin_run_tests_target("rostest" test_ros_rviz_tool.test rostest-test_ros_rviz_tool.xml
-    COMMAND "${PROJECT_SOURCE_DIR}/test/ros/gui_rostest.sh \
-${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/rostest-test_ros_rviz_tool.xml \
+  function(kc_add_gui_rostest name)
+    set(result rostest-test_ros_${name}.xml)
+    catkin_run_tests_target("rostest" test_ros_${name}.test ${result}
+      COMMAND "${PROJECT_SOURCE_DIR}/test/ros/gui_rostest.sh \
+${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/${result} \
 ${PYTHON_EXECUTABLE} ${KINEMATIC_COVERAGE_ROSTEST} --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} \
---results-filename test_ros_rviz_tool.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" \
-${PROJECT_SOURCE_DIR}/test/ros/rviz_tool.test"
-    DEPENDENCIES ${KC_NODE_TARGETS} ${PROJECT_NAME}_rviz_plugins)
-  set_tests_properties(_ctest_${PROJECT_NAME}_rostest_test_ros_rviz_tool.test PROPERTIES
-    SKIP_RETURN_CODE 77)
+--results-filename test_ros_${name}.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" \
+${PROJECT_SOURCE_DIR}/test/ros/${name}.test"
+      DEPENDENCIES ${KC_NODE_TARGETS} ${PROJECT_NAME}_rviz_plugins)
+    set_tests_properties(_ctest_${PROJECT_NAME}_rostest_test_ros_${name}.test PROPERTIES
+      SKIP_RETURN_CODE 77)
+  endfunction()
+  # Set Start, Set Goal and Activate clicked in rviz.
+  kc_add_gui_rostest(rviz_tool)
   # The Draw Polygon tool: a hull and a hole drawn by clicks, then planned around the hole.
-  catkin_run_tests_target("rostest" test_ros_polygon_tool.test rostest-test_ros_polygon_tool.xml
-    COMMAND "${PROJECT_SOURCE_DIR}/test/ros/gui_rostest.sh \
-${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/rostest-test_ros_polygon_tool.xml \
-${PYTHON_EXECUTABLE} ${KINEMATIC_COVERAGE_ROSTEST} --pkgdir=${PROJECT_SOURCE_DIR} --package=${PROJECT_NAME} \
---results-filename test_ros_polygon_tool.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" \
-${PROJECT_SOURCE_DIR}/test/ros/polygon_tool.test"
-    DEPENDENCIES ${KC_NODE_TARGETS} ${PROJECT_NAME}_rviz_plugins)
-  set_tests_properties(_ctest_${PROJECT_NAME}_rostest_test_ros_polygon_tool.test PROPERTIES
-    SKIP_RETURN_CODE 77)
+  kc_add_gui_rostest(polygon_tool)
   # The launch files name only packages and arguments that exist.
   find_package(roslaunch REQUIRED)
   roslaunch_add_file_check(launch)
