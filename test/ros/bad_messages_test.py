@@ -19,7 +19,7 @@ from std_msgs.msg import Empty
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
 from ros_test_support import (Collector, RejectionChecks, point_message, stamped_polygon,
-                              wait_until)  # noqa: E402
+                              wait_for_subscribers, wait_until)  # noqa: E402
 
 SQUARE = [(0, 0), (30, 0), (30, 30), (0, 30)]
 NAN = float('nan')
@@ -88,10 +88,17 @@ class BadMessagesTest(RejectionChecks, unittest.TestCase):
         cls.smoother_status = Collector('smooth_trajectory_generator/status', PlanStatus)
         cls.replanner_status = Collector('replanner/status', PlanStatus)
         cls.planner_status = Collector('coverage_planner/status', PlanStatus)
-        for publisher, subscribers in ((cls.waypoint_list, 1), (cls.visited, 1), (cls.pose, 1),
-                                       (cls.activate, 1), (cls.polygon, 3), (cls.updated, 2)):
-            if not wait_until(lambda: publisher.get_num_connections() >= subscribers, 30.0):
-                raise RuntimeError('nothing subscribes to %s' % publisher.name)
+        for publisher, nodes in ((cls.waypoint_list, [SMOOTHER]), (cls.visited, [REPLANNER]),
+                                 (cls.pose, [REPLANNER]), (cls.activate, [PLANNER]),
+                                 (cls.polygon, [SMOOTHER, REPLANNER, PLANNER]),
+                                 (cls.updated, [SMOOTHER, REPLANNER])):
+            if not wait_for_subscribers(publisher, nodes):
+                raise RuntimeError('%s do not all subscribe to %s' % (nodes, publisher.name))
+        # A status or trajectory published before its connection opens would be missed.
+        for collector in (cls.trajectory, cls.smoother_status, cls.replanner_status,
+                          cls.planner_status):
+            if not wait_until(lambda: collector.subscriber.get_num_connections() > 0, 30.0):
+                raise RuntimeError('nothing publishes %s' % collector.subscriber.name)
 
     def send_waypoints(self, message):
         return lambda: self.waypoint_list.publish(message)

@@ -109,6 +109,15 @@ def wait_until(condition, timeout):
     return condition()
 
 
+def wait_for_subscribers(publisher, nodes, timeout=30.0):
+    """Waits until every node named in `nodes` (e.g. '/replanner') is connected to `publisher`;
+    returns whether they are. A count of connections is not enough when the test itself
+    listens to the topic it publishes on."""
+    def connected():
+        return set(nodes) <= {c.endpoint_id for c in publisher.impl.connections}
+    return wait_until(connected, timeout)
+
+
 def node_pid(name, caller):
     """The process id of a running node, from its XML-RPC API (as `rosnode info` finds it)."""
     master = rosgraph.Master(caller)

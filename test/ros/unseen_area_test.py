@@ -13,7 +13,7 @@ from kinematic_coverage.msg import PlanStatus
 from rosgraph_msgs.msg import Log
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
-from ros_test_support import Collector, wait_until  # noqa: E402
+from ros_test_support import Collector, wait_for_subscribers, wait_until  # noqa: E402
 
 TIMEOUT_S = 60.0
 NODE = '/smooth_trajectory_generator'
@@ -51,7 +51,7 @@ class UnseenAreaTest(unittest.TestCase):
         warnings = len(self.warnings())
         statuses = len(self.status.messages)
         publisher = rospy.Publisher('waypoint_list', PoseArray, queue_size=1)
-        wait_until(lambda: publisher.get_num_connections() > 0, 10.0)
+        wait_for_subscribers(publisher, ['/smooth_trajectory_generator'], 10.0)
         rospy.sleep(0.5)  # a message published as the connection opens may be dropped
         publisher.publish(self.waypoints.messages[-1])
         self.assertTrue(self.status.wait_for(statuses + 1, TIMEOUT_S), 'no second status')
