@@ -44,4 +44,22 @@ void parallelFor(std::size_t count, Body&& body) {
   if (failure) std::rethrow_exception(failure);
 }
 
+/// parallelFor whose failure is the one a loop in order would have: rethrows what the body
+/// of the lowest failing index threw (the others still run), so that a stage reports the
+/// same error on any number of threads.
+template <typename Body>
+void parallelForInOrder(std::size_t count, Body&& body) {
+  std::vector<std::exception_ptr> failures(count);
+  parallelFor(count, [&](std::size_t i) {
+    try {
+      body(i);
+    } catch (...) {
+      failures[i] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
+}
+
 }  // namespace kinematic_coverage::core

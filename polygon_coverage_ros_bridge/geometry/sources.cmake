@@ -6,3 +6,5 @@ kc_add_stage_library(kc_geometry
     polygon_coverage_ros_bridge/geometry/wall_offset.cpp
     polygon_coverage_ros_bridge/geometry/region_intersection.cpp
   CGAL)
+# The wall offset builds its rings' skeletons on every hardware thread (base/parallel_for.h).
+target_link_libraries(kc_geometry PUBLIC Threads::Threads)

@@ -10,9 +10,12 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 #include <string>
 
+#include "polygon_coverage_ros_bridge/base/parallel_for.h"
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
@@ -64,15 +67,32 @@ double exactArea(const ExactPolygonWithHoles& polygon) {
   return result;
 }
 
+using ExactSkeleton = CGAL::Straight_skeleton_2<ExactKernel>;
+
+/// A straight skeleton built in the inexact kernel (its events are exact predicates)
+/// and converted once to the exact kernel, in which every offset of it is constructed.
+boost::shared_ptr<ExactSkeleton> toExactSkeleton(
+    const boost::shared_ptr<CGAL::Straight_skeleton_2<InexactKernel>>& skeleton,
+    const std::string& ring) {
+  if (!skeleton) {
+    throw InternalError("offset", "the straight skeleton of " + ring + " could not be built");
+  }
+  return CGAL::convert_straight_skeleton_2<ExactSkeleton>(*skeleton);
+}
+
+/// The offset contours of `skeleton` at `distance`.
+std::vector<boost::shared_ptr<ExactPolygon>> offsetContours(const ExactSkeleton& skeleton,
+                                                            double distance) {
+  return CGAL::create_offset_polygons_2<ExactPolygon>(distance, skeleton, ExactKernel());
+}
+
 /// A hole grown by its exterior straight skeleton: the outline of the offset (pockets
 /// that the growth encloses are filled, they are out of reach anyway).
-ExactPolygon grownHole(const Ring& hole, double distance) {
-  const auto offsets = CGAL::create_exterior_skeleton_and_offset_polygons_2(
-      distance, toInexactCcw(hole), ExactKernel());
+ExactPolygon grownHole(const ExactSkeleton& skeleton, const Ring& hole, double distance) {
   // The result holds a bounding frame and the offset outline(s); the frame is the
   // largest, the outline the next largest.
   std::vector<std::pair<double, ExactPolygon>> by_area;
-  for (const auto& offset : offsets) {
+  for (const auto& offset : offsetContours(skeleton, distance)) {
     by_area.emplace_back(std::abs(CGAL::to_double(offset->area())), *offset);
   }
   std::sort(by_area.begin(), by_area.end(),
@@ -125,43 +145,8 @@ void checkSkeletonSize(const Ring& ring, const std::string& name) {
   throw SizeLimitError(message.str());
 }
 
-}  // namespace
-
-double skeletonPairs(const Ring& ring) {
-  return static_cast<double>(ring.size()) * static_cast<double>(reflexVertexCount(ring));
-}
-
-bool fitsSkeletonLimit(const PolygonWithHoles& area) {
-  if (skeletonPairs(area.hull) > kMaxSkeletonPairs) return false;
-  for (const Ring& hole : area.holes) {
-    if (skeletonPairs(hole) > kMaxSkeletonPairs) return false;
-  }
-  return true;
-}
-
-OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance) {
-  if (wall_distance > 0.0) {
-    checkSkeletonSize(free_area.hull, "the hull");
-    for (std::size_t i = 0; i < free_area.holes.size(); ++i) {
-      checkSkeletonSize(free_area.holes[i], "hole " + std::to_string(i));
-    }
-  }
-  ExactPolygonSet set;
-  if (wall_distance <= 0.0) {
-    set.insert(toExactCcw(free_area.hull));
-    for (const Ring& hole : free_area.holes) set.difference(toExactCcw(hole));
-  } else {
-    const auto shrunk_hulls = CGAL::create_interior_skeleton_and_offset_polygons_2(
-        wall_distance, toInexactCcw(free_area.hull), ExactKernel());
-    for (const auto& part : shrunk_hulls) {
-      ExactPolygon polygon = *part;
-      if (polygon.size() < 3) continue;
-      if (polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
-      set.join(polygon);
-    }
-    for (const Ring& hole : free_area.holes) set.difference(grownHole(hole, wall_distance));
-  }
-
+/// The parts of the offset free area in `set`, largest first; throws when it is empty.
+OffsetFreeArea offsetParts(const ExactPolygonSet& set, double wall_distance) {
   std::vector<ExactPolygonWithHoles> parts;
   set.polygons_with_holes(std::back_inserter(parts));
   parts.erase(std::remove_if(parts.begin(), parts.end(),
@@ -180,6 +165,94 @@ OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double w
   OffsetFreeArea result;
   for (const ExactPolygonWithHoles& part : parts) result.parts.push_back(toPolygonWithHoles(part));
   return result;
+}
+
+}  // namespace
+
+double skeletonPairs(const Ring& ring) {
+  return static_cast<double>(ring.size()) * static_cast<double>(reflexVertexCount(ring));
+}
+
+bool fitsSkeletonLimit(const PolygonWithHoles& area) {
+  if (skeletonPairs(area.hull) > kMaxSkeletonPairs) return false;
+  for (const Ring& hole : area.holes) {
+    if (skeletonPairs(hole) > kMaxSkeletonPairs) return false;
+  }
+  return true;
+}
+
+/// The hull's interior skeleton and each hole's exterior one, up to the largest distance.
+struct WallOffset::Skeletons {
+  const PolygonWithHoles* free_area = nullptr;
+  double max_distance = 0.0;
+  boost::shared_ptr<ExactSkeleton> hull;
+  std::vector<boost::shared_ptr<ExactSkeleton>> holes;
+};
+
+WallOffset::WallOffset(const PolygonWithHoles& free_area, double max_distance)
+    : skeletons_(std::make_unique<Skeletons>()) {
+  checkSkeletonSize(free_area.hull, "the hull");
+  for (std::size_t i = 0; i < free_area.holes.size(); ++i) {
+    checkSkeletonSize(free_area.holes[i], "hole " + std::to_string(i));
+  }
+  skeletons_->free_area = &free_area;
+  skeletons_->max_distance = max_distance;
+  skeletons_->holes.resize(free_area.holes.size());
+  // The rings' skeletons are independent: built on every hardware thread (ring 0 the hull).
+  parallelForInOrder(1 + free_area.holes.size(), [&](std::size_t ring) {
+    if (ring == 0) {
+      const InexactPolygon hull = toInexactCcw(free_area.hull);
+      const std::vector<InexactPolygon> no_holes;
+      skeletons_->hull =
+          toExactSkeleton(CGAL::CGAL_SS_i::create_partial_interior_straight_skeleton_2(
+                              max_distance, hull.vertices_begin(), hull.vertices_end(),
+                              no_holes.begin(), no_holes.end(), InexactKernel()),
+                          "the hull");
+      return;
+    }
+    const InexactPolygon hole = toInexactCcw(free_area.holes[ring - 1]);
+    skeletons_->holes[ring - 1] = toExactSkeleton(
+        CGAL::CGAL_SS_i::create_partial_exterior_straight_skeleton_2(
+            max_distance, hole.vertices_begin(), hole.vertices_end(), InexactKernel()),
+        "hole " + std::to_string(ring - 1));
+  });
+}
+
+WallOffset::~WallOffset() = default;
+
+OffsetFreeArea WallOffset::at(double distance) const {
+  const Skeletons& skeletons = *skeletons_;
+  if (!(distance > 0.0 && distance <= skeletons.max_distance)) {
+    throw InternalError("offset", "an offset distance beyond the skeletons was asked for");
+  }
+  // The offsets of the rings on every hardware thread, then subtracted in order.
+  std::vector<boost::shared_ptr<ExactPolygon>> shrunk_hull;
+  std::vector<ExactPolygon> grown_holes(skeletons.holes.size());
+  parallelForInOrder(1 + skeletons.holes.size(), [&](std::size_t ring) {
+    if (ring == 0) {
+      shrunk_hull = offsetContours(*skeletons.hull, distance);
+    } else {
+      grown_holes[ring - 1] =
+          grownHole(*skeletons.holes[ring - 1], skeletons.free_area->holes[ring - 1], distance);
+    }
+  });
+  ExactPolygonSet set;
+  for (const auto& part : shrunk_hull) {
+    ExactPolygon polygon = *part;
+    if (polygon.size() < 3) continue;
+    if (polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
+    set.join(polygon);
+  }
+  for (const ExactPolygon& hole : grown_holes) set.difference(hole);
+  return offsetParts(set, distance);
+}
+
+OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance) {
+  if (wall_distance > 0.0) return WallOffset(free_area, wall_distance).at(wall_distance);
+  ExactPolygonSet set;
+  set.insert(toExactCcw(free_area.hull));
+  for (const Ring& hole : free_area.holes) set.difference(toExactCcw(hole));
+  return offsetParts(set, wall_distance);
 }
 
 }  // namespace kinematic_coverage::core

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,5 +37,26 @@ struct OffsetFreeArea {
 /// largest first. Throws InvalidInputError when nothing is left, and, before any skeleton is built,
 /// when a ring has more than kMaxSkeletonPairs vertex pairs.
 OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance);
+
+/// computeOffsetFreeArea of one free area at any distance up to a largest one, with the
+/// straight skeletons built once: OffsetPartJoiner offsets the same area at a dozen
+/// distances, and the skeletons are half the cost of each offset. The area must outlive
+/// this object.
+class WallOffset {
+ public:
+  /// Builds the skeletons up to `max_distance` > 0. Throws as computeOffsetFreeArea does
+  /// before any skeleton is built.
+  WallOffset(const PolygonWithHoles& free_area, double max_distance);
+  ~WallOffset();
+  WallOffset(const WallOffset&) = delete;
+  WallOffset& operator=(const WallOffset&) = delete;
+
+  /// computeOffsetFreeArea(free_area, distance), 0 < distance <= max_distance.
+  OffsetFreeArea at(double distance) const;
+
+ private:
+  struct Skeletons;
+  std::unique_ptr<Skeletons> skeletons_;
+};
 
 }  // namespace kinematic_coverage::core

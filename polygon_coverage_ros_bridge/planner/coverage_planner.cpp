@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/base/parallel_for.h"
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/boundary_simplification.h"
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
@@ -454,25 +455,39 @@ SweepStage sweepStage(const PlanningRun& run, Clock::time_point since, const Dec
                       const std::vector<Decomposition>& decompositions, const FrustumSensor& sensor,
                       const VisibilityGraph& graph) {
   warnOfALongFootprint(sensor, &run.plan);
-  const TransitionPath transition = [&](const Point2& a, const Point2& b) {
-    return graph.shortestPath(a, b);
-  };
-  SweepStage sweeps;
-  sweeps.clusters = {{0}, {1}};  // start, goal
+  std::vector<SweepPatternGenerator> generators;
+  generators.reserve(parts.exact.size());
+  std::vector<std::pair<std::size_t, const Cell*>> cells;  // part, cell
   for (std::size_t k = 0; k < parts.exact.size(); ++k) {
-    const SweepPatternGenerator generator(
+    generators.emplace_back(
         sensor, SweepPatternGenerator::laneEndInset(sensor, run.parameters.wall_distance),
         parts.decomposed[k], parts.exact[k]);
-    for (const Cell& cell : decompositions[k].cells) {
-      std::vector<int> cluster;
-      for (double direction : cell.sweep_directions) {
-        for (SweepPattern& pattern : generator.patterns(cell.polygon, direction, transition)) {
-          cluster.push_back(static_cast<int>(sweeps.patterns.size()) + 2);
-          sweeps.patterns.push_back(std::move(pattern));
-        }
+    for (const Cell& cell : decompositions[k].cells) cells.emplace_back(k, &cell);
+  }
+  // The cells' patterns on every hardware thread, each cell's transitions routed with its
+  // own cache of located lane ends.
+  std::vector<std::vector<SweepPattern>> cell_patterns(cells.size());
+  parallelForInOrder(cells.size(), [&](std::size_t i) {
+    VisibilityGraph::PointCache lane_ends;
+    const TransitionPath transition = [&](const Point2& a, const Point2& b) {
+      return graph.shortestPath(a, b, &lane_ends);
+    };
+    const auto& [k, cell] = cells[i];
+    for (double direction : cell->sweep_directions) {
+      for (SweepPattern& pattern : generators[k].patterns(cell->polygon, direction, transition)) {
+        cell_patterns[i].push_back(std::move(pattern));
       }
-      sweeps.clusters.push_back(std::move(cluster));
     }
+  });
+  SweepStage sweeps;
+  sweeps.clusters = {{0}, {1}};  // start, goal
+  for (std::vector<SweepPattern>& patterns : cell_patterns) {
+    std::vector<int> cluster;
+    for (SweepPattern& pattern : patterns) {
+      cluster.push_back(static_cast<int>(sweeps.patterns.size()) + 2);
+      sweeps.patterns.push_back(std::move(pattern));
+    }
+    sweeps.clusters.push_back(std::move(cluster));
   }
   std::ostringstream summary;
   summary << sweeps.patterns.size() << " sweep patterns";

@@ -217,7 +217,8 @@ bool UnseenAreaRepair::legNeeded(const SeenArea& seen, const Point2& a, const Po
 
 bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement replacement,
                               const SeenArea& view, std::size_t first_inside,
-                              std::size_t* last_inside, std::vector<Point2>* waypoints) const {
+                              std::size_t* last_inside, std::vector<Point2>* waypoints,
+                              VisibilityGraph::PointCache* routes) const {
   std::vector<Point2>& path = *waypoints;
   // The legs nearest to the patch's ends.
   std::vector<std::pair<double, std::size_t>> legs;
@@ -258,11 +259,14 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
            {path[i], path[i + 1], closestPointOnSegment(in, path[i], path[i + 1])}) {
         const double split =
             segment_cost_.of(path[i], anchor) + segment_cost_.of(anchor, path[i + 1]) - leg_cost;
-        consider(split + graph_.cost(anchor, in) + patch_cost + graph_.cost(out, anchor), anchor);
+        consider(
+            split + graph_.cost(anchor, in, routes) + patch_cost + graph_.cost(out, anchor, routes),
+            anchor);
       }
       if (replacement == LegReplacement::kAnyLeg ||
           (replacement == LegReplacement::kUnneededLeg && !legNeeded(view, path[i], path[i + 1]))) {
-        consider(graph_.cost(path[i], in) + patch_cost + graph_.cost(out, path[i + 1]) - leg_cost,
+        consider(graph_.cost(path[i], in, routes) + patch_cost +
+                     graph_.cost(out, path[i + 1], routes) - leg_cost,
                  std::nullopt);
       }
     }
@@ -273,9 +277,9 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
   // From where the detour leaves the path to where it rejoins it, without repeated points.
   const Point2& leave = best_anchor ? *best_anchor : path[best_leg];
   const Point2& rejoin = best_anchor ? *best_anchor : path[best_leg + 1];
-  std::vector<Point2> detour = graph_.shortestPath(leave, stretch.front());
+  std::vector<Point2> detour = graph_.shortestPath(leave, stretch.front(), routes);
   detour.insert(detour.end(), stretch.begin() + 1, stretch.end());
-  const std::vector<Point2> back = graph_.shortestPath(stretch.back(), rejoin);
+  const std::vector<Point2> back = graph_.shortestPath(stretch.back(), rejoin, routes);
   detour.insert(detour.end(), back.begin() + 1, back.end());
   detour.erase(std::unique(detour.begin(), detour.end()), detour.end());
   std::vector<Point2> inserted;
@@ -307,6 +311,7 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
       evaluator_.unseenRegions(seen, kSamplesPerRegion, join_distance_);
   result.unseen_before_m2 = totalArea(regions);
   double unseen = result.unseen_before_m2;
+  VisibilityGraph::PointCache routes;
   for (int round = 0; round < kRepairRounds; ++round) {
     // First with any leg replaced where that is cheaper, then only legs whose view others
     // have: the first that loses no more of what the path saw than a sliver (a replaced leg
@@ -321,7 +326,9 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
       for (const UnseenRegion& region : regions) {
         if (region.area_m2 < min_region_m2_) break;  // the largest first
         for (const std::vector<Point2>& patch : patchesFor(region.samples)) {
-          if (insert(patch, replacement, seen, first_inside, &patched_last, &patched)) ++patches;
+          if (insert(patch, replacement, seen, first_inside, &patched_last, &patched, &routes)) {
+            ++patches;
+          }
         }
       }
       if (patches == 0) break;

@@ -87,10 +87,10 @@ class UnseenAreaRepair {
 
   /// Inserts `patch` (either way round) where the detour costs least: as a spur, or as a
   /// detour instead of a leg that `replacement` allows (legNeeded on the path's `view`);
-  /// false when no leg can reach the patch.
+  /// false when no leg can reach the patch. `routes` keeps the points priced so far.
   bool insert(const std::vector<Point2>& patch, LegReplacement replacement, const SeenArea& view,
-              std::size_t first_inside, std::size_t* last_inside,
-              std::vector<Point2>* waypoints) const;
+              std::size_t first_inside, std::size_t* last_inside, std::vector<Point2>* waypoints,
+              VisibilityGraph::PointCache* routes) const;
 
   /// True unless every reachable cell sampled in the middle of the leg's view was seen at
   /// least twice (by another step of the path too).

@@ -49,11 +49,10 @@ struct Level {
   std::vector<int> component_of_part;  ///< -1: the part lies in no component
 };
 
-Level levelAt(const PolygonWithHoles& free_area, const std::vector<PartVertices>& parts,
-              double distance) {
+Level levelAt(const WallOffset& offset, const std::vector<PartVertices>& parts, double distance) {
   Level level;
   level.distance = distance;
-  level.components = computeOffsetFreeArea(free_area, distance).parts;
+  level.components = offset.at(distance).parts;
   for (const PartVertices& part : parts) {
     // A part lies deep inside the offset at a smaller distance (offsets are nested), so
     // one of its vertices tells which component holds it.
@@ -86,8 +85,8 @@ struct Merge {
 
 /// Halves [lower, upper] where the grouping changes, down to kRefinementDepth, collecting
 /// the brackets of every change, largest distances first.
-void refine(const PolygonWithHoles& free_area, const std::vector<PartVertices>& parts,
-            const Level& lower, const Level& upper, int depth, std::vector<Merge>* merges) {
+void refine(const WallOffset& offset, const std::vector<PartVertices>& parts, const Level& lower,
+            const Level& upper, int depth, std::vector<Merge>* merges) {
   const std::vector<int> lower_groups = grouping(lower);
   const std::vector<int> upper_groups = grouping(upper);
   if (lower_groups == upper_groups) return;
@@ -95,9 +94,9 @@ void refine(const PolygonWithHoles& free_area, const std::vector<PartVertices>& 
     merges->push_back({lower, upper_groups});
     return;
   }
-  const Level middle = levelAt(free_area, parts, 0.5 * (lower.distance + upper.distance));
-  refine(free_area, parts, middle, upper, depth - 1, merges);
-  refine(free_area, parts, lower, middle, depth - 1, merges);
+  const Level middle = levelAt(offset, parts, 0.5 * (lower.distance + upper.distance));
+  refine(offset, parts, middle, upper, depth - 1, merges);
+  refine(offset, parts, lower, middle, depth - 1, merges);
 }
 
 /// The closest pair of vertices, one of the parts in `from`, one of those in `to`.
@@ -222,9 +221,11 @@ std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<Pa
   for (std::size_t k = 0; k < parts.size(); ++k) {
     upper.component_of_part.push_back(static_cast<int>(owner[k]));
   }
-  const Level lower = levelAt(area, parts, kMinClearanceShare * wall_distance);
+  // Every level lies below the wall distance: the skeletons are built once up to it.
+  const WallOffset offset(area, wall_distance);
+  const Level lower = levelAt(offset, parts, kMinClearanceShare * wall_distance);
   std::vector<Merge> merges;
-  refine(area, parts, lower, upper, kRefinementDepth, &merges);
+  refine(offset, parts, lower, upper, kRefinementDepth, &merges);
 
   PartGroups groups(part_count);
   std::vector<OffsetGap> gaps;

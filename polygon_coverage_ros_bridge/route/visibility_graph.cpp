@@ -228,6 +228,37 @@ double VisibilityGraph::cost(const Point2& a, const Point2& b) const {
   return bestRoute(from, to).cost;
 }
 
+VisibilityGraph::QueryPoint& VisibilityGraph::cached(const Point2& p, bool attached,
+                                                     PointCache* cache) const {
+  const auto key = std::make_pair(p.x(), p.y());
+  auto it = cache->entries_.find(key);
+  if (it == cache->entries_.end())
+    it = cache->entries_.emplace(key, PointCache::Entry{locate(p)}).first;
+  PointCache::Entry& entry = it->second;
+  if (attached && !entry.attached) {
+    attachNodes(&entry.point, false);
+    entry.attached = true;
+  }
+  return entry.point;
+}
+
+std::vector<Point2> VisibilityGraph::shortestPath(const Point2& a, const Point2& b,
+                                                  PointCache* cache) const {
+  const QueryPoint& from = cached(a, false, cache);
+  const QueryPoint& to = cached(b, false, cache);
+  if (a == b) return {a};
+  if (straightInside(from, to)) return {a, b};
+  return pathBetween(cached(a, true, cache), cached(b, true, cache));
+}
+
+double VisibilityGraph::cost(const Point2& a, const Point2& b, PointCache* cache) const {
+  const QueryPoint& from = cached(a, false, cache);
+  const QueryPoint& to = cached(b, false, cache);
+  if (a == b) return 0.0;
+  if (straightInside(from, to)) return segment_cost_.of(a, b);
+  return bestRoute(cached(a, true, cache), cached(b, true, cache)).cost;
+}
+
 std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sources,
                                                 const std::vector<Point2>& targets) const {
   // Each distinct point is located once; sources also get their cost to every node.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -51,6 +52,15 @@ class VisibilityGraph {
   /// The cost of shortestPath(a, b) (infinity when no route exists).
   double cost(const Point2& a, const Point2& b) const;
 
+  /// Query points located once and kept for later calls: for callers that ask about the
+  /// same points many times (the coverage repair prices each patch at dozens of legs).
+  /// Holds points of the graph it was first used with only.
+  class PointCache;
+
+  /// shortestPath(a, b) and cost(a, b), with a and b located once in `cache`.
+  std::vector<Point2> shortestPath(const Point2& a, const Point2& b, PointCache* cache) const;
+  double cost(const Point2& a, const Point2& b, PointCache* cache) const;
+
   /// Costs from every source to every target, row-major (sources.size() rows of
   /// targets.size()); each equals cost(source, target).
   std::vector<double> costMatrix(const std::vector<Point2>& sources,
@@ -92,6 +102,8 @@ class VisibilityGraph {
   void allPairsCosts();
 
   QueryPoint locate(const Point2& p) const;
+  /// The point in `cache`, located (and with its visible nodes when `attached`).
+  QueryPoint& cached(const Point2& p, bool attached, PointCache* cache) const;
   void attachNodes(QueryPoint* point, bool with_node_costs) const;
   bool straightInside(const QueryPoint& a, const QueryPoint& b) const;
   Route bestRoute(const QueryPoint& a, const QueryPoint& b) const;
@@ -107,6 +119,16 @@ class VisibilityGraph {
   std::vector<double> node_costs_;  ///< nodeCount() x nodeCount(), row-major
   std::vector<std::vector<std::pair<int, double>>> neighbours_;  ///< visible nodes, costs
   std::vector<QueryPoint> query_points_;
+};
+
+class VisibilityGraph::PointCache {
+ private:
+  friend class VisibilityGraph;
+  struct Entry {
+    QueryPoint point;
+    bool attached = false;
+  };
+  std::map<std::pair<double, double>, Entry> entries_;
 };
 
 }  // namespace kinematic_coverage::core

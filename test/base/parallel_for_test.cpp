@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstddef>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace kinematic_coverage::core {
@@ -46,6 +47,25 @@ TEST(ParallelFor, RethrowsWhatABodyThrewAfterEveryThreadStopped) {
                            }),
                std::runtime_error);
   EXPECT_EQ(running, 0);
+}
+
+TEST(ParallelFor, InOrderRethrowsTheLowestFailingIndexAfterRunningTheRest) {
+  // Every index runs; of the failures, the one a loop in order meets first is rethrown,
+  // whichever thread failed first.
+  for (int repeat = 0; repeat < 20; ++repeat) {
+    std::vector<std::atomic<int>> calls(200);
+    try {
+      parallelForInOrder(200, [&](std::size_t i) {
+        ++calls[i];
+        if (i == 150 || i == 40 || i == 41) throw std::runtime_error(std::to_string(i));
+      });
+      ADD_FAILURE() << "nothing thrown";
+    } catch (const std::runtime_error& error) {
+      EXPECT_EQ(std::string(error.what()), "40");
+    }
+    for (std::size_t i = 0; i < calls.size(); ++i) EXPECT_EQ(calls[i], 1) << "index " << i;
+  }
+  parallelForInOrder(0, [](std::size_t) { ADD_FAILURE() << "no index to call"; });
 }
 
 }  // namespace

@@ -4,10 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
+#include <vector>
 
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "test/support/random_polygons.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -85,6 +89,52 @@ TEST(WallOffset, ManyConvexVerticesAreNotLimited) {
   const PolygonWithHoles round = {circle(6000, false), {}};
   const OffsetFreeArea offset = computeOffsetFreeArea(round, 1.0);
   EXPECT_NEAR(area(offset.parts), area(round) * std::pow(149.0 / 150.0, 2), 1.0);
+}
+
+void expectSameParts(const OffsetFreeArea& a, const OffsetFreeArea& b) {
+  ASSERT_EQ(a.parts.size(), b.parts.size());
+  for (std::size_t k = 0; k < a.parts.size(); ++k) {
+    EXPECT_EQ(a.parts[k].hull, b.parts[k].hull) << "part " << k;
+    EXPECT_EQ(a.parts[k].holes, b.parts[k].holes) << "part " << k;
+  }
+}
+
+/// The part joiner offsets one area at many distances from skeletons built once up to the
+/// wall distance: each offset is the one computed on its own, bit for bit, on random maps
+/// and on a strait that splits the area below the largest distance.
+TEST(WallOffset, SkeletonsBuiltOnceGiveEveryOffsetBitForBit) {
+  std::mt19937 rng(23);
+  std::vector<PolygonWithHoles> maps = {
+      // Two 10 m rooms joined by a 2 m wide channel.
+      {{{0, 0},
+        {10, 0},
+        {10, 4},
+        {12, 4},
+        {12, 0},
+        {22, 0},
+        {22, 10},
+        {12, 10},
+        {12, 6},
+        {10, 6},
+        {10, 10},
+        {0, 10}},
+       {}},
+      {{{0, 0}, {20, 0}, {20, 20}, {0, 20}},
+       {{{4, 9}, {6, 9}, {6, 11}, {4, 11}}, {{7, 9}, {9, 9}, {9, 11}, {7, 11}}}}};
+  for (int k = 0; k < 6; ++k) maps.push_back(testing::randomMap(rng, 100.0, 8, 1.0));
+  for (std::size_t m = 0; m < maps.size(); ++m) {
+    SCOPED_TRACE("map " + std::to_string(m));
+    const double largest = m < 2 ? 1.5 : 3.0;
+    const WallOffset offset(maps[m], largest);
+    for (double share : {1.0, 0.75, 0.5, 0.3, 0.02}) {
+      expectSameParts(offset.at(share * largest), computeOffsetFreeArea(maps[m], share * largest));
+    }
+  }
+  const WallOffset strait(maps[0], 1.5);
+  EXPECT_EQ(strait.at(1.5).parts.size(), 2u);
+  EXPECT_EQ(strait.at(0.4).parts.size(), 1u);
+  EXPECT_THROW(strait.at(1.6), InternalError);
+  EXPECT_THROW(strait.at(0.0), InternalError);
 }
 
 }  // namespace

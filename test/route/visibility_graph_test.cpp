@@ -234,6 +234,14 @@ TEST(VisibilityGraph, DegenerateQueries) {
   }
   EXPECT_THROW(graph.cost({std::nan(""), 1}, {1, 1}), InvalidInputError);
   EXPECT_TRUE(graph.costMatrix({}, {{1, 1}}).empty());
+  // With a cache: the same answers and errors, and a refused point is not kept.
+  VisibilityGraph::PointCache cache;
+  EXPECT_EQ(graph.shortestPath({1, 1}, {1, 1}, &cache), std::vector<Point2>{Point2(1, 1)});
+  EXPECT_EQ(graph.cost({1, 5}, {9, 5}, &cache), 3.0);
+  EXPECT_THROW(graph.shortestPath({5, 5}, {1, 1}, &cache), InvalidInputError);
+  EXPECT_THROW(graph.cost({1, 1}, {11, 1}, &cache), InvalidInputError);
+  EXPECT_THROW(graph.cost({1, 1}, {11, 1}, &cache), InvalidInputError);
+  EXPECT_EQ(graph.cost({9, 5}, {1, 5}, &cache), 3.0);
 }
 
 TEST(VisibilityGraph, ConvexAreaHasNoNodes) {
@@ -266,6 +274,7 @@ int checkRandomMap(const PolygonWithHoles& area, const std::string& cost_functio
   }
   std::vector<std::size_t> ids;
   for (const Point2& p : points) ids.push_back(graph.addQueryPoint(p));
+  VisibilityGraph::PointCache cache;
   const std::vector<double> matrix = graph.costMatrix(points, points);
   const double scale = 1e-9 * 200.0;
   int detours = 0;
@@ -280,6 +289,9 @@ int checkRandomMap(const PolygonWithHoles& area, const std::string& cost_functio
         continue;
       }
       detours += path.size() > 2;
+      // The cache locates each point once and answers bit for bit as the graph does.
+      EXPECT_EQ(graph.cost(a, b, &cache), cost);
+      EXPECT_EQ(graph.shortestPath(a, b, &cache), path);
       EXPECT_EQ(path.front(), a);
       EXPECT_EQ(path.back(), b);
       expectPathInside(area, path);
