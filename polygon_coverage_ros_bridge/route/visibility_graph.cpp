@@ -1,7 +1,10 @@
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
 
+#include <algorithm>
+#include <functional>
 #include <limits>
 #include <map>
+#include <queue>
 #include <sstream>
 #include <utility>
 
@@ -22,7 +25,8 @@ std::string describe(const Point2& p) {
 
 }  // namespace
 
-VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost& segment_cost)
+VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost& segment_cost,
+                                 AllPairs all_pairs)
     : grid_(area), segment_cost_(segment_cost) {
   for (int cluster : grid_.bendClusters()) {
     nodes_.push_back(grid_.clusterPosition(cluster));
@@ -51,10 +55,29 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
       neighbours_[w].push_back({static_cast<int>(u), c});
     }
   }
-  allPairsCosts();
+  allPairsCosts(all_pairs);
 }
 
-void VisibilityGraph::allPairsCosts() {
+std::size_t VisibilityGraph::edgeCount() const {
+  std::size_t directed = 0;
+  for (const auto& seen : neighbours_) directed += seen.size();
+  return directed / 2;
+}
+
+void VisibilityGraph::allPairsCosts(AllPairs method) {
+  const double n = static_cast<double>(nodes_.size());
+  if (method == AllPairs::kByDensity) {
+    const bool sparse = static_cast<double>(edgeCount()) < kSparseDensity * 0.5 * n * (n - 1.0);
+    method = sparse ? AllPairs::kDijkstra : AllPairs::kFloydWarshall;
+  }
+  if (method == AllPairs::kDijkstra) {
+    dijkstraFromEveryNode();
+  } else {
+    floydWarshall();
+  }
+}
+
+void VisibilityGraph::floydWarshall() {
   // Floyd-Warshall over the per-segment costs, a row at a time (vectorized), on the upper
   // triangle only: the costs are symmetric, and an update of (i, j) and one of (j, i) add
   // the same two numbers, so the lower triangle would repeat the upper one bit for bit.
@@ -74,6 +97,35 @@ void VisibilityGraph::allPairsCosts() {
       row = row.min(via_row.tail(right) + to_via);
     });
   }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < i; ++j) node_costs_[i * n + j] = node_costs_[j * n + i];
+  }
+}
+
+void VisibilityGraph::dijkstraFromEveryNode() {
+  // The sources on every hardware thread, each writing its own row; the upper triangle is
+  // then mirrored, so that the costs are symmetric bit for bit.
+  const std::size_t n = nodes_.size();
+  parallelFor(n, [&](std::size_t source) {
+    double* row = &node_costs_[source * n];
+    std::fill(row, row + n, kUnreachable);
+    row[source] = 0.0;
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    queue.push({0.0, static_cast<int>(source)});
+    while (!queue.empty()) {
+      const auto [cost, u] = queue.top();
+      queue.pop();
+      if (cost > row[u]) continue;
+      for (const auto& [w, c] : neighbours_[u]) {
+        const double through = cost + c;
+        if (through < row[w]) {
+          row[w] = through;
+          queue.push({through, w});
+        }
+      }
+    }
+  });
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < i; ++j) node_costs_[i * n + j] = node_costs_[j * n + i];
   }

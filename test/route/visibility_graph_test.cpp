@@ -336,23 +336,62 @@ TEST(VisibilityGraph, RandomConvexHoleMapsHaveConsistentInsideRoutes) {
   EXPECT_GT(detours, 500);
 }
 
-// The all-pairs node costs are computed on one triangle and mirrored: they must be
-// symmetric bit for bit, zero on the diagonal, and closed under the triangle inequality
-// (what Floyd-Warshall leaves), on maps with hundreds of nodes.
+/// The all-pairs node costs are computed on one triangle and mirrored: they must be
+/// symmetric bit for bit, zero on the diagonal, and closed under the triangle inequality
+/// (what Floyd-Warshall and Dijkstra leave).
+void expectSymmetricShortestNodeCosts(const VisibilityGraph& graph) {
+  const std::size_t n = graph.nodeCount();
+  for (std::size_t u = 0; u < n; ++u) {
+    EXPECT_EQ(graph.nodeCost(u, u), 0.0);
+    for (std::size_t w = 0; w < n; ++w) {
+      ASSERT_EQ(graph.nodeCost(u, w), graph.nodeCost(w, u)) << u << " " << w;
+      for (std::size_t k = 0; k < n; k += 7) {
+        const double via = graph.nodeCost(u, k) + graph.nodeCost(k, w);
+        EXPECT_LE(graph.nodeCost(u, w), via * (1.0 + 1e-12)) << u << " " << k << " " << w;
+      }
+    }
+  }
+}
+
+/// Visible node pairs of the graph as a share of all pairs.
+double density(const VisibilityGraph& graph) {
+  const double n = static_cast<double>(graph.nodeCount());
+  return static_cast<double>(graph.edgeCount()) / (0.5 * n * (n - 1.0));
+}
+
+// Random maps with hundreds of nodes: dense graphs, their costs by Floyd-Warshall.
 TEST(VisibilityGraph, NodeCostsAreSymmetricBitForBitAndShortest) {
   std::mt19937 rng(77);
   for (int map_index = 0; map_index < 4; ++map_index) {
     const PolygonWithHoles area = testing::randomMap(rng, 100.0, 40, 1.0);
     const VisibilityGraph graph(area, costOf(map_index % 2 == 0 ? "distance" : "time"));
-    const std::size_t n = graph.nodeCount();
-    ASSERT_GT(n, 20u);
-    for (std::size_t u = 0; u < n; ++u) {
-      EXPECT_EQ(graph.nodeCost(u, u), 0.0);
-      for (std::size_t w = 0; w < n; ++w) {
-        ASSERT_EQ(graph.nodeCost(u, w), graph.nodeCost(w, u)) << u << " " << w;
-        for (std::size_t k = 0; k < n; k += 7) {
-          const double via = graph.nodeCost(u, k) + graph.nodeCost(k, w);
-          EXPECT_LE(graph.nodeCost(u, w), via * (1.0 + 1e-12)) << u << " " << k << " " << w;
+    ASSERT_GT(graph.nodeCount(), 20u);
+    EXPECT_GE(density(graph), VisibilityGraph::kSparseDensity);
+    expectSymmetricShortestNodeCosts(graph);
+  }
+}
+
+// Dijkstra from every node and Floyd-Warshall give the same cheapest costs, up to
+// rounding, on dense random maps and on lakes strewn with islands.
+TEST(VisibilityGraph, DijkstraAndFloydWarshallAgree) {
+  std::mt19937 rng(31);
+  for (int map_index = 0; map_index < 6; ++map_index) {
+    const PolygonWithHoles area = map_index % 2 == 0
+                                      ? testing::randomMap(rng, 100.0, 40, 1.0)
+                                      : testing::convexHolesMap(rng, 100.0, 60, 4, 6, 0.5);
+    const SegmentCost cost = costOf(map_index % 3 == 0 ? "time" : "distance");
+    const VisibilityGraph floyd(area, cost, VisibilityGraph::AllPairs::kFloydWarshall);
+    const VisibilityGraph dijkstra(area, cost, VisibilityGraph::AllPairs::kDijkstra);
+    ASSERT_EQ(floyd.nodeCount(), dijkstra.nodeCount());
+    ASSERT_GT(floyd.nodeCount(), 20u);
+    expectSymmetricShortestNodeCosts(dijkstra);
+    for (std::size_t u = 0; u < floyd.nodeCount(); ++u) {
+      for (std::size_t w = 0; w < floyd.nodeCount(); ++w) {
+        const double expected = floyd.nodeCost(u, w);
+        if (std::isinf(expected)) {
+          ASSERT_EQ(dijkstra.nodeCost(u, w), expected) << u << " " << w;
+        } else {
+          ASSERT_NEAR(dijkstra.nodeCost(u, w), expected, 1e-12 * (1.0 + expected)) << u << " " << w;
         }
       }
     }
