@@ -24,8 +24,8 @@ from std_msgs.msg import Empty
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
 from ros_test_support import Collector, inside_ring  # noqa: E402
-from rviz_gui_support import (Rviz, RvizTestCase, check_gui_programs,  # noqa: E402
-                              default_artifact_dir, top_down_view)
+from rviz_gui_support import (RvizTestCase, check_gui_programs,  # noqa: E402
+                              default_artifact_dir, start_rviz, top_down_view)
 
 # Points clicked, in metres in the map frame, inside the view of pipeline.rviz.
 HULL = [(2.0, 2.0), (28.0, 2.0), (28.0, 28.0), (2.0, 28.0)]
@@ -63,9 +63,8 @@ class PolygonToolTest(RvizTestCase):
         cls.status = Collector('coverage_planner/status', PlanStatus)
         cls.smoother_status = Collector('smooth_trajectory_generator/status', PlanStatus)
         cls.trajectory = Collector('trajectory', PoseArray)
-        cls.rviz = Rviz(config_path, os.path.join(cls.artifact_dir, 'polygon_tool_rviz.log'))
+        cls.rviz = start_rviz(config_path, os.path.join(cls.artifact_dir, 'polygon_tool_rviz.log'), view)
         cls.addClassCleanup(cls.rviz.stop)
-        cls.rviz.wait_for_render_window(view)
         # Subscribed once the window settled, as rviz_tool_test.py explains (2D Nav Goal).
         cls.polygon = Collector('polygon', PolygonWithHolesStamped)
         cls.start = Collector('start', PointStamped)

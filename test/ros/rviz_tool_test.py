@@ -24,8 +24,9 @@ from std_msgs.msg import Empty
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
 from ros_test_support import Collector, load_mission  # noqa: E402
-from rviz_gui_support import (PLUGIN_ERRORS, Rviz, RvizTestCase,  # noqa: E402
-                              check_gui_programs, default_artifact_dir, top_down_view)
+from rviz_gui_support import (PLUGIN_ERRORS, RvizTestCase,  # noqa: E402
+                              check_gui_programs, default_artifact_dir, start_rviz,
+                              top_down_view)
 
 # Points clicked, in metres in the map frame: inside the lake's offset free area
 # (config/missions/lake_30x30.yaml) and inside the view of pipeline.rviz.
@@ -80,9 +81,8 @@ class RvizToolTest(RvizTestCase):
                                                 queue_size=1, latch=True)
         cls.polygon_publisher.publish(polygon)
 
-        cls.rviz = Rviz(config_path, cls.rviz_log)
+        cls.rviz = start_rviz(config_path, cls.rviz_log, view)
         cls.addClassCleanup(cls.rviz.stop)
-        cls.rviz.wait_for_render_window(view)
         cls.viewport = cls.rviz.viewport
         # Subscribed only now: while rviz starts, its built-in 2D Nav Goal tool briefly
         # advertises PoseStamped on `goal` before the config replaces the tools, and a rospy
