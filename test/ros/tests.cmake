@@ -31,8 +31,9 @@ ${PYTHON_EXECUTABLE} ${KINEMATIC_COVERAGE_ROSTEST} --pkgdir=${PROJECT_SOURCE_DIR
 --results-filename test_ros_${name}.xml --results-base-dir \"${CATKIN_TEST_RESULTS_DIR}\" \
 ${PROJECT_SOURCE_DIR}/test/ros/${name}.test"
       DEPENDENCIES ${KC_NODE_TARGETS} ${PROJECT_NAME}_rviz_plugins)
+    # One GUI test at a time: xdotool drives the display's one pointer and keyboard.
     set_tests_properties(_ctest_${PROJECT_NAME}_rostest_test_ros_${name}.test PROPERTIES
-      SKIP_RETURN_CODE 77)
+      SKIP_RETURN_CODE 77 RESOURCE_LOCK display)
   endfunction()
   # Set Start, Set Goal and Activate clicked in rviz.
   kc_add_gui_rostest(rviz_tool)
