@@ -40,8 +40,8 @@ OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double w
 
 /// computeOffsetFreeArea of one free area at any distance up to a largest one, with the
 /// straight skeletons built once: OffsetPartJoiner offsets the same area at a dozen
-/// distances, and the skeletons are half the cost of each offset. The area must outlive
-/// this object.
+/// distances, and building the skeletons is a third or more of each offset. The area must
+/// outlive this object.
 class WallOffset {
  public:
   /// Builds the skeletons up to `max_distance` > 0. Throws as computeOffsetFreeArea does

@@ -75,6 +75,11 @@ void VisibilityGraph::allPairsCosts(AllPairs method) {
   } else {
     floydWarshall();
   }
+  // Both leave the upper triangle; the lower one mirrors it, symmetric bit for bit.
+  const std::size_t count = nodes_.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t j = 0; j < i; ++j) node_costs_[i * count + j] = node_costs_[j * count + i];
+  }
 }
 
 void VisibilityGraph::floydWarshall() {
@@ -97,14 +102,10 @@ void VisibilityGraph::floydWarshall() {
       row = row.min(via_row.tail(right) + to_via);
     });
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < i; ++j) node_costs_[i * n + j] = node_costs_[j * n + i];
-  }
 }
 
 void VisibilityGraph::dijkstraFromEveryNode() {
-  // The sources on every hardware thread, each writing its own row; the upper triangle is
-  // then mirrored, so that the costs are symmetric bit for bit.
+  // The sources on every hardware thread, each writing its own row.
   const std::size_t n = nodes_.size();
   parallelFor(n, [&](std::size_t source) {
     double* row = &node_costs_[source * n];
@@ -126,9 +127,6 @@ void VisibilityGraph::dijkstraFromEveryNode() {
       }
     }
   });
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < i; ++j) node_costs_[i * n + j] = node_costs_[j * n + i];
-  }
 }
 
 std::vector<Point2> VisibilityGraph::nodePath(int from, int to) const {
