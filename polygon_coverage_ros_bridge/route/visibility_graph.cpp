@@ -259,23 +259,13 @@ bool VisibilityGraph::visible(const Point2& a, const Point2& b) const {
 }
 
 std::vector<Point2> VisibilityGraph::shortestPath(const Point2& a, const Point2& b) const {
-  QueryPoint from = locate(a);
-  QueryPoint to = locate(b);
-  if (a == b) return {a};
-  if (straightInside(from, to)) return {a, b};
-  attachNodes(&from, false);
-  attachNodes(&to, false);
-  return pathBetween(from, to);
+  PointCache cache;
+  return shortestPath(a, b, &cache);
 }
 
 double VisibilityGraph::cost(const Point2& a, const Point2& b) const {
-  QueryPoint from = locate(a);
-  QueryPoint to = locate(b);
-  if (a == b) return 0.0;
-  if (straightInside(from, to)) return segment_cost_.of(a, b);
-  attachNodes(&from, false);
-  attachNodes(&to, false);
-  return bestRoute(from, to).cost;
+  PointCache cache;
+  return cost(a, b, &cache);
 }
 
 VisibilityGraph::QueryPoint& VisibilityGraph::cached(const Point2& p, bool attached,

@@ -19,10 +19,9 @@ namespace kinematic_coverage::core {
 /// mutually visible nodes, weighted by SegmentCost, so a route costs the sum of its
 /// segments' costs; all-pairs node costs are precomputed (Floyd-Warshall, or Dijkstra from
 /// every node on a sparse graph). A query point's route goes straight when the segment
-/// stays inside, else through the cheapest
-/// pair of nodes it and the other end see. Boundary points and the nodes themselves are
-/// valid query points. Points outside the polygon (beyond BoundaryGrid::tolerance())
-/// throw InvalidInputError.
+/// stays inside, else through the cheapest pair of nodes it and the other end see.
+/// Boundary points and the nodes themselves are valid query points. Points outside the polygon
+/// (beyond BoundaryGrid::tolerance()) throw InvalidInputError.
 ///
 /// For many queries, register points once (addQueryPoint: each point's visible nodes and
 /// its cost to every node are computed once), then queryCost / queryPath; costMatrix

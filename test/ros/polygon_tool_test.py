@@ -63,7 +63,8 @@ class PolygonToolTest(RvizTestCase):
         cls.status = Collector('coverage_planner/status', PlanStatus)
         cls.smoother_status = Collector('smooth_trajectory_generator/status', PlanStatus)
         cls.trajectory = Collector('trajectory', PoseArray)
-        cls.rviz = start_rviz(config_path, os.path.join(cls.artifact_dir, 'polygon_tool_rviz.log'), view)
+        log_path = os.path.join(cls.artifact_dir, 'polygon_tool_rviz.log')
+        cls.rviz = start_rviz(config_path, log_path, view)
         cls.addClassCleanup(cls.rviz.stop)
         # Subscribed once the window settled, as rviz_tool_test.py explains (2D Nav Goal).
         cls.polygon = Collector('polygon', PolygonWithHolesStamped)

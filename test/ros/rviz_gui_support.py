@@ -140,7 +140,8 @@ def start_rviz(config_path, log_path, view):
     """An Rviz on `config_path` whose render window settled (wait_for_render_window); a start
     that aborted on a signal is tried again, up to START_ATTEMPTS, its log kept beside
     `log_path` with the attempt's number. The caller stops the returned Rviz."""
-    for attempt in range(1, START_ATTEMPTS + 1):
+    attempt = 1
+    while True:
         rviz = Rviz(config_path, log_path)
         try:
             rviz.wait_for_render_window(view)
@@ -148,14 +149,13 @@ def start_rviz(config_path, log_path, view):
         except RvizAborted as error:
             if attempt == START_ATTEMPTS:
                 raise
-            kept = '%s.aborted-%d' % (log_path, attempt)
-            os.replace(log_path, kept)
+            os.replace(log_path, '%s.aborted-%d' % (log_path, attempt))
             print('rviz start %d aborted (%s); starting it again' % (attempt, error),
                   file=sys.stderr)
+            attempt += 1
         except Exception:
             rviz.stop()
             raise
-    raise AssertionError('unreachable')
 
 
 class Rviz:
