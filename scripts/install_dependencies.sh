@@ -17,6 +17,7 @@ packages=(
   libtf2-ros-dev libtf2-geometry-msgs-dev tf2-tools rosbash
   python3-rosnode python3-roswtf python3-rosbag
   libcgal-dev libeigen3-dev libyaml-cpp-dev libgeographiclib-dev libgtest-dev libbenchmark-dev libcairo2-dev
+  libpolyclipping-dev
   librviz-dev rviz pluginlib-dev qtbase5-dev
   xvfb xauth xdotool x11-utils imagemagick clang-tidy catkin-lint
 )

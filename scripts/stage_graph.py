@@ -29,9 +29,7 @@ LOWER_STAGES = {'geometry', 'base', 'validation', 'decomposition', 'sweeps', 'ro
                 'path', 'coverage', 'repair', 'smoothing', 'trajectory', 'plot', 'simulation',
                 'replanning'}
 FLOORS = {
-    # The wall offset builds its rings' skeletons on every hardware thread (base's
-    # header-only parallelFor); the rest of base is above geometry.
-    'polygon_coverage_ros_bridge/geometry': {'base'},
+    'polygon_coverage_ros_bridge/geometry': set(),
     'polygon_coverage_ros_bridge/base': {'geometry'},
     'polygon_coverage_ros_bridge/validation': {'geometry', 'base'},
     'polygon_coverage_ros_bridge/decomposition': {'geometry', 'base'},

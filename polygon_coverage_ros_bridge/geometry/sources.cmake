@@ -6,5 +6,6 @@ kc_add_stage_library(kc_geometry
     polygon_coverage_ros_bridge/geometry/wall_offset.cpp
     polygon_coverage_ros_bridge/geometry/region_intersection.cpp
   CGAL)
-# The wall offset builds its rings' skeletons on every hardware thread (base/parallel_for.h).
-target_link_libraries(kc_geometry PUBLIC Threads::Threads)
+# The wall offset's mitred offsets and Boolean operations: Clipper 1 (libpolyclipping-dev).
+pkg_check_modules(POLYCLIPPING REQUIRED IMPORTED_TARGET polyclipping)
+target_link_libraries(kc_geometry PRIVATE PkgConfig::POLYCLIPPING)

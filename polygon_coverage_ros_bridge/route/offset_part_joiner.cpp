@@ -19,17 +19,19 @@ namespace {
 /// passes a pinch point, and offsets at smaller distances add nothing but cost.
 constexpr double kMinClearanceShare = 0.02;
 /// A bracket of offset distances in which the parts' grouping changes is halved this many
-/// times: the gap's clearance is found to (1 - kMinClearanceShare) / 32, about 3 % of the
-/// wall distance, with about 5 offsets per gap.
-constexpr int kRefinementDepth = 5;
+/// times: the gap's clearance is found to (1 - kMinClearanceShare) / 1024, about 0.1 % of
+/// the wall distance, with about 10 offsets per gap (milliseconds each); the transit, the
+/// shortest path in the offset at that distance, runs that close to the gap's middle.
+constexpr int kRefinementDepth = 10;
 /// Half-width of a transit corridor, as a share of its path's clearance: the corridor
 /// stays inside the free area, and a transit in it keeps 86 % of the path's clearance
 /// (the corridor's corners lie at sqrt(2) half-widths from the path).
 constexpr double kCorridorShare = 0.1;
 /// Rounding of the Boolean operations' results, relative to the map's scale.
 constexpr double kRelativeVertexTolerance = 1e-9;
-/// Free areas with more vertices than this are joined in windows first: each offset of the
-/// whole area costs seconds there, while most gaps are short straits beside their parts.
+/// Free areas with more vertices than this are joined in windows first: a gap's path in an
+/// offset of the whole area may need a visibility graph of the whole lake there (seconds),
+/// while most gaps are short straits beside their parts.
 constexpr std::size_t kWindowedJoinVertices = 2000;
 /// A part's window reaches this many wall distances beyond its bounding box (a strait up
 /// to about 6 wall distances long is found in it; a longer one on the whole area); the
@@ -221,8 +223,8 @@ std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<Pa
   for (std::size_t k = 0; k < parts.size(); ++k) {
     upper.component_of_part.push_back(static_cast<int>(owner[k]));
   }
-  // Every level lies below the wall distance: the skeletons are built once up to it.
-  const WallOffset offset(area, wall_distance);
+  // Every level is an offset of the same area: its rings converted once.
+  const WallOffset offset(area);
   const Level lower = levelAt(offset, parts, kMinClearanceShare * wall_distance);
   std::vector<Merge> merges;
   refine(offset, parts, lower, upper, kRefinementDepth, &merges);

