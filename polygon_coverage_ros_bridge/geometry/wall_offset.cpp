@@ -31,14 +31,15 @@ class IntegerFrame {
   }
   /// A length beyond which every offset of the area is empty (the hull's extent).
   double extent() const { return extent_; }
-  ClipperLib::Path toPath(const Ring& ring, bool counter_clockwise) const {
+  /// The ring counter-clockwise (a hole too: it is offset on its own, outward).
+  ClipperLib::Path toPath(const Ring& ring) const {
     ClipperLib::Path path;
     path.reserve(ring.size());
     for (const Point2& p : ring) {
       path.emplace_back(static_cast<ClipperLib::cInt>(std::llround(p.x() * scale_)),
                         static_cast<ClipperLib::cInt>(std::llround(p.y() * scale_)));
     }
-    if (ClipperLib::Orientation(path) != counter_clockwise) ClipperLib::ReversePath(path);
+    if (!ClipperLib::Orientation(path)) ClipperLib::ReversePath(path);
     return path;
   }
   Ring toRing(const ClipperLib::Path& path, bool counter_clockwise) const {
@@ -65,8 +66,8 @@ ClipperLib::Paths outlines(const ClipperLib::PolyTree& tree) {
   return result;
 }
 
-/// The mitred offset of one ring: inward by `distance` for the hull (counter-clockwise),
-/// outward for a hole.
+/// The mitred offset of one counter-clockwise ring by `delta` integer units: a negative one
+/// shrinks it (the hull), a positive one grows it (a hole).
 ClipperLib::Paths offsetRing(const ClipperLib::Path& ring, double delta) {
   ClipperLib::ClipperOffset offset(kMiterLimit);
   offset.AddPath(ring, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
@@ -114,9 +115,8 @@ struct WallOffset::Rings {
 
 WallOffset::WallOffset(const PolygonWithHoles& free_area)
     : rings_(std::make_unique<Rings>(Rings{IntegerFrame(free_area), {}, {}})) {
-  rings_->hull = rings_->frame.toPath(free_area.hull, true);
-  for (const Ring& hole : free_area.holes)
-    rings_->holes.push_back(rings_->frame.toPath(hole, true));
+  rings_->hull = rings_->frame.toPath(free_area.hull);
+  for (const Ring& hole : free_area.holes) rings_->holes.push_back(rings_->frame.toPath(hole));
 }
 
 WallOffset::~WallOffset() = default;
