@@ -70,6 +70,10 @@ struct GtspOptions {
   /// Generations without improvement of the best tour after which the heuristic stops;
   /// 0 chooses it from the cluster count.
   int stall_generations = 0;
+  /// Relative improvement of the best tour that every stall_generations generations must
+  /// bring for the heuristic to go on (0: any improvement): bounds the long tail of ever
+  /// smaller gains on instances of hundreds of clusters.
+  double min_stall_gain = 0.0;
   /// Nearest clusters that local search tries as new neighbours of a cluster; 0 = default.
   int neighbour_count = 0;
   /// Optional warm start for the heuristic: a valid tour in GtspSolution::nodes order.

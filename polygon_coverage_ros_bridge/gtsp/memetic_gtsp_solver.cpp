@@ -244,14 +244,22 @@ GtspSolution MemeticGtspSolver::solve() {
   std::vector<Individual> population = initialPopulation(population_size, trivial);
   if (trivial) return toSolution(population.front());
   int stall = 0;
+  // The best cost after each generation, for the gain over the last stall_limit ones.
+  std::vector<double> best_costs = {population.front().cost};
   while (stall < stall_limit && Clock::now() < deadline_) {
     const double previous_best = population.front().cost;
     nextGeneration(population, population_size);
-    if (population.front().cost <
-        previous_best - kRelativeCostTolerance * std::max(1.0, previous_best)) {
+    const double best = population.front().cost;
+    if (best < previous_best - kRelativeCostTolerance * std::max(1.0, previous_best)) {
       stall = 0;
     } else {
       ++stall;
+    }
+    best_costs.push_back(best);
+    const std::size_t window = static_cast<std::size_t>(stall_limit);
+    if (options_.min_stall_gain > 0.0 && best_costs.size() > window &&
+        best_costs[best_costs.size() - 1 - window] - best < options_.min_stall_gain * best) {
+      break;
     }
   }
   return toSolution(population.front());

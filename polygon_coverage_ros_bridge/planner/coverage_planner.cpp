@@ -43,6 +43,11 @@ constexpr int kExactClusterLimit = 14;
 /// instead of 15-19 s (60 s, its time cap, with neither), for tours 0.1-0.4 % costlier than
 /// a population of 100 finds. Only instances of more than 80 cells have a larger default.
 constexpr int kGtspMaxPopulation = 50;
+/// The memetic GTSP solver stops when its last stall generations (20 + cells / 3, 30 to
+/// 80) made the best tour less than this share cheaper: on shoreline maps of 230 to 370
+/// trapezoidal cells, half the solving time (17.7 -> 8.4 s, 4.9 -> 2.5 s) for tours at
+/// most 0.08 % costlier; where gains stop sooner, as before.
+constexpr double kGtspMinStallGain = 1e-3;
 /// With cell_joining longest_overlap, a map whose Choset decomposition has at most this many
 /// cells is planned with those cells too, and the cheaper tour kept: on small maps the
 /// extra cells can let the tour turn back sooner (a 30 m lake with two islands: 7 % cheaper
@@ -546,6 +551,7 @@ GtspSolution solveStage(const PlanningRun& run, const GtspInstance& instance) {
   options.exact_cluster_limit = kExactClusterLimit;
   options.max_population = kGtspMaxPopulation;
   options.focused_search = true;
+  options.min_stall_gain = kGtspMinStallGain;
   const GtspSolution solution = solveGtsp(instance, options);
   std::ostringstream summary;
   summary << "visiting order of " << instance.clusters.size() - 2 << " cells, cost "

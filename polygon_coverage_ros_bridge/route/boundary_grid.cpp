@@ -248,6 +248,12 @@ bool BoundaryGrid::directionFree(int cluster, const Point2& direction,
   return free;
 }
 
+bool BoundaryGrid::runsIntoCorner(int cluster, const Point2& direction) const {
+  const double length = direction.norm();
+  return clusters_[cluster].ray_angles.size() == 2 && length > 0.0 &&
+         !directionFree(cluster, direction, angleWithin(tolerance_, length));
+}
+
 bool BoundaryGrid::passesInsideConvexCorner(int cluster, const Point2& a, const Point2& b) const {
   const Cluster& c = clusters_[cluster];
   if (c.bend || c.ray_angles.size() != 2) return false;
@@ -321,11 +327,14 @@ bool BoundaryGrid::segmentInside(const Point2& a, const Contact& a_contact, cons
         (side_s < -side_tolerance && side_t < -side_tolerance)) {
       return true;
     }
-    // A vertex on the open segment: both directions must be free there. The vertex lies
-    // up to the tolerance off the segment's line, so each part, from the vertex to an
-    // end, may deviate from a ray by the tolerance over that part's own length: near an
-    // end this angle is large (a boundary end just past a corner sees along the corner's
-    // other edge) while the part still strays at most the tolerance from the boundary.
+    // A vertex on the open segment: the directions from it to both ends must be free
+    // there. The vertex lies up to the tolerance off the segment's line, so each part,
+    // from the vertex to an end, may deviate from a ray by the tolerance over that part's
+    // own length: near an end this angle is large (a boundary end just past a corner sees
+    // along the corner's other edge) while the part still strays at most the tolerance
+    // from the boundary. Measured from the vertex itself, not along the segment: an end
+    // just past a reflex corner, on its edge, lies along that edge's ray from the corner
+    // although the segment's direction, passing the corner within the tolerance, does not.
     if (std::abs(side_s) <= side_tolerance) {
       const double along = (s - a).dot(d);
       const double to_a = (s - a).norm();
@@ -333,8 +342,8 @@ bool BoundaryGrid::segmentInside(const Point2& a, const Contact& a_contact, cons
       if (along > 0.0 && along < length_sq && to_a > tolerance_ && to_b > tolerance_) {
         const int k = start_cluster_[e];
         if (!passesInsideConvexCorner(k, a, b) &&
-            (!directionFree(k, d, angleWithin(tolerance_, to_b)) ||
-             !directionFree(k, -d, angleWithin(tolerance_, to_a)))) {
+            (!directionFree(k, b - s, angleWithin(tolerance_, to_b)) ||
+             !directionFree(k, a - s, angleWithin(tolerance_, to_a)))) {
           return false;
         }
       }

@@ -56,6 +56,12 @@ class BoundaryGrid {
   /// ring's edge. Returned as vertex clusters.
   std::vector<int> bendClusters() const;
 
+  /// True when the cluster is one corner (two edges, one wedge of wall) and the ray from it
+  /// along `direction` (its length that of the segment it stands for) starts into that wall,
+  /// clear of both edges' rays by more than the tolerance over that length. False at pinch
+  /// points, where a route may pass between walls.
+  bool runsIntoCorner(int cluster, const Point2& direction) const;
+
   /// The position of a vertex cluster (the coinciding vertices' first occurrence).
   const Point2& clusterPosition(int cluster) const { return clusters_[cluster].position; }
 

@@ -35,6 +35,10 @@ class SegmentCost {
   /// The cost of the straight segment from a to b.
   double of(const Point2& a, const Point2& b) const;
 
+  /// True when a longer segment always costs more ("distance", "time"; not "waypoints"):
+  /// a cheapest route then bends only where it wraps around a wall.
+  bool increasesWithLength() const { return cost_function_ != CostFunction::kWaypoints; }
+
   /// The sum of the costs of the path's segments (0 for fewer than two points).
   double pathCost(const std::vector<Point2>& path) const;
 

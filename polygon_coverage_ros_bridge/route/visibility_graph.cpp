@@ -27,7 +27,7 @@ std::string describe(const Point2& p) {
 
 VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost& segment_cost,
                                  AllPairs all_pairs)
-    : grid_(area), segment_cost_(segment_cost) {
+    : grid_(area), segment_cost_(segment_cost), tangent_only_(segment_cost.increasesWithLength()) {
   for (int cluster : grid_.bendClusters()) {
     nodes_.push_back(grid_.clusterPosition(cluster));
     node_contacts_.push_back({cluster, {}});
@@ -40,6 +40,7 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
     visible[u].resize(n - u, 0);
     for (std::size_t w = u + 1; w < n; ++w) {
       visible[u][w - u] =
+          mayBendAt(u, nodes_[w]) && mayBendAt(w, nodes_[u]) &&
           grid_.segmentInside(nodes_[u], node_contacts_[u], nodes_[w], node_contacts_[w]);
     }
   });
@@ -56,6 +57,10 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
     }
   }
   allPairsCosts(all_pairs);
+}
+
+bool VisibilityGraph::mayBendAt(std::size_t k, const Point2& other) const {
+  return !tangent_only_ || !grid_.runsIntoCorner(node_contacts_[k].cluster, nodes_[k] - other);
 }
 
 std::size_t VisibilityGraph::edgeCount() const {
@@ -162,6 +167,9 @@ void VisibilityGraph::attachNodes(QueryPoint* point, bool with_node_costs) const
   point->seen_nodes.clear();
   point->seen_costs.clear();
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
+    if (point->contact.cluster != node_contacts_[k].cluster && !mayBendAt(k, point->position)) {
+      continue;
+    }
     if (grid_.segmentInside(point->position, point->contact, nodes_[k], node_contacts_[k])) {
       point->seen_nodes.push_back(static_cast<int>(k));
       point->seen_costs.push_back(segment_cost_.of(point->position, nodes_[k]));

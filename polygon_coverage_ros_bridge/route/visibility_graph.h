@@ -16,12 +16,13 @@ namespace kinematic_coverage::core {
 /// area by a visibility graph; Thesis section 3.1, its reference [10]).
 ///
 /// Nodes are the vertices a route may bend at (reflex corners, pinch points); edges join
-/// mutually visible nodes, weighted by SegmentCost, so a route costs the sum of its
-/// segments' costs; all-pairs node costs are precomputed (Floyd-Warshall, or Dijkstra from
-/// every node on a sparse graph). A query point's route goes straight when the segment
-/// stays inside, else through the cheapest pair of nodes it and the other end see.
-/// Boundary points and the nodes themselves are valid query points. Points outside the polygon
-/// (beyond BoundaryGrid::tolerance()) throw InvalidInputError.
+/// mutually visible nodes, weighted by SegmentCost (with a cost that increases with length,
+/// only the pairs whose line is tangent to the walls at both nodes: mayBendAt), so a route costs
+/// the sum of its segments' costs; all-pairs node costs are precomputed (Floyd-Warshall, or
+/// Dijkstra from every node on a sparse graph). A query point's route goes straight when the
+/// segment stays inside, else through the cheapest pair of nodes it and the other end see. Boundary
+/// points and the nodes themselves are valid query points. Points outside the polygon (beyond
+/// BoundaryGrid::tolerance()) throw InvalidInputError.
 ///
 /// For many queries, register points once (addQueryPoint: each point's visible nodes and
 /// its cost to every node are computed once), then queryCost / queryPath; costMatrix
@@ -121,6 +122,12 @@ class VisibilityGraph {
   void floydWarshall();
   void dijkstraFromEveryNode();
 
+  /// True unless node k is a single corner and a route from `other` through it would run on
+  /// into its wall: then the route, bending away from the wall, has a cheaper shortcut
+  /// beside the node, so a cheapest route never comes that way when costs increase with
+  /// length (a taut route is tangent to the walls at its bends: Lee's reduced visibility
+  /// graph).
+  bool mayBendAt(std::size_t k, const Point2& other) const;
   QueryPoint locate(const Point2& p) const;
   /// The point in `cache`, located (and with its visible nodes when `attached`).
   QueryPoint& cached(const Point2& p, bool attached, PointCache* cache) const;
@@ -134,6 +141,7 @@ class VisibilityGraph {
 
   BoundaryGrid grid_;
   SegmentCost segment_cost_;
+  bool tangent_only_;  ///< segment_cost_ increases with length: mayBendAt prunes
   std::vector<Point2> nodes_;
   std::vector<BoundaryGrid::Contact> node_contacts_;
   std::vector<double> node_costs_;  ///< nodeCount() x nodeCount(), row-major

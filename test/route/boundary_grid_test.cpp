@@ -163,6 +163,34 @@ TEST(BoundaryGrid, BoundaryEndJustPastAConvexCornerSeesAlongTheOtherEdge) {
   EXPECT_FALSE(grid.segmentInside(farther, {40, 19}));
 }
 
+TEST(BoundaryGrid, BoundaryEndJustPastAReflexCornerSeesAcrossIt) {
+  // The offset free area of CoveragePlanner.LanesThroughAcuteCornersEndInsideTheOffsetArea:
+  // a lane end on the edge leaving the reflex corner p, 2.7e-8 m past it (beyond the
+  // corner's tolerance), and a far end whose segment passes p on its free side within the
+  // tolerance. Judged along the segment, the piece from p to the end pointed into p's
+  // wall; from p itself it runs along the edge (the regression: no straight leg, and with
+  // the tangent visibility graph no route at all).
+  const PolygonWithHoles area = {{{15.830035230078465, 15.11743803385616},
+                                  {17.738827395950466, 15.753702089146827},
+                                  {16.305415041149899, 15.753702089146827},
+                                  {12.80541504114899, 24.753702089146827},
+                                  {6.5810833464674943, 24.753702089146827},
+                                  {14.746297910853173, 16.199667783600489},
+                                  {14.746297910853173, 15.223340278618707},
+                                  {14.943317848464176, 15.026320341008613},
+                                  {15.366007046015511, 14.885423941824229}},
+                                 {}};
+  const BoundaryGrid grid(area);
+  const Point2 end(15.830035256038965, 15.11743804250966);
+  const Point2 far_end(6.6317831430797565, 24.753702089146827);
+  ASSERT_EQ(grid.contactOf(end).cluster, -1);
+  ASSERT_GT((end - area.hull.front()).norm(), grid.tolerance());
+  EXPECT_TRUE(grid.segmentInside(end, far_end));
+  EXPECT_TRUE(grid.segmentInside(far_end, end));
+  // Across the corner's wall, from the same end: outside.
+  EXPECT_FALSE(grid.segmentInside(end, {14.9, 15.0}));
+}
+
 TEST(BoundaryGrid, BoundaryEndInAReflexCornersSliverGoesToBothFreeSides) {
   // Near the tip of a thin wall spike, a point on one side is within the tolerance of the
   // other side too; the free directions there are the union of the two edges' free sides

@@ -398,6 +398,40 @@ TEST(VisibilityGraph, DijkstraAndFloydWarshallAgree) {
   }
 }
 
+// A noisy shoreline's reflex corners mostly face into the wall: with a cost that grows
+// with length, only the node pairs whose line is tangent to the walls at both nodes are
+// edges (under half the pairs that see each other), and the routes stay the
+// shortest of brute force over every vertex pair; with "waypoints" every visible pair is.
+TEST(VisibilityGraph, OnlyPairsTangentAtBothNodesAreEdgesWhereCostsGrowWithLength) {
+  std::mt19937 rng(41);
+  const PolygonWithHoles area = testing::jaggedStarMap(rng, 150, 80.0);
+  const VisibilityGraph tangent(area, costOf("distance"));
+  const VisibilityGraph every(area, costOf("waypoints"));
+  ASSERT_EQ(tangent.nodeCount(), every.nodeCount());
+  ASSERT_GT(tangent.nodeCount(), 50u);
+  std::size_t visible_pairs = 0;
+  for (std::size_t u = 0; u < every.nodeCount(); ++u) {
+    for (std::size_t w = u + 1; w < every.nodeCount(); ++w) {
+      visible_pairs += every.visible(every.node(u), every.node(w));
+    }
+  }
+  EXPECT_EQ(every.edgeCount(), visible_pairs);
+  EXPECT_LT(2 * tangent.edgeCount(), visible_pairs);
+  const std::vector<Point2> points = testing::queryPoints(rng, area, 12, 12, 6);
+  const testing::BruteForceRouter brute_force(area, points, 1e-9);
+  int detours = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = i + 1; j < points.size(); ++j) {
+      const double cost = tangent.cost(points[i], points[j]);
+      EXPECT_NEAR(cost, brute_force.distance(i, j), 1e-6 * (1 + cost));
+      const std::vector<Point2> path = tangent.shortestPath(points[i], points[j]);
+      expectPathInside(area, path);
+      detours += path.size() > 2;
+    }
+  }
+  EXPECT_GT(detours, 100);
+}
+
 TEST(VisibilityGraph, CheckerboardOfHolesTouchingAtCorners) {
   // Square holes touching diagonally: every inner corner is a pinch point that routes
   // may pass through; compared with brute force over all vertices.
