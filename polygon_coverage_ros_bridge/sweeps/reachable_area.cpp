@@ -157,13 +157,15 @@ class ParabolaEnvelope {
 };
 
 /// The two passes of dilateMask with vertical distances stored as `Distance`, an integer
-/// type that holds `cap`, so that the distance grid stays small.
+/// type that holds `cap`, so that the distance grid stays small: one mask per reach (in
+/// cells, centre to centre; `cap` beyond the largest), all from the same distances.
 template <typename Distance>
-CellMask dilateWithin(const CoverageRaster& raster, const CellMask& mask, int cap, double reach) {
+std::vector<CellMask> dilateWithin(const CoverageRaster& raster, const CellMask& mask, int cap,
+                                   const std::vector<double>& reaches) {
   const int columns = raster.columns();
   const int rows = raster.rows();
-  const double reach_squared = reach * reach;
-  const int reach_columns = static_cast<int>(std::min(reach, static_cast<double>(columns)));
+  const double largest = *std::max_element(reaches.begin(), reaches.end());
+  const int reach_columns = static_cast<int>(std::min(largest, static_cast<double>(columns)));
 
   // Pass 1, along the columns (row by row, so memory is read in order): cells to the
   // nearest set cell in the same column, capped.
@@ -191,7 +193,9 @@ CellMask dilateWithin(const CoverageRaster& raster, const CellMask& mask, int ca
   // (column - q)^2 + vertical(q)^2 over the columns q with a set cell within reach. Cells
   // with vertical 0 are set; inside a run of them only the run's ends can be nearest to a
   // cell outside the run, so the parabolas of the run's inside are left out.
-  CellMask grown(raster.cellCount(), 0);
+  std::vector<CellMask> grown(reaches.size(), CellMask(raster.cellCount(), 0));
+  std::vector<double> reaches_squared;
+  for (double reach : reaches) reaches_squared.push_back(reach * reach);
   std::vector<int> positions;
   std::vector<double> heights;
   ParabolaEnvelope envelope;
@@ -210,14 +214,21 @@ CellMask dilateWithin(const CoverageRaster& raster, const CellMask& mask, int ca
       positions.push_back(column);
       heights.push_back(static_cast<double>(v) * v);
     }
-    std::uint8_t* out = grown.data() + raster.index(row, 0);
-    for (int column = 0; column < columns; ++column) out[column] = line[column] == 0 ? 1 : 0;
+    for (CellMask& out : grown) {
+      std::uint8_t* out_row = out.data() + raster.index(row, 0);
+      for (int column = 0; column < columns; ++column) out_row[column] = line[column] == 0 ? 1 : 0;
+    }
     if (!any_unset || positions.empty()) continue;
     envelope.build(positions, heights);
     const int first = std::max(0, positions.front() - reach_columns);
     const int last = std::min(columns - 1, positions.back() + reach_columns);
+    const std::size_t row_start = raster.index(row, 0);
     for (int column = first; column <= last; ++column) {
-      if (line[column] != 0 && envelope.valueAt(column) <= reach_squared) out[column] = 1;
+      if (line[column] == 0) continue;
+      const double value = envelope.valueAt(column);
+      for (std::size_t k = 0; k < grown.size(); ++k) {
+        if (value <= reaches_squared[k]) grown[k][row_start + column] = 1;
+      }
     }
   }
   return grown;
@@ -226,24 +237,41 @@ CellMask dilateWithin(const CoverageRaster& raster, const CellMask& mask, int ca
 }  // namespace
 
 CellMask dilateMask(const CoverageRaster& raster, const CellMask& mask, double radius) {
+  return std::move(dilateMask(raster, mask, std::vector<double>{radius}).front());
+}
+
+std::vector<CellMask> dilateMask(const CoverageRaster& raster, const CellMask& mask,
+                                 const std::vector<double>& radii) {
   requireSize(raster, mask, "dilated");
-  if (!(radius >= 0.0) || !std::isfinite(radius)) {
-    std::ostringstream message;
-    message << "coverage raster: dilation radius " << radius << " must be finite and >= 0";
-    throw InvalidInputError(message.str());
+  std::vector<double> reaches;  // of the positive radii, in cells, centre to centre
+  for (double radius : radii) {
+    if (!(radius >= 0.0) || !std::isfinite(radius)) {
+      std::ostringstream message;
+      message << "coverage raster: dilation radius " << radius << " must be finite and >= 0";
+      throw InvalidInputError(message.str());
+    }
+    if (radius > 0.0) reaches.push_back(radius / raster.cellSize() + 0.5);
   }
-  if (radius == 0.0) return mask;
-  const double reach = radius / raster.cellSize() + 0.5;  // in cells, centre to centre
-  // Vertical distances of `cap` cells or more are out of reach; capping keeps them small.
-  const int cap =
-      static_cast<int>(std::min(std::floor(reach) + 1.0, static_cast<double>(raster.rows())));
-  if (cap <= std::numeric_limits<std::uint8_t>::max()) {
-    return dilateWithin<std::uint8_t>(raster, mask, cap, reach);
+  std::vector<CellMask> grown;
+  if (!reaches.empty()) {
+    // Vertical distances of `cap` cells or more are out of every reach; capping keeps them
+    // small.
+    const double largest = *std::max_element(reaches.begin(), reaches.end());
+    const int cap =
+        static_cast<int>(std::min(std::floor(largest) + 1.0, static_cast<double>(raster.rows())));
+    if (cap <= std::numeric_limits<std::uint8_t>::max()) {
+      grown = dilateWithin<std::uint8_t>(raster, mask, cap, reaches);
+    } else if (cap <= std::numeric_limits<std::uint16_t>::max()) {
+      grown = dilateWithin<std::uint16_t>(raster, mask, cap, reaches);
+    } else {
+      grown = dilateWithin<std::int32_t>(raster, mask, cap, reaches);
+    }
   }
-  if (cap <= std::numeric_limits<std::uint16_t>::max()) {
-    return dilateWithin<std::uint16_t>(raster, mask, cap, reach);
-  }
-  return dilateWithin<std::int32_t>(raster, mask, cap, reach);
+  // Radius 0 gives the mask itself.
+  std::vector<CellMask> result;
+  std::size_t next = 0;
+  for (double radius : radii) result.push_back(radius > 0.0 ? std::move(grown[next++]) : mask);
+  return result;
 }
 
 CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,
@@ -265,16 +293,29 @@ CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,
 CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,
                        const CellMask& offset_free_area,
                        const std::vector<PolygonWithHoles>& offset_parts, double footprint_length) {
-  CellMask reachable = reachableArea(raster, free_area, offset_free_area, footprint_length);
   const double reach = 0.5 * footprint_length;
-  if (reach == 0.0) return reachable;
+  if (reach == 0.0) return reachableArea(raster, free_area, offset_free_area, footprint_length);
+  requireSize(raster, free_area, "free area");
+  requireSize(raster, offset_free_area, "offset free area");
+  if (!std::isfinite(reach) || reach < 0.0) {
+    std::ostringstream message;
+    message << "coverage: footprint length " << footprint_length << " must be finite and >= 0";
+    throw InvalidInputError(message.str());
+  }
   // Grown by a cell less, every cell's centre lies within the reach of a set cell's centre
   // (inside the polygons); grown by a cell more, the cells left out lie farther than the
   // reach plus three quarters of a cell from the polygons (every point of which lies within
-  // half a cell diagonal of a set cell's centre). Only the cells between are measured.
+  // half a cell diagonal of a set cell's centre). Only the cells between are measured. The
+  // three from one distance transform.
   const double cell = raster.cellSize();
-  const CellMask surely = dilateMask(raster, offset_free_area, std::max(0.0, reach - cell));
-  const CellMask maybe = dilateMask(raster, offset_free_area, reach + cell);
+  std::vector<CellMask> grown =
+      dilateMask(raster, offset_free_area, {reach, std::max(0.0, reach - cell), reach + cell});
+  CellMask reachable = std::move(grown[0]);
+  for (std::size_t i = 0; i < reachable.size(); ++i) {
+    reachable[i] = (reachable[i] != 0 && free_area[i] != 0) ? 1 : 0;
+  }
+  const CellMask& surely = grown[1];
+  const CellMask& maybe = grown[2];
   const EdgeBuckets edges(offset_parts, reach);
   for (std::size_t i = 0; i < reachable.size(); ++i) {
     if (free_area[i] == 0 || maybe[i] == 0 || surely[i] != 0) continue;

@@ -15,6 +15,11 @@ namespace kinematic_coverage::core {
 /// Throws InvalidInputError for a negative or non-finite radius or a mask of the wrong size.
 CellMask dilateMask(const CoverageRaster& raster, const CellMask& mask, double radius);
 
+/// dilateMask for each of `radii`, from one distance transform (the same masks as one call
+/// per radius, in the time of about one). Throws as above.
+std::vector<CellMask> dilateMask(const CoverageRaster& raster, const CellMask& mask,
+                                 const std::vector<double>& radii);
+
 /// The reachable area: the free cells within half a footprint
 /// length of the offset free area; with a line sensor (length 0) the offset free area.
 /// Throws InvalidInputError for a negative or non-finite length or masks of the wrong size.

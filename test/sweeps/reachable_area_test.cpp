@@ -43,6 +43,29 @@ TEST(ReachableArea, DilationMatchesBruteForce) {
   }
 }
 
+TEST(ReachableArea, SeveralRadiiAtOnceAreTheMasksOfOneCallEach) {
+  // One distance transform, capped for the largest radius, thresholded at each: the same
+  // masks as one call per radius (whose cap follows its own radius), 0 giving the mask.
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const CoverageRaster raster({3.0, -2.0}, 0.05, 120, 400);
+  for (int trial = 0; trial < 6; ++trial) {
+    CellMask mask(raster.cellCount(), 0);
+    const double density = 0.0005 + 0.01 * unit(rng);
+    for (auto& cell : mask) cell = unit(rng) < density ? 1 : 0;
+    const std::vector<double> radii = {0.3 * unit(rng), 0.0, 15.0 * unit(rng), 3.0 * unit(rng)};
+    const std::vector<CellMask> grown = dilateMask(raster, mask, radii);
+    ASSERT_EQ(grown.size(), radii.size());
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+      EXPECT_EQ(grown[k], dilateMask(raster, mask, radii[k]))
+          << "trial " << trial << " radius " << k;
+    }
+    EXPECT_EQ(grown[1], mask);
+  }
+  EXPECT_THROW(dilateMask(raster, CellMask(raster.cellCount(), 0), {1.0, -1.0}), InvalidInputError);
+  EXPECT_TRUE(dilateMask(raster, CellMask(raster.cellCount(), 0), std::vector<double>{}).empty());
+}
+
 TEST(ReachableArea, LongReachMatchesBruteForce) {
   // A reach of hundreds of cells (wider distance storage).
   const CoverageRaster raster({0.0, 0.0}, 0.01, 300, 290);
