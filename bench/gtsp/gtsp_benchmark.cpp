@@ -79,6 +79,7 @@ int main(int argc, char** argv) {
   int seeds = 5;
   GtspOptions options;
   options.time_limit_s = 120.0;
+  options.threads = 1;  // one thread, as the published solvers' times it is read against
   for (int i = 1; i < argc; ++i) {
     const std::string word = argv[i];
     if (i + 1 >= argc) {

@@ -76,6 +76,10 @@ struct GtspOptions {
   double min_stall_gain = 0.0;
   /// Nearest clusters that local search tries as new neighbours of a cluster; 0 = default.
   int neighbour_count = 0;
+  /// Threads on which the heuristic improves a generation's children (0: one per hardware
+  /// thread). The tour found does not depend on it: children are drawn in one order and
+  /// each local search depends on its child only.
+  int threads = 0;
   /// Optional warm start for the heuristic: a valid tour in GtspSolution::nodes order.
   std::vector<int> warm_start;
 };

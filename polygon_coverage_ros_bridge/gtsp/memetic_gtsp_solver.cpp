@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "polygon_coverage_ros_bridge/base/parallel_for.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -45,9 +48,25 @@ MemeticGtspSolver::MemeticGtspSolver(const GtspInstance& instance, const GtspOpt
     : instance_(instance),
       options_(options),
       anchor_cluster_(chooseAnchor(instance)),
-      random_(options.seed),
-      search_(instance, anchor_cluster_,
-              options.neighbour_count > 0 ? options.neighbour_count : kDefaultNeighbourCount) {}
+      random_(options.seed) {
+  const std::size_t threads =
+      parallelThreadCount(std::numeric_limits<std::size_t>::max(),
+                          static_cast<std::size_t>(std::max(options.threads, 0)));
+  searches_.reserve(threads);
+  searches_.emplace_back(
+      instance, anchor_cluster_,
+      options.neighbour_count > 0 ? options.neighbour_count : kDefaultNeighbourCount);
+  while (searches_.size() < threads) searches_.push_back(searches_.front());
+}
+
+void MemeticGtspSolver::improveAll(std::vector<Individual>& individuals,
+                                   const std::vector<std::vector<char>>* focuses) {
+  parallelForOnThreads(
+      individuals.size(), searches_.size(), [&](std::size_t i, std::size_t thread) {
+        individuals[i].cost = searches_[thread].improve(
+            individuals[i].sequence, deadline_, focuses != nullptr ? &(*focuses)[i] : nullptr);
+      });
+}
 
 std::vector<int> MemeticGtspSolver::randomSequence() {
   std::vector<int> interior;
@@ -75,7 +94,7 @@ std::vector<int> MemeticGtspSolver::randomSequence() {
 std::vector<int> MemeticGtspSolver::sequenceFromTour(const std::vector<int>& tour) const {
   if (instance_.isPath()) return tour;
   std::size_t first = 0;
-  while (search_.clusterOf(tour[first]) != anchor_cluster_) ++first;
+  while (searches_.front().clusterOf(tour[first]) != anchor_cluster_) ++first;
   std::vector<int> sequence;
   for (std::size_t i = 0; i <= tour.size(); ++i)
     sequence.push_back(tour[(first + i) % tour.size()]);
@@ -94,14 +113,14 @@ std::vector<int> MemeticGtspSolver::crossover(const std::vector<int>& first,
   std::vector<bool> used(instance_.clusters.size(), false);
   for (std::size_t i = a; i <= b; ++i) {
     child[i + 1] = first[i + 1];
-    used[search_.clusterOf(first[i + 1])] = true;
+    used[searches_.front().clusterOf(first[i + 1])] = true;
   }
   std::size_t source = (b + 1) % interior;
   for (std::size_t k = 0; k < interior - (b - a + 1); ++k) {
     const std::size_t target = (b + 1 + k) % interior;
-    while (used[search_.clusterOf(second[source + 1])]) source = (source + 1) % interior;
+    while (used[searches_.front().clusterOf(second[source + 1])]) source = (source + 1) % interior;
     child[target + 1] = second[source + 1];
-    used[search_.clusterOf(second[source + 1])] = true;
+    used[searches_.front().clusterOf(second[source + 1])] = true;
   }
   return child;
 }
@@ -128,7 +147,8 @@ void MemeticGtspSolver::markNewEdges(const std::vector<int>& child, const std::v
   auto successors = [&](const std::vector<int>& sequence, std::vector<int>& successor) {
     successor.assign(m, -1);
     for (std::size_t i = 0; i + 1 < sequence.size(); ++i) {
-      successor[search_.clusterOf(sequence[i])] = search_.clusterOf(sequence[i + 1]);
+      successor[searches_.front().clusterOf(sequence[i])] =
+          searches_.front().clusterOf(sequence[i + 1]);
     }
   };
   successors(first, first_successor_);
@@ -139,8 +159,8 @@ void MemeticGtspSolver::markNewEdges(const std::vector<int>& child, const std::v
   }
   focus_.assign(m, 0);
   for (std::size_t i = 0; i + 1 < child.size(); ++i) {
-    const int from = search_.clusterOf(child[i]);
-    const int to = search_.clusterOf(child[i + 1]);
+    const int from = searches_.front().clusterOf(child[i]);
+    const int to = searches_.front().clusterOf(child[i + 1]);
     if (first_successor_[from] != to && second_successor_[from] != to) {
       focus_[from] = 1;
       focus_[to] = 1;
@@ -175,18 +195,34 @@ std::vector<MemeticGtspSolver::Individual> MemeticGtspSolver::initialPopulation(
                                                                                 bool trivial) {
   std::vector<Individual> population;
   if (!options_.warm_start.empty()) {
-    Individual warm{sequenceFromTour(options_.warm_start), 0.0};
-    warm.cost = search_.improve(warm.sequence, deadline_);
-    population.push_back(std::move(warm));
+    std::vector<Individual> warm = {{sequenceFromTour(options_.warm_start), 0.0}};
+    improveAll(warm);
+    population.push_back(std::move(warm.front()));
   }
-  for (int attempt = 0;
-       attempt < 3 * population_size && static_cast<int>(population.size()) < population_size &&
-       (population.empty() || Clock::now() < deadline_);
-       ++attempt) {
-    Individual individual{randomSequence(), 0.0};
-    individual.cost = search_.improve(individual.sequence, deadline_);
-    if (distinctCost(population, individual.cost)) population.push_back(std::move(individual));
-    if (trivial) break;
+  // Random orders in batches of as many as places are left, improved on every thread and
+  // taken in order as one at a time would be: the random generator is left as if only the
+  // orders taken had been drawn, so the run does not depend on the thread count.
+  const int max_attempts = trivial ? 1 : 3 * population_size;
+  int attempts = 0;
+  while (attempts < max_attempts && static_cast<int>(population.size()) < population_size &&
+         (population.empty() || Clock::now() < deadline_)) {
+    const int batch =
+        std::min(population_size - static_cast<int>(population.size()), max_attempts - attempts);
+    std::vector<Individual> drawn(static_cast<std::size_t>(batch));
+    std::vector<std::mt19937> random_after(drawn.size());
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      drawn[i].sequence = randomSequence();
+      random_after[i] = random_;
+    }
+    improveAll(drawn);
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      ++attempts;
+      if (distinctCost(population, drawn[i].cost)) population.push_back(std::move(drawn[i]));
+      if (static_cast<int>(population.size()) == population_size) {
+        random_ = random_after[i];
+        break;
+      }
+    }
   }
   std::sort(population.begin(), population.end(), byCost);
   return population;
@@ -194,10 +230,14 @@ std::vector<MemeticGtspSolver::Individual> MemeticGtspSolver::initialPopulation(
 
 void MemeticGtspSolver::nextGeneration(std::vector<Individual>& population, int population_size) {
   const int m = static_cast<int>(instance_.clusters.size());
+  const bool focused = options_.focused_search && m > kFocusedSearchMinClusters;
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Individual> pool = population;
-  for (int k = 0; k < population_size; ++k) {
-    Individual child;
+  // Every child is drawn from the parents first (the random draws in one order), then all
+  // are improved at once.
+  std::vector<Individual> children(static_cast<std::size_t>(population_size));
+  std::vector<std::vector<char>> focuses(focused ? children.size() : 0);
+  for (std::size_t k = 0; k < children.size(); ++k) {
+    Individual& child = children[k];
     const std::size_t parent = tournament(population);
     const std::vector<int>* second = nullptr;
     if (population.size() >= 2 && unit(random_) < kCrossoverShare) {
@@ -207,14 +247,14 @@ void MemeticGtspSolver::nextGeneration(std::vector<Individual>& population, int 
       child.sequence = population[parent].sequence;
       mutate(child.sequence);
     }
-    const std::vector<char>* focus = nullptr;
-    if (options_.focused_search && m > kFocusedSearchMinClusters) {
+    if (focused) {
       markNewEdges(child.sequence, population[parent].sequence, second);
-      focus = &focus_;
+      focuses[k] = focus_;
     }
-    child.cost = search_.improve(child.sequence, deadline_, focus);
-    pool.push_back(std::move(child));
   }
+  improveAll(children, focused ? &focuses : nullptr);
+  std::vector<Individual> pool = population;
+  for (Individual& child : children) pool.push_back(std::move(child));
   std::stable_sort(pool.begin(), pool.end(), byCost);
   population.clear();
   for (Individual& individual : pool) {

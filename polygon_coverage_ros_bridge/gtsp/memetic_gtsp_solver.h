@@ -25,8 +25,8 @@ namespace kinematic_coverage::core {
 /// 10 s, i.e. the targets and GLNS's published gaps, so a GLNS-style adaptive large
 /// neighbourhood search was not added. Path mode is native: the sequence has fixed start and
 /// goal ends and no closing edge, so no sentinel costs are needed. The run stops after a
-/// number of generations without improvement (deterministic for a seed); the time limit is
-/// only a safety cap.
+/// number of generations without improvement (deterministic for a seed, on any number of
+/// threads: GtspOptions::threads); the time limit is only a safety cap.
 class MemeticGtspSolver {
  public:
   /// instance must be valid (validateGtspInstance) and outlive the solver; a warm start in
@@ -64,6 +64,10 @@ class MemeticGtspSolver {
   /// True when no member's cost equals `cost` (relatively): the population keeps one
   /// individual per cost.
   static bool distinctCost(const std::vector<Individual>& members, double cost);
+  /// Improves every individual by local search (with focuses[i] when given), on
+  /// GtspOptions::threads threads, each with its own GtspLocalSearch.
+  void improveAll(std::vector<Individual>& individuals,
+                  const std::vector<std::vector<char>>* focuses = nullptr);
   /// The warm start, if any, and locally optimised random individuals of distinct costs,
   /// cheapest first (one only for a `trivial` instance, which has one order).
   std::vector<Individual> initialPopulation(int population_size, bool trivial);
@@ -75,7 +79,7 @@ class MemeticGtspSolver {
   GtspOptions options_;
   int anchor_cluster_ = -1;
   std::mt19937 random_;
-  GtspLocalSearch search_;
+  std::vector<GtspLocalSearch> searches_;  ///< one per thread, identical but for scratch state
   Clock::time_point deadline_;
   std::vector<int> first_successor_;   ///< per cluster, the next cluster in the first parent
   std::vector<int> second_successor_;  ///< the same in the second parent

@@ -8,3 +8,5 @@ kc_add_stage_library(kc_gtsp
     polygon_coverage_ros_bridge/gtsp/gtsplib_reader.cpp
     polygon_coverage_ros_bridge/gtsp/memetic_gtsp_solver.cpp
   DEPENDS kc_geometry)
+# The memetic heuristic improves a generation's children on every hardware thread.
+target_link_libraries(kc_gtsp PUBLIC Threads::Threads)

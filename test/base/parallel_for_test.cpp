@@ -34,6 +34,32 @@ TEST(ParallelFor, UnevenRowsGiveWhatOneThreadGives) {
   }
 }
 
+TEST(ParallelFor, OnThreadsGivesEachBodyAThreadOfItsOwn) {
+  // Per-thread scratch state is safe: a thread index is below the thread count asked for
+  // (more than the hardware has, too) and never in use by two bodies at once.
+  for (std::size_t threads : {1u, 2u, 5u}) {
+    std::vector<std::atomic<int>> busy(threads);
+    std::vector<std::atomic<int>> calls(500);
+    std::atomic<bool> shared{false};
+    std::atomic<std::size_t> highest{0};
+    parallelForOnThreads(calls.size(), threads, [&](std::size_t i, std::size_t thread) {
+      std::size_t seen = highest;
+      while (thread > seen && !highest.compare_exchange_weak(seen, thread)) {
+      }
+      if (thread >= threads) return;
+      if (++busy[thread] != 1) shared = true;
+      ++calls[i];
+      --busy[thread];
+    });
+    EXPECT_LT(highest, threads);
+    EXPECT_FALSE(shared);
+    for (std::size_t i = 0; i < calls.size(); ++i) EXPECT_EQ(calls[i], 1) << "index " << i;
+  }
+  EXPECT_EQ(parallelThreadCount(3, 8), 3u);
+  EXPECT_EQ(parallelThreadCount(0, 8), 1u);
+  EXPECT_GE(parallelThreadCount(100), 1u);
+}
+
 TEST(ParallelFor, RethrowsWhatABodyThrewAfterEveryThreadStopped) {
   std::atomic<int> running{0};
   EXPECT_THROW(parallelFor(100,
