@@ -71,12 +71,16 @@ double area(const std::vector<PolygonWithHoles>& parts) {
 }
 
 bool contains(const PolygonWithHoles& polygon, const Point2& p, double tolerance) {
-  if (tolerance > 0.0 && distanceToBoundary(p, polygon) <= tolerance) return true;
-  if (!insideRing(p, polygon.hull)) return false;
-  for (const Ring& hole : polygon.holes) {
-    if (insideRing(p, hole)) return false;
-  }
-  return true;
+  // The crossing tests first: they are cheaper than distances, and most points asked
+  // about lie inside, where the distance is not needed.
+  const auto inside = [&]() {
+    if (!insideRing(p, polygon.hull)) return false;
+    for (const Ring& hole : polygon.holes) {
+      if (insideRing(p, hole)) return false;
+    }
+    return true;
+  };
+  return inside() || (tolerance > 0.0 && distanceToBoundary(p, polygon) <= tolerance);
 }
 
 namespace {

@@ -22,12 +22,11 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
   coverage.report = evaluator.report(seen_reported);
   coverage.largest_unseen_region = evaluator.largestUnseenRegion(seen_reported);
   coverage.cell_size_m = evaluator.raster().cellSize();
-  // The heatmap on a grid along the map's axes, as plots draw it.
+  // The heatmap on a grid along the map's axes, as plots draw it, read off the turned one.
   RasterResolution drawing;
   drawing.min_cell_size = kReportingCellSize;
-  SeenArea seen(CoverageRaster::covering(free_area, drawing));
-  seen.addTrajectory(poses, sensor);
-  coverage.heatmap = seen.heatmap();
+  coverage.heatmap =
+      evaluator.heatmapOn(seen_reported, CoverageRaster::covering(free_area, drawing));
   coverage.duration_s = secondsSince(start);
   return coverage;
 }

@@ -29,9 +29,10 @@ constexpr double kReachableCoverageBarPercent = 99.9;
 /// of reportingResolution() turned by kReportingGridAngle: the one measurement behind
 /// `plan`'s figures for its own trajectory and `evaluate`'s for any trajectory file, so
 /// that both agree on the same poses. `offset_parts` (every part of the offset free area)
-/// only shape the reachable area. The heatmap is drawn on a grid along the map's axes
-/// (cells of 5 cm or coarser). Throws InvalidInputError for a non-finite pose, an invalid
-/// sensor or an offset free area that covers no cell.
+/// only shape the reachable area. The heatmap is the turned raster's visits read at the
+/// cell centres of a grid along the map's axes (cells of 5 cm or coarser), as plots draw it. Throws
+/// InvalidInputError for a non-finite pose, an invalid sensor or an offset free area that covers no
+/// cell.
 TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
                                              const std::vector<PolygonWithHoles>& offset_parts,
                                              const PlannerParameters& parameters,

@@ -688,7 +688,7 @@ std::string repairStage(const PlanningRun& run, const OffsetStage& offset,
   // Jogs whose removal shifted a lane off what it had to see are put back first: near
   // a wall that the lane's footprint reaches exactly, any shift inward leaves a band.
   std::size_t jogs_restored = 0;
-  const UnseenAreaRepair::Unseen unseen = repair.unseen(route->waypoints);
+  UnseenAreaRepair::Unseen unseen = repair.unseen(route->waypoints);
   if (!unseen.samples.empty()) {
     const double reach = 0.5 * std::hypot(sensor.width(), sensor.length()) + max_jog_shift;
     std::vector<bool> pinned(route->path.size(), false);
@@ -704,13 +704,15 @@ std::string repairStage(const PlanningRun& run, const OffsetStage& offset,
     const std::vector<Point2> with_jogs =
         simplifiedPath(jog_removal.apply(route->path, route->keep, &pinned_kept, &pinned),
                        pinned_kept, route->duplicate_tolerance);
-    if (repair.unseen(with_jogs).area_m2 < unseen.area_m2) {
+    UnseenAreaRepair::Unseen with_jogs_unseen = repair.unseen(with_jogs);
+    if (with_jogs_unseen.area_m2 < unseen.area_m2) {
       jogs_restored = with_jogs.size() - std::min(with_jogs.size(), route->waypoints.size());
       route->waypoints = with_jogs;
       markInsideEnds(run, offset, route->waypoints);
+      unseen = std::move(with_jogs_unseen);
     }
   }
-  RepairedPath repaired = repair.repair(route->waypoints, plan.first_inside, plan.last_inside);
+  RepairedPath repaired = repair.repair(std::move(unseen), plan.first_inside, plan.last_inside);
   std::vector<bool> protect(repaired.waypoints.size(), false);
   protect.front() = protect.back() = true;
   protect[plan.first_inside] = protect[repaired.last_inside] = true;

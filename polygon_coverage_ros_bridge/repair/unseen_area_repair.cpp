@@ -302,13 +302,18 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
 
 RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t first_inside,
                                       std::size_t last_inside) const {
+  return repair(unseen(waypoints), first_inside, last_inside);
+}
+
+RepairedPath UnseenAreaRepair::repair(Unseen measured, std::size_t first_inside,
+                                      std::size_t last_inside) const {
   const double cell_area = evaluator_.raster().cellArea();
   const CellMask& reachable = evaluator_.reachableArea();
   RepairedPath result;
   result.reachable_m2 = static_cast<double>(CoverageRaster::countCells(reachable)) * cell_area;
-  SeenArea seen = evaluator_.seeWaypointPath(legHeadingPoses(waypoints));
-  std::vector<UnseenRegion> regions =
-      evaluator_.unseenRegions(seen, kSamplesPerRegion, join_distance_);
+  std::vector<Point2> waypoints = std::move(measured.waypoints);
+  SeenArea seen = std::move(*measured.seen);
+  std::vector<UnseenRegion> regions = std::move(measured.regions);
   result.unseen_before_m2 = totalArea(regions);
   double unseen = result.unseen_before_m2;
   VisibilityGraph::PointCache routes;
@@ -364,9 +369,10 @@ RepairedPath UnseenAreaRepair::repair(std::vector<Point2> waypoints, std::size_t
 
 UnseenAreaRepair::Unseen UnseenAreaRepair::unseen(const std::vector<Point2>& waypoints) const {
   Unseen result;
-  for (const UnseenRegion& region :
-       evaluator_.unseenRegions(evaluator_.seeWaypointPath(legHeadingPoses(waypoints)),
-                                kSamplesPerRegion, join_distance_)) {
+  result.waypoints = waypoints;
+  result.seen = evaluator_.seeWaypointPath(legHeadingPoses(waypoints));
+  result.regions = evaluator_.unseenRegions(*result.seen, kSamplesPerRegion, join_distance_);
+  for (const UnseenRegion& region : result.regions) {
     result.area_m2 += region.area_m2;
     if (region.area_m2 < min_region_m2_) continue;
     result.samples.insert(result.samples.end(), region.samples.begin(), region.samples.end());

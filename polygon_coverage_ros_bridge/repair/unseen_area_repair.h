@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
@@ -58,10 +59,18 @@ class UnseenAreaRepair {
     /// the planner puts back waypoints that its jog removal shifted, which sees a band
     /// along a wall for far less than a patch does.
     std::vector<Point2> samples;
+    /// The measurement behind them: what the path sees, and every unseen region, the
+    /// largest first (repair starts from it instead of measuring the path again).
+    std::vector<Point2> waypoints;
+    std::optional<SeenArea> seen;
+    std::vector<UnseenRegion> regions;
   };
 
   /// Measures what `waypoints` leave unseen.
   Unseen unseen(const std::vector<Point2>& waypoints) const;
+
+  /// repair() of the path that `measured` (unseen()) measured, without measuring it again.
+  RepairedPath repair(Unseen measured, std::size_t first_inside, std::size_t last_inside) const;
 
  private:
   /// A point of a boundary ring of the planned parts: the ring and the arc length to it.

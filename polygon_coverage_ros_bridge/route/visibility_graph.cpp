@@ -1,13 +1,12 @@
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
 
 #include <algorithm>
-#include <functional>
 #include <limits>
 #include <map>
-#include <queue>
 #include <sstream>
 #include <utility>
 
+#include "polygon_coverage_ros_bridge/base/indexed_min_heap.h"
 #include "polygon_coverage_ros_bridge/base/parallel_for.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
@@ -110,24 +109,38 @@ void VisibilityGraph::floydWarshall() {
 }
 
 void VisibilityGraph::dijkstraFromEveryNode() {
-  // The sources on every hardware thread, each writing its own row.
+  // The edges in compressed rows, for locality; the sources on every hardware thread, each
+  // writing its own row with its thread's queue. A node's cost is the least of
+  // (neighbour's cost + edge) over the neighbours settled before it, whatever the order
+  // of the queue's ties, so the rows do not depend on the queue.
   const std::size_t n = nodes_.size();
-  parallelFor(n, [&](std::size_t source) {
+  std::vector<std::size_t> first_edge(n + 1, 0);
+  std::vector<int> edge_target;
+  std::vector<double> edge_cost;
+  for (std::size_t u = 0; u < n; ++u) {
+    for (const auto& [w, c] : neighbours_[u]) {
+      edge_target.push_back(w);
+      edge_cost.push_back(c);
+    }
+    first_edge[u + 1] = edge_target.size();
+  }
+  const std::size_t threads = parallelThreadCount(n);
+  std::vector<IndexedMinHeap> queues(threads, IndexedMinHeap(n));
+  parallelForOnThreads(n, threads, [&](std::size_t source, std::size_t thread) {
     double* row = &node_costs_[source * n];
     std::fill(row, row + n, kUnreachable);
     row[source] = 0.0;
-    using Entry = std::pair<double, int>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-    queue.push({0.0, static_cast<int>(source)});
+    IndexedMinHeap& queue = queues[thread];
+    queue.pushOrDecrease(static_cast<int>(source), 0.0);
     while (!queue.empty()) {
-      const auto [cost, u] = queue.top();
-      queue.pop();
-      if (cost > row[u]) continue;
-      for (const auto& [w, c] : neighbours_[u]) {
-        const double through = cost + c;
+      const std::size_t u = static_cast<std::size_t>(queue.popMin());
+      const double cost = row[u];
+      for (std::size_t e = first_edge[u]; e < first_edge[u + 1]; ++e) {
+        const double through = cost + edge_cost[e];
+        const int w = edge_target[e];
         if (through < row[w]) {
           row[w] = through;
-          queue.push({through, w});
+          queue.pushOrDecrease(w, through);
         }
       }
     }

@@ -304,7 +304,8 @@ CellFractions CoverageRaster::areaFractions(const PolygonWithHoles& polygon) con
   return fractions;
 }
 
-void CoverageRaster::appendConvexSpans(const Ring& convex, std::vector<CellSpan>& spans) const {
+void CoverageRaster::appendConvexSpans(const Ring& convex, std::vector<CellSpan>& spans,
+                                       int first_row, int end_row) const {
   if (convex.size() < 3) return;
   double low = std::numeric_limits<double>::infinity();
   double high = -low;
@@ -313,8 +314,8 @@ void CoverageRaster::appendConvexSpans(const Ring& convex, std::vector<CellSpan>
     high = std::max(high, p.y());
   }
   if (!std::isfinite(low) || !std::isfinite(high)) return;
-  const int first_row = firstRowAtOrAbove(low);
-  const int end_row = firstRowAtOrAbove(high);
+  first_row = std::max(first_row, firstRowAtOrAbove(low));
+  end_row = std::min(end_row, firstRowAtOrAbove(high));
   for (int row = first_row; row < end_row; ++row) {
     const double y = rowCentre(row);
     double left = std::numeric_limits<double>::infinity();

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
@@ -99,8 +100,10 @@ class CoverageRaster {
   CellFractions areaFractions(const PolygonWithHoles& polygon) const;
 
   /// Appends to `spans` the row spans of the cells whose centres lie in the convex
-  /// polygon `convex` (same edge rules as rasterize); fast for a few vertices.
-  void appendConvexSpans(const Ring& convex, std::vector<CellSpan>& spans) const;
+  /// polygon `convex` (same edge rules as rasterize), in the rows [first_row, end_row) only
+  /// (a band of the grid); fast for a few vertices.
+  void appendConvexSpans(const Ring& convex, std::vector<CellSpan>& spans, int first_row = 0,
+                         int end_row = std::numeric_limits<int>::max()) const;
 
   /// Number of set (non-zero) cells of a mask.
   static std::size_t countCells(const CellMask& mask);

@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "polygon_coverage_ros_bridge/base/parallel_for.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/sweeps/waypoint_path_poses.h"
@@ -14,6 +15,13 @@ namespace {
 
 /// Visits at which a cell's count saturates.
 constexpr std::uint16_t kMaxVisits = std::numeric_limits<std::uint16_t>::max();
+
+/// Steps from which a pass is marked on every hardware thread (its step areas, then bands
+/// of rows): shorter ones, such as a smoothed corner's check, cost less than starting threads.
+constexpr std::size_t kBandedMinSteps = 1000;
+/// Bands of rows per thread, so that bands of uneven work (open water beside a dense
+/// shore) balance.
+constexpr std::size_t kBandsPerThread = 4;
 
 /// Longest arc (radians) replaced by a chord when sweeping a footprint corner's sector:
 /// the chord loses 1 - cos(0.025), about 3e-4, of the radius.
@@ -78,49 +86,69 @@ void SeenArea::addPoses(const std::vector<Pose2>& poses, const FrustumSensor& se
     }
   }
   if (poses.empty()) return;
-  std::vector<CellSpan> spans;
-  Ring previous = sensor.footprint(poses.front());
-  if (poses.size() == 1) {
-    raster_.appendConvexSpans(previous, spans);
-    markStep(spans);
-  }
-  for (std::size_t i = 1; i < poses.size(); ++i) {
-    Ring current = sensor.footprint(poses[i]);
-    spans.clear();
-    if ((poses[i].position() - poses[i - 1].position()).norm() > kSamePositionTolerance) {
+  // Each step's area as convex polygons: one pose's footprint, the hull of two footprints
+  // apart, or a rotation's footprints and corner sectors.
+  const std::size_t steps = std::max<std::size_t>(1, poses.size() - 1);
+  std::vector<std::vector<Ring>> step_areas(steps);
+  const bool parallel = steps >= kBandedMinSteps;
+  if (poses.size() == 1) step_areas.front() = {sensor.footprint(poses.front())};
+  const auto stepArea = [&](std::size_t k, std::size_t) {
+    const Pose2& from = poses[k];
+    const Pose2& to = poses[k + 1];
+    Ring previous = sensor.footprint(from);
+    Ring current = sensor.footprint(to);
+    std::vector<Ring>& area = step_areas[k];
+    if ((to.position() - from.position()).norm() > kSamePositionTolerance) {
       std::vector<Point2> corners(previous.begin(), previous.end());
       corners.insert(corners.end(), current.begin(), current.end());
-      raster_.appendConvexSpans(convexHull(std::move(corners)), spans);
-    } else {
-      raster_.appendConvexSpans(previous, spans);
-      raster_.appendConvexSpans(current, spans);
-      if (sweep_rotations) {
-        const double turn = wrapAngle(poses[i].yaw - poses[i - 1].yaw);
-        for (const Point2& corner : previous) {
-          raster_.appendConvexSpans(cornerSector(poses[i].position(), corner, turn), spans);
-        }
+      area.push_back(convexHull(std::move(corners)));
+      return;
+    }
+    if (sweep_rotations) {
+      const double turn = wrapAngle(to.yaw - from.yaw);
+      for (const Point2& corner : previous) {
+        area.push_back(cornerSector(to.position(), corner, turn));
       }
     }
-    markStep(spans);
-    previous = std::move(current);
+    area.insert(area.begin(), {std::move(previous), std::move(current)});
+  };
+  if (poses.size() > 1) {
+    parallelForOnThreads(poses.size() - 1, parallel ? 0 : 1, stepArea);
   }
-  // The next pass starts afresh: what it sees again is a new visit.
-  previous_step_cells_.clear();
+  // Then the steps in order, in bands of rows on every thread.
+  const std::size_t bands = parallel ? kBandsPerThread * parallelThreadCount(steps) : 1;
+  const int rows = raster_.rows();
+  parallelForOnThreads(bands, parallel ? 0 : 1, [&](std::size_t band, std::size_t) {
+    const int first_row = static_cast<int>(static_cast<long long>(rows) * band / bands);
+    const int end_row = static_cast<int>(static_cast<long long>(rows) * (band + 1) / bands);
+    if (first_row >= end_row) return;
+    BandSteps cells;
+    std::vector<CellSpan> spans;
+    for (const std::vector<Ring>& area : step_areas) {
+      spans.clear();
+      for (const Ring& convex : area) {
+        raster_.appendConvexSpans(convex, spans, first_row, end_row);
+      }
+      markStep(spans, cells);
+    }
+  });
 }
 
-void SeenArea::markStep(std::vector<CellSpan>& spans) {
+void SeenArea::markStep(std::vector<CellSpan>& spans, BandSteps& band) {
   // The step's cells as disjoint spans in row-major order.
   std::sort(spans.begin(), spans.end(), [](const CellSpan& a, const CellSpan& b) {
     return a.row < b.row || (a.row == b.row && a.begin < b.begin);
   });
-  step_cells_.clear();
+  std::vector<CellSpan>& step_cells = band.current;
+  const std::vector<CellSpan>& previous_step_cells = band.previous;
+  step_cells.clear();
   for (const CellSpan& span : spans) {
     if (span.begin >= span.end) continue;
-    CellSpan* last = step_cells_.empty() ? nullptr : &step_cells_.back();
+    CellSpan* last = step_cells.empty() ? nullptr : &step_cells.back();
     if (last != nullptr && last->row == span.row && span.begin <= last->end) {
       last->end = std::max(last->end, span.end);
     } else {
-      step_cells_.push_back(span);
+      step_cells.push_back(span);
     }
   }
   // A new visit to the cells of this step outside the step before: per span, the gaps
@@ -133,24 +161,23 @@ void SeenArea::markStep(std::vector<CellSpan>& spans) {
     }
   };
   std::size_t next = 0;  // the first previous span not wholly before the current one
-  for (const CellSpan& span : step_cells_) {
-    while (next < previous_step_cells_.size() && (previous_step_cells_[next].row < span.row ||
-                                                  (previous_step_cells_[next].row == span.row &&
-                                                   previous_step_cells_[next].end <= span.begin))) {
+  for (const CellSpan& span : step_cells) {
+    while (next < previous_step_cells.size() && (previous_step_cells[next].row < span.row ||
+                                                 (previous_step_cells[next].row == span.row &&
+                                                  previous_step_cells[next].end <= span.begin))) {
       ++next;
     }
     int from = span.begin;
     for (std::size_t k = next;
-         k < previous_step_cells_.size() && previous_step_cells_[k].row == span.row &&
-         previous_step_cells_[k].begin < span.end;
+         k < previous_step_cells.size() && previous_step_cells[k].row == span.row &&
+         previous_step_cells[k].begin < span.end;
          ++k) {
-      if (previous_step_cells_[k].begin > from)
-        visit(span.row, from, previous_step_cells_[k].begin);
-      from = std::max(from, previous_step_cells_[k].end);
+      if (previous_step_cells[k].begin > from) visit(span.row, from, previous_step_cells[k].begin);
+      from = std::max(from, previous_step_cells[k].end);
     }
     if (from < span.end) visit(span.row, from, span.end);
   }
-  std::swap(previous_step_cells_, step_cells_);
+  std::swap(band.previous, band.current);
 }
 
 CellMask SeenArea::seenMask() const {

@@ -90,16 +90,19 @@ class SeenArea {
   /// see the sectors swept by the footprint's corners turning between their headings.
   void addPoses(const std::vector<Pose2>& poses, const FrustumSensor& sensor, bool sweep_rotations);
 
-  /// Marks the cells of `spans` (reordered) as seen in the current step: a cell not seen
-  /// in the step before starts a new visit. Costs the step's rows and its new cells, not
-  /// its area, so densely sampled poses are cheap.
-  void markStep(std::vector<CellSpan>& spans);
+  /// The cells of one band of rows seen in a pass's latest step and in the current one, as
+  /// disjoint row spans in row-major order.
+  struct BandSteps {
+    std::vector<CellSpan> previous;
+    std::vector<CellSpan> current;
+  };
+
+  /// Marks the cells of `spans` (reordered; all in the band's rows) as seen in the current
+  /// step: a cell not seen in the step before starts a new visit. Costs the step's rows and
+  /// its new cells, not its area, so densely sampled poses are cheap.
+  void markStep(std::vector<CellSpan>& spans, BandSteps& band);
 
   CoverageRaster raster_;
-  /// The cells of the pass's latest step and of the current one, as disjoint row spans in
-  /// row-major order.
-  std::vector<CellSpan> previous_step_cells_;
-  std::vector<CellSpan> step_cells_;
   std::vector<std::uint16_t> visits_;
 };
 

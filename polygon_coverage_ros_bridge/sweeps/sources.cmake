@@ -7,3 +7,5 @@ kc_add_stage_library(kc_sweeps
     polygon_coverage_ros_bridge/sweeps/sweep_pattern.cpp
     polygon_coverage_ros_bridge/sweeps/waypoint_path_poses.cpp
   DEPENDS kc_geometry kc_decomposition)
+# SeenArea marks long passes on every hardware thread.
+target_link_libraries(kc_sweeps PUBLIC Threads::Threads)

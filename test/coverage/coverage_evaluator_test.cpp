@@ -84,6 +84,34 @@ TEST(CoverageEvaluator, CellAtHoldsThePointOnATurnedRaster) {
   EXPECT_FALSE(evaluator.cellAt({20.0, 100.0}).has_value());
 }
 
+// The heatmap on the map's axes is the turned raster's visits at each cell centre; on the
+// evaluator's own grid it is the seen area's heatmap itself.
+TEST(CoverageEvaluator, HeatmapOnAnotherGridReadsTheVisitsAtItsCellCentres) {
+  const PolygonWithHoles area{rectangle(0, 0, 40, 10), {}};
+  const std::vector<Pose2> lanes = lawnmower(1, 39, 1, 9, 1.5);
+  const CoverageEvaluator turned(area, {area}, FrustumSensor(4.0, 1.0, 0.0), {0.05}, 0.2);
+  const SeenArea seen = turned.seeWaypointPath(lanes);
+  const CoverageRaster grid = CoverageRaster::covering(area, {0.1});
+  const Heatmap heatmap = turned.heatmapOn(seen, grid);
+  EXPECT_EQ(heatmap.columns, grid.columns());
+  EXPECT_EQ(heatmap.rows, grid.rows());
+  EXPECT_EQ(heatmap.cell_size, 0.1);
+  ASSERT_EQ(heatmap.visits.size(), grid.cellCount());
+  std::size_t overlapped = 0;
+  for (std::size_t index = 0; index < grid.cellCount(); ++index) {
+    const std::optional<std::size_t> cell = turned.cellAt(grid.cellCentre(index));
+    EXPECT_EQ(heatmap.visits[index], cell ? seen.visits(*cell) : 0) << index;
+    if (heatmap.visits[index] >= 2) ++overlapped;
+  }
+  EXPECT_GT(overlapped, 0u);  // lanes 1.5 m apart under a 4 m footprint overlap
+
+  const CoverageEvaluator along_axes(area, {area}, FrustumSensor(4.0, 1.0, 0.0), {0.05}, 0.0);
+  const SeenArea seen_along = along_axes.seeWaypointPath(lanes);
+  EXPECT_EQ(along_axes.heatmapOn(seen_along, along_axes.raster()).visits,
+            seen_along.heatmap().visits);
+  EXPECT_THROW(along_axes.heatmapOn(seen, grid), InvalidInputError);
+}
+
 // Restricted to a region (a replanned mission's remaining area), the reachable area is its
 // cells inside the region, on a turned raster too; what lies outside is neither reachable
 // nor unseen.

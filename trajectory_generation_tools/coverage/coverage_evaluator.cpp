@@ -120,6 +120,25 @@ void CoverageEvaluator::restrictReachableArea(const std::vector<PolygonWithHoles
   for (std::size_t i = 0; i < inside.size(); ++i) reachable_area_[i] &= inside[i];
 }
 
+Heatmap CoverageEvaluator::heatmapOn(const SeenArea& seen, const CoverageRaster& grid) const {
+  requireOwnRaster(seen);
+  Heatmap heatmap{grid.origin(), grid.cellSize(), grid.columns(), grid.rows(),
+                  std::vector<std::uint16_t>(grid.cellCount(), 0)};
+  const Eigen::Matrix2d to_raster = Eigen::Rotation2Dd(-grid_angle_).toRotationMatrix();
+  const double inverse_cell = 1.0 / raster_.cellSize();
+  for (int row = 0; row < grid.rows(); ++row) {
+    for (int column = 0; column < grid.columns(); ++column) {
+      const std::size_t index = grid.index(row, column);
+      const Point2 q = (to_raster * grid.cellCentre(index) - raster_.origin()) * inverse_cell;
+      if (q.x() >= 0.0 && q.y() >= 0.0 && q.x() < raster_.columns() && q.y() < raster_.rows()) {
+        heatmap.visits[index] =
+            seen.visits(raster_.index(static_cast<int>(q.y()), static_cast<int>(q.x())));
+      }
+    }
+  }
+  return heatmap;
+}
+
 std::optional<std::size_t> CoverageEvaluator::cellAt(const Point2& p) const {
   const Point2 q = (toRaster(p) - raster_.origin()) / raster_.cellSize();
   if (!(q.x() >= 0.0 && q.y() >= 0.0 && q.x() < raster_.columns() && q.y() < raster_.rows())) {

@@ -105,6 +105,12 @@ class CoverageEvaluator {
   /// The index of the raster cell that holds p (map frame), if any.
   std::optional<std::size_t> cellAt(const Point2& p) const;
 
+  /// The visits of a seen area made on this evaluator's raster, read at the cell centres
+  /// of `grid` (map frame; each from the raster cell that holds it, 0 outside the raster):
+  /// the heatmap on another grid, such as a plot's along the map's axes, without seeing the
+  /// poses again.
+  Heatmap heatmapOn(const SeenArea& seen, const CoverageRaster& grid) const;
+
   /// The largest UnseenRegion of a seen area made on this evaluator's raster; none when
   /// the whole reachable area was seen.
   std::optional<UnseenRegion> largestUnseenRegion(const SeenArea& seen) const;
