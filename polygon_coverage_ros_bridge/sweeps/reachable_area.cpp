@@ -234,6 +234,44 @@ std::vector<CellMask> dilateWithin(const CoverageRaster& raster, const CellMask&
   return grown;
 }
 
+/// dilateMask by a disc stamped around each set cell: the same masks (a cell within reach,
+/// centre to centre in cells, of a set cell), in time of the set cells times the disc, for
+/// masks of few set cells (unseen slivers) on large grids.
+std::vector<CellMask> dilateByDiscs(const CoverageRaster& raster, const CellMask& mask,
+                                    const std::vector<std::size_t>& set_cells,
+                                    const std::vector<double>& reaches) {
+  const int columns = raster.columns();
+  const int rows = raster.rows();
+  std::vector<CellMask> grown;
+  for (double reach : reaches) {
+    CellMask out = mask;
+    const double reach_squared = reach * reach;
+    const int reach_rows = static_cast<int>(std::floor(reach));
+    for (std::size_t i : set_cells) {
+      const int row = static_cast<int>(i / static_cast<std::size_t>(columns));
+      const int column = static_cast<int>(i % static_cast<std::size_t>(columns));
+      for (int dy = -reach_rows; dy <= reach_rows; ++dy) {
+        const int r = row + dy;
+        if (r < 0 || r >= rows) continue;
+        const long long dy_squared = static_cast<long long>(dy) * dy;
+        int dx = static_cast<int>(std::sqrt(std::max(0.0, reach_squared - dy_squared)));
+        while (static_cast<double>((dx + 1LL) * (dx + 1) + dy_squared) <= reach_squared) ++dx;
+        while (dx >= 0 &&
+               static_cast<double>(static_cast<long long>(dx) * dx + dy_squared) > reach_squared) {
+          --dx;
+        }
+        if (dx < 0) continue;
+        const int first = std::max(0, column - dx);
+        const int last = std::min(columns - 1, column + dx);
+        std::uint8_t* line = out.data() + raster.index(r, 0);
+        std::fill(line + first, line + last + 1, std::uint8_t{1});
+      }
+    }
+    grown.push_back(std::move(out));
+  }
+  return grown;
+}
+
 }  // namespace
 
 CellMask dilateMask(const CoverageRaster& raster, const CellMask& mask, double radius) {
@@ -254,6 +292,20 @@ std::vector<CellMask> dilateMask(const CoverageRaster& raster, const CellMask& m
   }
   std::vector<CellMask> grown;
   if (!reaches.empty()) {
+    const double largest = *std::max_element(reaches.begin(), reaches.end());
+    // Few set cells: a disc around each costs less than the transform's passes over the grid.
+    const double disc = (2.0 * std::floor(largest) + 1.0) * (2.0 * std::floor(largest) + 1.0);
+    const double stamp_budget = static_cast<double>(raster.cellCount()) / disc;
+    std::vector<std::size_t> set_cells;
+    for (std::size_t i = 0;
+         i < mask.size() && static_cast<double>(set_cells.size()) <= stamp_budget; ++i) {
+      if (mask[i] != 0) set_cells.push_back(i);
+    }
+    if (static_cast<double>(set_cells.size()) <= stamp_budget) {
+      grown = dilateByDiscs(raster, mask, set_cells, reaches);
+    }
+  }
+  if (!reaches.empty() && grown.empty()) {
     // Vertical distances of `cap` cells or more are out of every reach; capping keeps them
     // small.
     const double largest = *std::max_element(reaches.begin(), reaches.end());

@@ -135,10 +135,14 @@ void SeenArea::addPoses(const std::vector<Pose2>& poses, const FrustumSensor& se
 }
 
 void SeenArea::markStep(std::vector<CellSpan>& spans, BandSteps& band) {
-  // The step's cells as disjoint spans in row-major order.
-  std::sort(spans.begin(), spans.end(), [](const CellSpan& a, const CellSpan& b) {
+  // The step's cells as disjoint spans in row-major order (one convex area's spans come
+  // in order already).
+  const auto row_major = [](const CellSpan& a, const CellSpan& b) {
     return a.row < b.row || (a.row == b.row && a.begin < b.begin);
-  });
+  };
+  if (!std::is_sorted(spans.begin(), spans.end(), row_major)) {
+    std::sort(spans.begin(), spans.end(), row_major);
+  }
   std::vector<CellSpan>& step_cells = band.current;
   const std::vector<CellSpan>& previous_step_cells = band.previous;
   step_cells.clear();

@@ -66,6 +66,40 @@ TEST(ReachableArea, SeveralRadiiAtOnceAreTheMasksOfOneCallEach) {
   EXPECT_TRUE(dilateMask(raster, CellMask(raster.cellCount(), 0), std::vector<double>{}).empty());
 }
 
+TEST(ReachableArea, FewSetCellsAndManyMeetTheSameExactCriterion) {
+  // A mask of a few set cells is grown by discs stamped around them, a denser one by the
+  // distance transform: both set exactly the cells whose centre-to-centre distance in cells
+  // squared is at most reach squared, ties included (reach 3 and 4.5 cells).
+  const CoverageRaster raster({0.0, 0.0}, 0.1, 200, 150);
+  std::mt19937 rng(29);
+  std::uniform_int_distribution<std::size_t> cell(0, raster.cellCount() - 1);
+  for (const std::size_t seeds : {std::size_t{3}, std::size_t{40}, std::size_t{3000}}) {
+    CellMask mask(raster.cellCount(), 0);
+    std::vector<std::size_t> set;
+    for (std::size_t k = 0; k < seeds; ++k) {
+      const std::size_t i = cell(rng);
+      if (mask[i] == 0) set.push_back(i);
+      mask[i] = 1;
+    }
+    for (const double radius : {0.25, 0.4}) {
+      const CellMask grown = dilateMask(raster, mask, radius);
+      const double reach = radius / raster.cellSize() + 0.5;
+      for (std::size_t i = 0; i < mask.size(); ++i) {
+        const long long row = static_cast<long long>(i) / raster.columns();
+        const long long column = static_cast<long long>(i) % raster.columns();
+        bool within = false;
+        for (const std::size_t j : set) {
+          const long long dy = row - static_cast<long long>(j) / raster.columns();
+          const long long dx = column - static_cast<long long>(j) % raster.columns();
+          within = within || static_cast<double>(dx * dx + dy * dy) <= reach * reach;
+        }
+        ASSERT_EQ(grown[i], within ? 1 : 0)
+            << seeds << " seeds, radius " << radius << " cell " << i;
+      }
+    }
+  }
+}
+
 TEST(ReachableArea, LongReachMatchesBruteForce) {
   // A reach of hundreds of cells (wider distance storage).
   const CoverageRaster raster({0.0, 0.0}, 0.01, 300, 290);
