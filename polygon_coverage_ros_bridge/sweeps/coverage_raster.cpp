@@ -316,21 +316,35 @@ void CoverageRaster::appendConvexSpans(const Ring& convex, std::vector<CellSpan>
   if (!std::isfinite(low) || !std::isfinite(high)) return;
   first_row = std::max(first_row, firstRowAtOrAbove(low));
   end_row = std::min(end_row, firstRowAtOrAbove(high));
-  for (int row = first_row; row < end_row; ++row) {
-    const double y = rowCentre(row);
-    double left = std::numeric_limits<double>::infinity();
-    double right = -left;
-    for (std::size_t i = 0, n = convex.size(); i < n; ++i) {
-      const Point2& a = std::min(convex[i], convex[(i + 1) % n], lowerFirst);
-      const Point2& b = std::max(convex[i], convex[(i + 1) % n], lowerFirst);
+  if (first_row >= end_row) return;
+  // Each edge's crossings with the rows whose centres it spans (a.y <= y < b.y, tested
+  // exactly on the rows around the estimate); a row's span runs from its leftmost to its
+  // rightmost crossing. Linear in rows plus edges, not their product.
+  const std::size_t count = static_cast<std::size_t>(end_row - first_row);
+  thread_local std::vector<double> left;
+  thread_local std::vector<double> right;
+  left.assign(count, std::numeric_limits<double>::infinity());
+  right.assign(count, -std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0, n = convex.size(); i < n; ++i) {
+    const Point2& a = std::min(convex[i], convex[(i + 1) % n], lowerFirst);
+    const Point2& b = std::max(convex[i], convex[(i + 1) % n], lowerFirst);
+    if (a.y() == b.y()) continue;
+    const int from = std::max(first_row, firstRowAtOrAbove(a.y()) - 1);
+    const int to = std::min(end_row, firstRowAtOrAbove(b.y()) + 1);
+    for (int row = from; row < to; ++row) {
+      const double y = rowCentre(row);
       if ((a.y() <= y) == (b.y() <= y)) continue;
       const double x = crossingAt(a, b, y);
-      left = std::min(left, x);
-      right = std::max(right, x);
+      const std::size_t k = static_cast<std::size_t>(row - first_row);
+      left[k] = std::min(left[k], x);
+      right[k] = std::max(right[k], x);
     }
-    if (!(left < right)) continue;
-    const int begin = firstColumnAtOrRightOf(left);
-    const int end = firstColumnAtOrRightOf(right);
+  }
+  for (int row = first_row; row < end_row; ++row) {
+    const std::size_t k = static_cast<std::size_t>(row - first_row);
+    if (!(left[k] < right[k])) continue;
+    const int begin = firstColumnAtOrRightOf(left[k]);
+    const int end = firstColumnAtOrRightOf(right[k]);
     if (begin < end) spans.push_back({row, begin, end});
   }
 }

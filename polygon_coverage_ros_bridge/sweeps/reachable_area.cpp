@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/parallel_for.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
@@ -156,6 +157,9 @@ class ParabolaEnvelope {
   std::size_t segment_ = 0;
 };
 
+/// Cells from which dilateMask's distance transform runs on every hardware thread.
+constexpr std::size_t kParallelDilationCells = 250'000;
+
 /// The two passes of dilateMask with vertical distances stored as `Distance`, an integer
 /// type that holds `cap`, so that the distance grid stays small: one mask per reach (in
 /// cells, centre to centre; `cap` beyond the largest), all from the same distances.
@@ -167,27 +171,41 @@ std::vector<CellMask> dilateWithin(const CoverageRaster& raster, const CellMask&
   const double largest = *std::max_element(reaches.begin(), reaches.end());
   const int reach_columns = static_cast<int>(std::min(largest, static_cast<double>(columns)));
 
+  // Both passes on every hardware thread for large grids: pass 1 in blocks of columns, pass
+  // 2 in blocks of rows, each block independent of the others (the same distances).
+  const std::size_t threads =
+      raster.cellCount() >= kParallelDilationCells ? parallelThreadCount(raster.cellCount()) : 1;
+  const auto blocks = [&](int count, std::size_t block, int* first, int* end) {
+    *first = static_cast<int>(static_cast<long long>(count) * block / threads);
+    *end = static_cast<int>(static_cast<long long>(count) * (block + 1) / threads);
+  };
+
   // Pass 1, along the columns (row by row, so memory is read in order): cells to the
   // nearest set cell in the same column, capped.
   std::vector<Distance> vertical(raster.cellCount(), static_cast<Distance>(cap));
-  for (int row = 0; row < rows; ++row) {
-    for (int column = 0; column < columns; ++column) {
-      const std::size_t i = raster.index(row, column);
-      if (mask[i] != 0) {
-        vertical[i] = Distance{0};
-      } else if (row > 0) {
-        vertical[i] = static_cast<Distance>(
-            std::min(vertical[i - static_cast<std::size_t>(columns)] + 1, cap));
+  parallelForOnThreads(threads, threads, [&](std::size_t block, std::size_t) {
+    int first_column = 0;
+    int end_column = 0;
+    blocks(columns, block, &first_column, &end_column);
+    for (int row = 0; row < rows; ++row) {
+      for (int column = first_column; column < end_column; ++column) {
+        const std::size_t i = raster.index(row, column);
+        if (mask[i] != 0) {
+          vertical[i] = Distance{0};
+        } else if (row > 0) {
+          vertical[i] = static_cast<Distance>(
+              std::min(vertical[i - static_cast<std::size_t>(columns)] + 1, cap));
+        }
       }
     }
-  }
-  for (int row = rows - 2; row >= 0; --row) {
-    for (int column = 0; column < columns; ++column) {
-      const std::size_t i = raster.index(row, column);
-      vertical[i] = static_cast<Distance>(
-          std::min<int>(vertical[i], vertical[i + static_cast<std::size_t>(columns)] + 1));
+    for (int row = rows - 2; row >= 0; --row) {
+      for (int column = first_column; column < end_column; ++column) {
+        const std::size_t i = raster.index(row, column);
+        vertical[i] = static_cast<Distance>(
+            std::min<int>(vertical[i], vertical[i + static_cast<std::size_t>(columns)] + 1));
+      }
     }
-  }
+  });
 
   // Pass 2, along the rows: the squared distance is the lower envelope of the parabolas
   // (column - q)^2 + vertical(q)^2 over the columns q with a set cell within reach. Cells
@@ -196,41 +214,48 @@ std::vector<CellMask> dilateWithin(const CoverageRaster& raster, const CellMask&
   std::vector<CellMask> grown(reaches.size(), CellMask(raster.cellCount(), 0));
   std::vector<double> reaches_squared;
   for (double reach : reaches) reaches_squared.push_back(reach * reach);
-  std::vector<int> positions;
-  std::vector<double> heights;
-  ParabolaEnvelope envelope;
-  for (int row = 0; row < rows; ++row) {
-    const Distance* line = vertical.data() + raster.index(row, 0);
-    positions.clear();
-    heights.clear();
-    bool any_unset = false;
-    for (int column = 0; column < columns; ++column) {
-      const int v = line[column];
-      any_unset = any_unset || v != 0;
-      if (v >= cap) continue;
-      const bool run_inside = v == 0 && column > 0 && column + 1 < columns &&
-                              line[column - 1] == 0 && line[column + 1] == 0;
-      if (run_inside) continue;
-      positions.push_back(column);
-      heights.push_back(static_cast<double>(v) * v);
-    }
-    for (CellMask& out : grown) {
-      std::uint8_t* out_row = out.data() + raster.index(row, 0);
-      for (int column = 0; column < columns; ++column) out_row[column] = line[column] == 0 ? 1 : 0;
-    }
-    if (!any_unset || positions.empty()) continue;
-    envelope.build(positions, heights);
-    const int first = std::max(0, positions.front() - reach_columns);
-    const int last = std::min(columns - 1, positions.back() + reach_columns);
-    const std::size_t row_start = raster.index(row, 0);
-    for (int column = first; column <= last; ++column) {
-      if (line[column] == 0) continue;
-      const double value = envelope.valueAt(column);
-      for (std::size_t k = 0; k < grown.size(); ++k) {
-        if (value <= reaches_squared[k]) grown[k][row_start + column] = 1;
+  parallelForOnThreads(threads, threads, [&](std::size_t block, std::size_t) {
+    int first_row = 0;
+    int end_row = 0;
+    blocks(rows, block, &first_row, &end_row);
+    std::vector<int> positions;
+    std::vector<double> heights;
+    ParabolaEnvelope envelope;
+    for (int row = first_row; row < end_row; ++row) {
+      const Distance* line = vertical.data() + raster.index(row, 0);
+      positions.clear();
+      heights.clear();
+      bool any_unset = false;
+      for (int column = 0; column < columns; ++column) {
+        const int v = line[column];
+        any_unset = any_unset || v != 0;
+        if (v >= cap) continue;
+        const bool run_inside = v == 0 && column > 0 && column + 1 < columns &&
+                                line[column - 1] == 0 && line[column + 1] == 0;
+        if (run_inside) continue;
+        positions.push_back(column);
+        heights.push_back(static_cast<double>(v) * v);
+      }
+      for (CellMask& out : grown) {
+        std::uint8_t* out_row = out.data() + raster.index(row, 0);
+        for (int column = 0; column < columns; ++column) {
+          out_row[column] = line[column] == 0 ? 1 : 0;
+        }
+      }
+      if (!any_unset || positions.empty()) continue;
+      envelope.build(positions, heights);
+      const int first = std::max(0, positions.front() - reach_columns);
+      const int last = std::min(columns - 1, positions.back() + reach_columns);
+      const std::size_t row_start = raster.index(row, 0);
+      for (int column = first; column <= last; ++column) {
+        if (line[column] == 0) continue;
+        const double value = envelope.valueAt(column);
+        for (std::size_t k = 0; k < grown.size(); ++k) {
+          if (value <= reaches_squared[k]) grown[k][row_start + column] = 1;
+        }
       }
     }
-  }
+  });
   return grown;
 }
 

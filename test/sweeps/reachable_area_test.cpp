@@ -100,6 +100,34 @@ TEST(ReachableArea, FewSetCellsAndManyMeetTheSameExactCriterion) {
   }
 }
 
+TEST(ReachableArea, LargeGridsOnSeveralThreadsMeetTheExactCriterion) {
+  // A grid large enough for the transform to run in blocks on every thread: the same cells
+  // as a disc stamped around each set cell.
+  const CoverageRaster raster({0.0, 0.0}, 0.1, 640, 500);
+  std::mt19937 rng(31);
+  std::uniform_int_distribution<std::size_t> cell(0, raster.cellCount() - 1);
+  CellMask mask(raster.cellCount(), 0);
+  for (int k = 0; k < 6000; ++k) mask[cell(rng)] = 1;
+  const double radius = 0.45;
+  const double reach = radius / raster.cellSize() + 0.5;
+  CellMask expected = mask;
+  for (std::size_t j = 0; j < mask.size(); ++j) {
+    if (mask[j] == 0) continue;
+    const int row = static_cast<int>(j) / raster.columns();
+    const int column = static_cast<int>(j) % raster.columns();
+    for (int dy = -5; dy <= 5; ++dy) {
+      for (int dx = -5; dx <= 5; ++dx) {
+        const int r = row + dy;
+        const int c = column + dx;
+        if (r < 0 || r >= raster.rows() || c < 0 || c >= raster.columns()) continue;
+        if (static_cast<double>(dx * dx + dy * dy) <= reach * reach)
+          expected[raster.index(r, c)] = 1;
+      }
+    }
+  }
+  EXPECT_EQ(dilateMask(raster, mask, radius), expected);
+}
+
 TEST(ReachableArea, LongReachMatchesBruteForce) {
   // A reach of hundreds of cells (wider distance storage).
   const CoverageRaster raster({0.0, 0.0}, 0.01, 300, 290);
