@@ -160,33 +160,27 @@ class ParabolaEnvelope {
 /// Cells from which dilateMask's distance transform runs on every hardware thread.
 constexpr std::size_t kParallelDilationCells = 250'000;
 
-/// The two passes of dilateMask with vertical distances stored as `Distance`, an integer
-/// type that holds `cap`, so that the distance grid stays small: one mask per reach (in
-/// cells, centre to centre; `cap` beyond the largest), all from the same distances.
-template <typename Distance>
-std::vector<CellMask> dilateWithin(const CoverageRaster& raster, const CellMask& mask, int cap,
-                                   const std::vector<double>& reaches) {
-  const int columns = raster.columns();
-  const int rows = raster.rows();
-  const double largest = *std::max_element(reaches.begin(), reaches.end());
-  const int reach_columns = static_cast<int>(std::min(largest, static_cast<double>(columns)));
-
-  // Both passes on every hardware thread for large grids: pass 1 in blocks of columns, pass
-  // 2 in blocks of rows, each block independent of the others (the same distances).
+/// Calls body(first, end) for `count` items (rows or columns) cut into one block per
+/// thread, the blocks on every hardware thread for grids of kParallelDilationCells or more.
+template <typename Body>
+void forEachBlock(const CoverageRaster& raster, int count, Body&& body) {
   const std::size_t threads =
       raster.cellCount() >= kParallelDilationCells ? parallelThreadCount(raster.cellCount()) : 1;
-  const auto blocks = [&](int count, std::size_t block, int* first, int* end) {
-    *first = static_cast<int>(static_cast<long long>(count) * block / threads);
-    *end = static_cast<int>(static_cast<long long>(count) * (block + 1) / threads);
-  };
-
-  // Pass 1, along the columns (row by row, so memory is read in order): cells to the
-  // nearest set cell in the same column, capped.
-  std::vector<Distance> vertical(raster.cellCount(), static_cast<Distance>(cap));
   parallelForOnThreads(threads, threads, [&](std::size_t block, std::size_t) {
-    int first_column = 0;
-    int end_column = 0;
-    blocks(columns, block, &first_column, &end_column);
+    body(static_cast<int>(static_cast<long long>(count) * block / threads),
+         static_cast<int>(static_cast<long long>(count) * (block + 1) / threads));
+  });
+}
+
+/// Pass 1 of dilateMask, along the columns (row by row, so memory is read in order): cells
+/// to the nearest set cell in the same column, capped at `cap`; blocks of columns apart.
+template <typename Distance>
+std::vector<Distance> verticalDistances(const CoverageRaster& raster, const CellMask& mask,
+                                        int cap) {
+  const int columns = raster.columns();
+  const int rows = raster.rows();
+  std::vector<Distance> vertical(raster.cellCount(), static_cast<Distance>(cap));
+  forEachBlock(raster, columns, [&](int first_column, int end_column) {
     for (int row = 0; row < rows; ++row) {
       for (int column = first_column; column < end_column; ++column) {
         const std::size_t i = raster.index(row, column);
@@ -206,18 +200,28 @@ std::vector<CellMask> dilateWithin(const CoverageRaster& raster, const CellMask&
       }
     }
   });
+  return vertical;
+}
 
-  // Pass 2, along the rows: the squared distance is the lower envelope of the parabolas
-  // (column - q)^2 + vertical(q)^2 over the columns q with a set cell within reach. Cells
-  // with vertical 0 are set; inside a run of them only the run's ends can be nearest to a
-  // cell outside the run, so the parabolas of the run's inside are left out.
+/// The two passes of dilateMask with vertical distances stored as `Distance`, an integer
+/// type that holds `cap`, so that the distance grid stays small: one mask per reach (in
+/// cells, centre to centre; `cap` beyond the largest), all from the same distances.
+template <typename Distance>
+std::vector<CellMask> dilateWithin(const CoverageRaster& raster, const CellMask& mask, int cap,
+                                   const std::vector<double>& reaches) {
+  const int columns = raster.columns();
+  const double largest = *std::max_element(reaches.begin(), reaches.end());
+  const int reach_columns = static_cast<int>(std::min(largest, static_cast<double>(columns)));
+  const std::vector<Distance> vertical = verticalDistances<Distance>(raster, mask, cap);
+
+  // Pass 2, along the rows (blocks of rows apart): the squared distance is the lower envelope
+  // of the parabolas (column - q)^2 + vertical(q)^2 over the columns q with a set cell within
+  // reach. Cells with vertical 0 are set; inside a run of them only the run's ends can be
+  // nearest to a cell outside the run, so the parabolas of the run's inside are left out.
   std::vector<CellMask> grown(reaches.size(), CellMask(raster.cellCount(), 0));
   std::vector<double> reaches_squared;
   for (double reach : reaches) reaches_squared.push_back(reach * reach);
-  parallelForOnThreads(threads, threads, [&](std::size_t block, std::size_t) {
-    int first_row = 0;
-    int end_row = 0;
-    blocks(rows, block, &first_row, &end_row);
+  forEachBlock(raster, raster.rows(), [&](int first_row, int end_row) {
     std::vector<int> positions;
     std::vector<double> heights;
     ParabolaEnvelope envelope;
