@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "polygon_coverage_ros_bridge/base/parallel_for.h"
 #include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
 
 namespace kinematic_coverage::core {
@@ -45,15 +46,20 @@ Decomposition computeBestDecomposition(const PolygonWithHoles& area, Decompositi
   rings.insert(rings.end(), area.holes.begin(), area.holes.end());
   const std::vector<double> directions = candidateDirections(rings, options.max_directions);
   const SweepLineDecomposition decomposition(type, options.joining);
-  Decomposition best;
-  best.total_altitude = std::numeric_limits<double>::infinity();
-  for (double direction : directions) {
-    Decomposition candidate;
-    candidate.direction = direction;
-    for (Ring& polygon : decomposition.decompose(area, direction)) {
-      candidate.cells.push_back(makeCell(std::move(polygon), direction, options));
+  // The directions on every hardware thread; the first of least total altitude wins, and a
+  // failure is the first direction's in order, as one loop would have it.
+  std::vector<Decomposition> candidates(directions.size());
+  parallelForInOrder(directions.size(), [&](std::size_t k) {
+    Decomposition& candidate = candidates[k];
+    candidate.direction = directions[k];
+    for (Ring& polygon : decomposition.decompose(area, directions[k])) {
+      candidate.cells.push_back(makeCell(std::move(polygon), directions[k], options));
       candidate.total_altitude += candidate.cells.back().altitude;
     }
+  });
+  Decomposition best;
+  best.total_altitude = std::numeric_limits<double>::infinity();
+  for (Decomposition& candidate : candidates) {
     if (candidate.total_altitude < best.total_altitude) best = std::move(candidate);
   }
   best.directions_tried = directions.size();

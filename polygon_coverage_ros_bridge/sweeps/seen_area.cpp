@@ -124,10 +124,27 @@ void SeenArea::addPoses(const std::vector<Pose2>& poses, const FrustumSensor& se
     if (first_row >= end_row) return;
     BandSteps cells;
     std::vector<CellSpan> spans;
+    std::vector<CellSpan> end_footprint;  // of the latest step, when it was a rotation
+    bool end_footprint_known = false;
     for (const std::vector<Ring>& area : step_areas) {
       spans.clear();
-      for (const Ring& convex : area) {
-        raster_.appendConvexSpans(convex, spans, first_row, end_row);
+      std::size_t next_ring = 0;
+      if (area.size() >= 2) {
+        // A rotation in place: its start and end footprints first; the start one is the
+        // end one of the step before when that was a rotation too.
+        if (end_footprint_known) {
+          spans = end_footprint;
+        } else {
+          raster_.appendConvexSpans(area[0], spans, first_row, end_row);
+        }
+        end_footprint.clear();
+        raster_.appendConvexSpans(area[1], end_footprint, first_row, end_row);
+        spans.insert(spans.end(), end_footprint.begin(), end_footprint.end());
+        next_ring = 2;
+      }
+      end_footprint_known = area.size() >= 2;
+      for (std::size_t r = next_ring; r < area.size(); ++r) {
+        raster_.appendConvexSpans(area[r], spans, first_row, end_row);
       }
       markStep(spans, cells);
     }
@@ -136,12 +153,38 @@ void SeenArea::addPoses(const std::vector<Pose2>& poses, const FrustumSensor& se
 
 void SeenArea::markStep(std::vector<CellSpan>& spans, BandSteps& band) {
   // The step's cells as disjoint spans in row-major order (one convex area's spans come
-  // in order already).
+  // in order already; several areas' are put in order by row, then by begin in each row).
   const auto row_major = [](const CellSpan& a, const CellSpan& b) {
     return a.row < b.row || (a.row == b.row && a.begin < b.begin);
   };
   if (!std::is_sorted(spans.begin(), spans.end(), row_major)) {
-    std::sort(spans.begin(), spans.end(), row_major);
+    int low = spans.front().row;
+    int high = low;
+    for (const CellSpan& span : spans) {
+      low = std::min(low, span.row);
+      high = std::max(high, span.row);
+    }
+    std::vector<std::size_t>& row_start = band.row_start;
+    row_start.assign(static_cast<std::size_t>(high - low) + 2, 0);
+    for (const CellSpan& span : spans) ++row_start[static_cast<std::size_t>(span.row - low) + 1];
+    for (std::size_t r = 1; r < row_start.size(); ++r) row_start[r] += row_start[r - 1];
+    std::vector<CellSpan>& ordered = band.ordered;
+    ordered.resize(spans.size());
+    for (const CellSpan& span : spans) {
+      ordered[row_start[static_cast<std::size_t>(span.row - low)]++] = span;
+    }
+    // row_start[r] is now where row r + 1 begins; each row's few spans by begin.
+    std::size_t begin = 0;
+    for (std::size_t r = 0; r + 1 < row_start.size(); ++r) {
+      const std::size_t end = row_start[r];
+      for (std::size_t i = begin + 1; i < end; ++i) {
+        for (std::size_t j = i; j > begin && ordered[j].begin < ordered[j - 1].begin; --j) {
+          std::swap(ordered[j], ordered[j - 1]);
+        }
+      }
+      begin = end;
+    }
+    spans.swap(ordered);
   }
   std::vector<CellSpan>& step_cells = band.current;
   const std::vector<CellSpan>& previous_step_cells = band.previous;

@@ -95,6 +95,8 @@ class SeenArea {
   struct BandSteps {
     std::vector<CellSpan> previous;
     std::vector<CellSpan> current;
+    std::vector<CellSpan> ordered;       ///< scratch: a step's spans put in order
+    std::vector<std::size_t> row_start;  ///< scratch: where each row's spans go
   };
 
   /// Marks the cells of `spans` (reordered; all in the band's rows) as seen in the current
