@@ -157,15 +157,17 @@ class ParabolaEnvelope {
   std::size_t segment_ = 0;
 };
 
-/// Cells from which dilateMask's distance transform runs on every hardware thread.
-constexpr std::size_t kParallelDilationCells = 250'000;
+/// Grid cells from which the distance transform and the reachable area's rim are computed
+/// on every hardware thread.
+constexpr std::size_t kParallelGridCells = 250'000;
 
 /// Calls body(first, end) for `count` items (rows or columns) cut into one block per
-/// thread, the blocks on every hardware thread for grids of kParallelDilationCells or more.
+/// thread, the blocks on every hardware thread for grids of kParallelGridCells or more
+/// (the distance transform's passes, the reachable area's rim).
 template <typename Body>
 void forEachBlock(const CoverageRaster& raster, int count, Body&& body) {
   const std::size_t threads =
-      raster.cellCount() >= kParallelDilationCells ? parallelThreadCount(raster.cellCount()) : 1;
+      raster.cellCount() >= kParallelGridCells ? parallelThreadCount(raster.cellCount()) : 1;
   parallelForOnThreads(threads, threads, [&](std::size_t block, std::size_t) {
     body(static_cast<int>(static_cast<long long>(count) * block / threads),
          static_cast<int>(static_cast<long long>(count) * (block + 1) / threads));
@@ -398,10 +400,13 @@ CellMask reachableArea(const CoverageRaster& raster, const CellMask& free_area,
   const CellMask& surely = grown[1];
   const CellMask& maybe = grown[2];
   const EdgeBuckets edges(offset_parts, reach);
-  for (std::size_t i = 0; i < reachable.size(); ++i) {
-    if (free_area[i] == 0 || maybe[i] == 0 || surely[i] != 0) continue;
-    reachable[i] = edges.near(raster.cellCentre(i)) ? 1 : 0;
-  }
+  forEachBlock(raster, raster.rows(), [&](int first_row, int end_row) {
+    const std::size_t end = raster.index(end_row, 0);
+    for (std::size_t i = raster.index(first_row, 0); i < end; ++i) {
+      if (free_area[i] == 0 || maybe[i] == 0 || surely[i] != 0) continue;
+      reachable[i] = edges.near(raster.cellCentre(i)) ? 1 : 0;
+    }
+  });
   return reachable;
 }
 

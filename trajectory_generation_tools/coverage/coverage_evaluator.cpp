@@ -158,13 +158,24 @@ std::vector<UnseenRegion> CoverageEvaluator::unseenRegions(const SeenArea& seen,
                                                            double join_distance) const {
   requireOwnRaster(seen);
   const auto unseen = [&](std::size_t i) { return reachable_area_[i] != 0 && !seen.seen(i); };
-  // Cells within the join distance of each other are connected through the unseen cells
-  // grown by half of it; only the unseen cells count.
+  // The unseen cells, in one pass over the grid (usually a sliver of it); cells within the
+  // join distance of each other are connected through the unseen cells grown by half of it,
+  // and only the unseen cells count.
+  std::vector<std::size_t> unseen_cells;
   CellMask joined;
   if (join_distance > 0.0) {
     CellMask mask(raster_.cellCount(), 0);
-    for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = unseen(i) ? 1 : 0;
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+      if (unseen(i)) {
+        mask[i] = 1;
+        unseen_cells.push_back(i);
+      }
+    }
     joined = dilateMask(raster_, mask, 0.5 * join_distance);
+  } else {
+    for (std::size_t i = 0; i < raster_.cellCount(); ++i) {
+      if (unseen(i)) unseen_cells.push_back(i);
+    }
   }
   const auto connected = [&](std::size_t i) { return joined.empty() ? unseen(i) : joined[i] != 0; };
   // Flood fill over the connected cells, 8-connected; each cell is visited once.
@@ -174,8 +185,8 @@ std::vector<UnseenRegion> CoverageEvaluator::unseenRegions(const SeenArea& seen,
   std::vector<UnseenRegion> regions;
   const int columns = raster_.columns();
   const int rows = raster_.rows();
-  for (std::size_t first = 0; first < done.size(); ++first) {
-    if (done[first] != 0 || !unseen(first)) continue;
+  for (const std::size_t first : unseen_cells) {
+    if (done[first] != 0) continue;
     Point2 sum = Point2::Zero();
     Point2 low = Point2::Constant(std::numeric_limits<double>::infinity());
     Point2 high = -low;
