@@ -153,30 +153,36 @@ std::optional<UnseenRegion> CoverageEvaluator::largestUnseenRegion(const SeenAre
   return std::move(regions.front());
 }
 
+std::vector<std::size_t> CoverageEvaluator::unseenCells(const SeenArea& seen, double join_distance,
+                                                        CellMask* joined) const {
+  // One pass over the grid (the unseen cells are usually a sliver of it); cells within the
+  // join distance of each other are connected through the unseen cells grown by half of it.
+  std::vector<std::size_t> cells;
+  const auto unseen = [&](std::size_t i) { return reachable_area_[i] != 0 && !seen.seen(i); };
+  if (!(join_distance > 0.0)) {
+    for (std::size_t i = 0; i < raster_.cellCount(); ++i) {
+      if (unseen(i)) cells.push_back(i);
+    }
+    return cells;
+  }
+  CellMask mask(raster_.cellCount(), 0);
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    if (unseen(i)) {
+      mask[i] = 1;
+      cells.push_back(i);
+    }
+  }
+  *joined = dilateMask(raster_, mask, 0.5 * join_distance);
+  return cells;
+}
+
 std::vector<UnseenRegion> CoverageEvaluator::unseenRegions(const SeenArea& seen,
                                                            std::size_t samples_per_region,
                                                            double join_distance) const {
   requireOwnRaster(seen);
   const auto unseen = [&](std::size_t i) { return reachable_area_[i] != 0 && !seen.seen(i); };
-  // The unseen cells, in one pass over the grid (usually a sliver of it); cells within the
-  // join distance of each other are connected through the unseen cells grown by half of it,
-  // and only the unseen cells count.
-  std::vector<std::size_t> unseen_cells;
   CellMask joined;
-  if (join_distance > 0.0) {
-    CellMask mask(raster_.cellCount(), 0);
-    for (std::size_t i = 0; i < mask.size(); ++i) {
-      if (unseen(i)) {
-        mask[i] = 1;
-        unseen_cells.push_back(i);
-      }
-    }
-    joined = dilateMask(raster_, mask, 0.5 * join_distance);
-  } else {
-    for (std::size_t i = 0; i < raster_.cellCount(); ++i) {
-      if (unseen(i)) unseen_cells.push_back(i);
-    }
-  }
+  const std::vector<std::size_t> unseen_cells = unseenCells(seen, join_distance, &joined);
   const auto connected = [&](std::size_t i) { return joined.empty() ? unseen(i) : joined[i] != 0; };
   // Flood fill over the connected cells, 8-connected; each cell is visited once.
   std::vector<std::uint8_t> done(raster_.cellCount(), 0);

@@ -126,6 +126,11 @@ class CoverageEvaluator {
   /// Map frame to raster frame, and back.
   Point2 toRaster(const Point2& p) const;
   Point2 fromRaster(const Point2& p) const;
+  /// The reachable cells `seen` never saw, ascending; with a join distance > 0, `joined`
+  /// gets them grown by half of it (the cells through which unseen cells connect), else it
+  /// stays empty.
+  std::vector<std::size_t> unseenCells(const SeenArea& seen, double join_distance,
+                                       CellMask* joined) const;
   /// Throws InvalidInputError unless `seen` was made on this evaluator's raster.
   void requireOwnRaster(const SeenArea& seen) const;
   std::vector<Pose2> toRaster(const std::vector<Pose2>& poses) const;
