@@ -94,7 +94,7 @@ std::vector<int> MemeticGtspSolver::randomSequence() {
 std::vector<int> MemeticGtspSolver::sequenceFromTour(const std::vector<int>& tour) const {
   if (instance_.isPath()) return tour;
   std::size_t first = 0;
-  while (searches_.front().clusterOf(tour[first]) != anchor_cluster_) ++first;
+  while (clusterOf(tour[first]) != anchor_cluster_) ++first;
   std::vector<int> sequence;
   for (std::size_t i = 0; i <= tour.size(); ++i)
     sequence.push_back(tour[(first + i) % tour.size()]);
@@ -113,14 +113,14 @@ std::vector<int> MemeticGtspSolver::crossover(const std::vector<int>& first,
   std::vector<bool> used(instance_.clusters.size(), false);
   for (std::size_t i = a; i <= b; ++i) {
     child[i + 1] = first[i + 1];
-    used[searches_.front().clusterOf(first[i + 1])] = true;
+    used[clusterOf(first[i + 1])] = true;
   }
   std::size_t source = (b + 1) % interior;
   for (std::size_t k = 0; k < interior - (b - a + 1); ++k) {
     const std::size_t target = (b + 1 + k) % interior;
-    while (used[searches_.front().clusterOf(second[source + 1])]) source = (source + 1) % interior;
+    while (used[clusterOf(second[source + 1])]) source = (source + 1) % interior;
     child[target + 1] = second[source + 1];
-    used[searches_.front().clusterOf(second[source + 1])] = true;
+    used[clusterOf(second[source + 1])] = true;
   }
   return child;
 }
@@ -147,8 +147,7 @@ void MemeticGtspSolver::markNewEdges(const std::vector<int>& child, const std::v
   auto successors = [&](const std::vector<int>& sequence, std::vector<int>& successor) {
     successor.assign(m, -1);
     for (std::size_t i = 0; i + 1 < sequence.size(); ++i) {
-      successor[searches_.front().clusterOf(sequence[i])] =
-          searches_.front().clusterOf(sequence[i + 1]);
+      successor[clusterOf(sequence[i])] = clusterOf(sequence[i + 1]);
     }
   };
   successors(first, first_successor_);
@@ -159,8 +158,8 @@ void MemeticGtspSolver::markNewEdges(const std::vector<int>& child, const std::v
   }
   focus_.assign(m, 0);
   for (std::size_t i = 0; i + 1 < child.size(); ++i) {
-    const int from = searches_.front().clusterOf(child[i]);
-    const int to = searches_.front().clusterOf(child[i + 1]);
+    const int from = clusterOf(child[i]);
+    const int to = clusterOf(child[i + 1]);
     if (first_successor_[from] != to && second_successor_[from] != to) {
       focus_[from] = 1;
       focus_[to] = 1;

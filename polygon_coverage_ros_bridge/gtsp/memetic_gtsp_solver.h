@@ -59,6 +59,7 @@ class MemeticGtspSolver {
   /// Index of the better of two random population members.
   std::size_t tournament(const std::vector<Individual>& population);
   std::size_t randomIndex(std::size_t bound) { return bound <= 1 ? 0 : random_() % bound; }
+  int clusterOf(int node) const { return searches_.front().clusterOf(node); }
   GtspSolution toSolution(const Individual& individual) const;
   static bool byCost(const Individual& a, const Individual& b) { return a.cost < b.cost; }
   /// True when no member's cost equals `cost` (relatively): the population keeps one
