@@ -60,6 +60,8 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
                                      const RasterResolution& resolution, double grid_angle)
     : sensor_(requireValid(sensor)),
       grid_angle_(grid_angle),
+      to_raster_(Eigen::Rotation2Dd(-grid_angle).toRotationMatrix()),
+      from_raster_(Eigen::Rotation2Dd(grid_angle).toRotationMatrix()),
       raster_(CoverageRaster::covering(turned(free_area, -grid_angle), resolution)),
       free_area_(raster_.rasterize(turned(free_area, -grid_angle))),
       free_fractions_(raster_.areaFractions(turned(free_area, -grid_angle))) {
@@ -76,11 +78,11 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
 }
 
 Point2 CoverageEvaluator::toRaster(const Point2& p) const {
-  return grid_angle_ == 0.0 ? p : Point2(Eigen::Rotation2Dd(-grid_angle_) * p);
+  return grid_angle_ == 0.0 ? p : Point2(to_raster_ * p);
 }
 
 Point2 CoverageEvaluator::fromRaster(const Point2& p) const {
-  return grid_angle_ == 0.0 ? p : Point2(Eigen::Rotation2Dd(grid_angle_) * p);
+  return grid_angle_ == 0.0 ? p : Point2(from_raster_ * p);
 }
 
 std::vector<Pose2> CoverageEvaluator::toRaster(const std::vector<Pose2>& poses) const {
@@ -124,16 +126,9 @@ Heatmap CoverageEvaluator::heatmapOn(const SeenArea& seen, const CoverageRaster&
   requireOwnRaster(seen);
   Heatmap heatmap{grid.origin(), grid.cellSize(), grid.columns(), grid.rows(),
                   std::vector<std::uint16_t>(grid.cellCount(), 0)};
-  const Eigen::Matrix2d to_raster = Eigen::Rotation2Dd(-grid_angle_).toRotationMatrix();
-  const double inverse_cell = 1.0 / raster_.cellSize();
-  for (int row = 0; row < grid.rows(); ++row) {
-    for (int column = 0; column < grid.columns(); ++column) {
-      const std::size_t index = grid.index(row, column);
-      const Point2 q = (to_raster * grid.cellCentre(index) - raster_.origin()) * inverse_cell;
-      if (q.x() >= 0.0 && q.y() >= 0.0 && q.x() < raster_.columns() && q.y() < raster_.rows()) {
-        heatmap.visits[index] =
-            seen.visits(raster_.index(static_cast<int>(q.y()), static_cast<int>(q.x())));
-      }
+  for (std::size_t index = 0; index < grid.cellCount(); ++index) {
+    if (const std::optional<std::size_t> cell = cellAt(grid.cellCentre(index))) {
+      heatmap.visits[index] = seen.visits(*cell);
     }
   }
   return heatmap;
@@ -158,21 +153,14 @@ std::vector<std::size_t> CoverageEvaluator::unseenCells(const SeenArea& seen, do
   // One pass over the grid (the unseen cells are usually a sliver of it); cells within the
   // join distance of each other are connected through the unseen cells grown by half of it.
   std::vector<std::size_t> cells;
-  const auto unseen = [&](std::size_t i) { return reachable_area_[i] != 0 && !seen.seen(i); };
-  if (!(join_distance > 0.0)) {
-    for (std::size_t i = 0; i < raster_.cellCount(); ++i) {
-      if (unseen(i)) cells.push_back(i);
-    }
-    return cells;
+  for (std::size_t i = 0; i < raster_.cellCount(); ++i) {
+    if (unseenAt(seen, i)) cells.push_back(i);
   }
-  CellMask mask(raster_.cellCount(), 0);
-  for (std::size_t i = 0; i < mask.size(); ++i) {
-    if (unseen(i)) {
-      mask[i] = 1;
-      cells.push_back(i);
-    }
+  if (join_distance > 0.0) {
+    CellMask mask(raster_.cellCount(), 0);
+    for (std::size_t i : cells) mask[i] = 1;
+    *joined = dilateMask(raster_, mask, 0.5 * join_distance);
   }
-  *joined = dilateMask(raster_, mask, 0.5 * join_distance);
   return cells;
 }
 
@@ -180,7 +168,7 @@ std::vector<UnseenRegion> CoverageEvaluator::unseenRegions(const SeenArea& seen,
                                                            std::size_t samples_per_region,
                                                            double join_distance) const {
   requireOwnRaster(seen);
-  const auto unseen = [&](std::size_t i) { return reachable_area_[i] != 0 && !seen.seen(i); };
+  const auto unseen = [&](std::size_t i) { return unseenAt(seen, i); };
   CellMask joined;
   const std::vector<std::size_t> unseen_cells = unseenCells(seen, join_distance, &joined);
   const auto connected = [&](std::size_t i) { return joined.empty() ? unseen(i) : joined[i] != 0; };

@@ -131,12 +131,18 @@ class CoverageEvaluator {
   /// stays empty.
   std::vector<std::size_t> unseenCells(const SeenArea& seen, double join_distance,
                                        CellMask* joined) const;
+  /// True when cell `i` is reachable and `seen` never saw it.
+  bool unseenAt(const SeenArea& seen, std::size_t i) const {
+    return reachable_area_[i] != 0 && !seen.seen(i);
+  }
   /// Throws InvalidInputError unless `seen` was made on this evaluator's raster.
   void requireOwnRaster(const SeenArea& seen) const;
   std::vector<Pose2> toRaster(const std::vector<Pose2>& poses) const;
 
   FrustumSensor sensor_;
   double grid_angle_;
+  Eigen::Matrix2d to_raster_;    ///< turns the map frame by -grid_angle_
+  Eigen::Matrix2d from_raster_;  ///< and back
   CoverageRaster raster_;
   CellMask free_area_;
   /// Each cell's share inside the free area: the weight of coverage_percent.
