@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -678,13 +679,12 @@ WaypointRoute pathStage(const PlanningRun& run, const OffsetStage& offset, const
 /// Coverage repair: where the sweeps leave reachable area unseen, the jogs removed near it
 /// are put back, then patches are driven (UnseenAreaRepair). Returns the summary line.
 std::string repairStage(const PlanningRun& run, const OffsetStage& offset,
-                        const std::vector<PolygonWithHoles>* coverage_region,
-                        const FrustumSensor& sensor, const VisibilityGraph& graph,
-                        const SegmentCost& segment_cost, const JogRemoval& jog_removal,
-                        double max_jog_shift, WaypointRoute* route) {
+                        CoverageEvaluator measuring_raster, const FrustumSensor& sensor,
+                        const VisibilityGraph& graph, const SegmentCost& segment_cost,
+                        const JogRemoval& jog_removal, double max_jog_shift, WaypointRoute* route) {
   CoveragePlan& plan = run.plan;
-  const UnseenAreaRepair repair(run.free_area, offset.planned_parts, sensor, graph, segment_cost,
-                                coverage_region);
+  const UnseenAreaRepair repair(std::move(measuring_raster), offset.planned_parts, sensor, graph,
+                                segment_cost);
   // Jogs whose removal shifted a lane off what it had to see are put back first: near
   // a wall that the lane's footprint reaches exactly, any shift inward leaves a band.
   std::size_t jogs_restored = 0;
@@ -765,6 +765,15 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   const char* failing_stage = "simplify";
   try {
     const FrustumSensor sensor = sensorOf(parameters_);
+    // The repair's raster depends only on the areas: built while the stages up to the
+    // path run (joined before `sensor` goes out of scope, even when a stage throws).
+    std::future<CoverageEvaluator> measuring_raster;
+    if (parameters_.coverage_repair) {
+      measuring_raster = std::async(std::launch::async, [&] {
+        return UnseenAreaRepair::measuringRaster(free_area, offset.planned_parts, sensor,
+                                                 coverage_region);
+      });
+    }
     const double simplification = boundarySimplificationOf(parameters_);
     const std::vector<PolygonWithHoles> simplified = simplifyStage(run, parts, simplification);
     const DecomposedParts decomposed{parts, simplified};
@@ -811,7 +820,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     if (parameters_.coverage_repair) {
       t = Clock::now();
       failing_stage = "repair";
-      const std::string repaired = repairStage(run, offset, coverage_region, sensor, graph,
+      const std::string repaired = repairStage(run, offset, measuring_raster.get(), sensor, graph,
                                                segment_cost, jog_removal, max_jog_shift, &route);
       run.stage("repair", t, repaired + describe(route.waypoints));
     }

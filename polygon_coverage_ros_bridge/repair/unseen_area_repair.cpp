@@ -50,14 +50,29 @@ UnseenAreaRepair::UnseenAreaRepair(const PolygonWithHoles& free_area,
                                    const FrustumSensor& sensor, const VisibilityGraph& graph,
                                    const SegmentCost& segment_cost,
                                    const std::vector<PolygonWithHoles>* coverage_region)
+    : UnseenAreaRepair(measuringRaster(free_area, planned_parts, sensor, coverage_region),
+                       planned_parts, sensor, graph, segment_cost) {}
+
+CoverageEvaluator UnseenAreaRepair::measuringRaster(
+    const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& planned_parts,
+    const FrustumSensor& sensor, const std::vector<PolygonWithHoles>* coverage_region) {
+  CoverageEvaluator evaluator(free_area, planned_parts, sensor, reportingResolution(),
+                              kReportingGridAngle);
+  if (coverage_region != nullptr) evaluator.restrictReachableArea(*coverage_region);
+  return evaluator;
+}
+
+UnseenAreaRepair::UnseenAreaRepair(CoverageEvaluator measuring_raster,
+                                   std::vector<PolygonWithHoles> planned_parts,
+                                   const FrustumSensor& sensor, const VisibilityGraph& graph,
+                                   const SegmentCost& segment_cost)
     : planned_parts_(std::move(planned_parts)),
       sensor_(sensor),
-      evaluator_(free_area, planned_parts_, sensor_, reportingResolution(), kReportingGridAngle),
+      evaluator_(std::move(measuring_raster)),
       graph_(graph),
       segment_cost_(segment_cost),
       min_region_m2_(kMinRegionShare * sensor.width() * sensor.width()),
       join_distance_(kJoinShare * sensor.width()) {
-  if (coverage_region != nullptr) evaluator_.restrictReachableArea(*coverage_region);
   for (const PolygonWithHoles& part : planned_parts_) {
     rings_.push_back(part.hull);
     for (const Ring& hole : part.holes) rings_.push_back(hole);

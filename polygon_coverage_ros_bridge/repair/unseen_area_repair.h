@@ -47,6 +47,19 @@ class UnseenAreaRepair {
                    const SegmentCost& segment_cost,
                    const std::vector<PolygonWithHoles>* coverage_region = nullptr);
 
+  /// The repair with the raster that measuringRaster() built (so that a planner can build
+  /// it while its earlier stages run).
+  UnseenAreaRepair(CoverageEvaluator measuring_raster, std::vector<PolygonWithHoles> planned_parts,
+                   const FrustumSensor& sensor, const VisibilityGraph& graph,
+                   const SegmentCost& segment_cost);
+
+  /// The raster on which the repair measures a path: the coverage report's, with the
+  /// reachable area of `free_area` and `planned_parts` (inside `coverage_region`, if given).
+  static CoverageEvaluator measuringRaster(const PolygonWithHoles& free_area,
+                                           const std::vector<PolygonWithHoles>& planned_parts,
+                                           const FrustumSensor& sensor,
+                                           const std::vector<PolygonWithHoles>* coverage_region);
+
   /// The path with its patches. Only legs between `first_inside` and `last_inside` (the
   /// waypoints inside the offset free area) get patches; start and goal stay.
   RepairedPath repair(std::vector<Point2> waypoints, std::size_t first_inside,
