@@ -302,7 +302,8 @@ TEST(GtspSolver, ReverseNodesOnPlannerLikeInstances) {
   GtspInstance large = randomSweepLikeInstance(rng, 58, 16);
   large.reverse_nodes = sweepLikeReverseNodes(large, 16);
   GtspOptions planner_options;
-  planner_options.max_population = 50;
+  planner_options.max_population = 30;
+  planner_options.stall_generations = 5 + 60 / 3;
   planner_options.focused_search = true;
   const GtspSolution focused = solveGtsp(large, planner_options);
   expectValidSolution(large, focused);
