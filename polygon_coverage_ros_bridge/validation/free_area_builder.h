@@ -17,14 +17,12 @@ struct BuiltFreeArea {
   double clean_s = 0.0;     ///< cleaning the polygon
 };
 
-/// Most vertices of one ring (the hull or a hole) of a free area planned as it is. The wall
-/// offset takes milliseconds at any size, but the route area's visibility graph and the cells
-/// grow with a noisy boundary's vertices: planned exactly, the 5 000-vertex lake chart of
-/// scaling_benchmark took 31 s (195 cells, sweeps 20 s), the 10 000-vertex one 108 s (483
-/// cells, its generalized TSP at the 60 s cap) (docs/BENCHMARKS.md has them simplified).
-/// The value keeps the maps of the straight-skeleton limit that came before it (8 million
-/// vertex pairs: about 4 000 noisy vertices) on the same side.
-constexpr std::size_t kMaxExactRingVertices = 4000;
+/// Most vertices of one ring (the hull or a hole) of a free area planned as it is. The route
+/// area's visibility graph, the cells and the transitions grow with a noisy boundary's
+/// vertices: planned exactly, the 5 000-vertex lake chart of scaling_benchmark takes 4.5 s
+/// (195 cells), the 10 000-vertex one 19 s (483 cells, 573 MB), within the goal of 30 s and
+/// 2 GB for such charts (docs/BENCHMARKS.md).
+constexpr std::size_t kMaxExactRingVertices = 10000;
 
 /// A point the input names, checked against the raw polygon: ("start", p) or ("goal", p).
 using NamedEndpoint = std::pair<std::string, Point2>;

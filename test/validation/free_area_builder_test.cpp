@@ -48,11 +48,11 @@ TEST(FreeAreaBuilder, RejectsInvalidPolygonsAndEndpointsBeforeCleaning) {
   EXPECT_NE(errorOf(split, {}), "");
 }
 
-/// A lake 120 m across whose shore has 6 000 vertices, a saw of 0.2 m teeth (3 000 reflex
+/// A lake 120 m across whose shore has 12 000 vertices, a saw of 0.2 m teeth (6 000 reflex
 /// vertices), and a 4 m island with a bay 0.3 m deep cut into it.
 PolygonWithHoles sawShoreLake() {
   PolygonWithHoles lake;
-  const int n = 6000;
+  const int n = 12000;
   for (int i = 0; i < n; ++i) {
     const double angle = 2.0 * M_PI * i / n;
     const double radius = i % 2 == 0 ? 60.2 : 60.0;
