@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates docs/EXPERIMENTS.md and docs/images/experiments_*.png: the thesis's two
-# experiments (Chapter 4, Tables 4.1 to 4.3) in simulation, plus a run in a current. Each
+# experiments (Chapter 4, Tables 4.1 to 4.3) in simulation, plus a run in a current and the
+# first, kinematic vehicle on the same trajectories. Each
 # mission is planned three times with `coverage_tool plan`: smoothed by the thesis's
 # Algorithm 1 (`smoothing_strategy: local`), smoothed with the default strategy, and
 # unsmoothed; the same robot follows every trajectory with `coverage_tool simulate`.
@@ -61,6 +62,19 @@ run() {
   grep '^simulate: ' "$out/$name/simulate.log" >&2
 }
 
+# resimulate NAME FROM MISSION [--set ...]: the robot of --set follows the trajectory planned
+# for run FROM, into $out/NAME.
+resimulate() {
+  local name=$1 from=$2 mission=$3
+  shift 3
+  echo "== $name" >&2
+  rm -rf "${out:?}/$name"
+  mkdir -p "$out/$name"
+  "$tool" simulate "$missions/$mission.yaml" --trajectory "$out/$from/plan/trajectory.csv" \
+    --out "$out/$name/simulate" "$@" >"$out/$name/simulate.log"
+  grep '^simulate: ' "$out/$name/simulate.log" >&2
+}
+
 for strategy in local default unsmoothed; do
   case $strategy in
     local) smoothing=("${local_smoothing[@]}") ;;
@@ -72,6 +86,13 @@ for strategy in local default unsmoothed; do
   run "lake_7_5_high_gain_$strategy" lake_7_5 "${smoothing[@]}" "${robot_high_gain[@]}"
 done
 run lake_30x30_current lake_30x30 "${default_smoothing[@]}" "${current[@]}"
+# The first, kinematic vehicle on the same trajectories, for comparison.
+for strategy in local unsmoothed; do
+  resimulate "lake_30x30_${strategy}_kinematic" "lake_30x30_$strategy" lake_30x30 \
+    --set vehicle_model=kinematic "${robot_high_gain[@]}"
+  resimulate "lake_7_5_${strategy}_kinematic" "lake_7_5_$strategy" lake_7_5 \
+    --set vehicle_model=kinematic "${robot_low_gain[@]}"
+done
 
 if $print_only; then
   /usr/bin/python3 "$root/scripts/experiments_report.py" "$out"

@@ -10,6 +10,7 @@
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/sweeps/sensor_options.h"
 #include "trajectory_generation_tools/replanning/remaining_area_options.h"
+#include "trajectory_generation_tools/simulation/robot_model.h"
 #include "trajectory_generation_tools/smoothing/smoothing_strategy.h"
 
 namespace kinematic_coverage::core {
@@ -38,6 +39,8 @@ inline constexpr ParameterChoices<SmoothingStrategy, 3> kSmoothingStrategies{
     {{"coverage_safe", SmoothingStrategy::kCoverageSafe},
      {"global", SmoothingStrategy::kGlobal},
      {"local", SmoothingStrategy::kLocal}}};
+inline constexpr ParameterChoices<VehicleModel, 2> kVehicleModels{
+    {{"dynamic", VehicleModel::kDynamic}, {"kinematic", VehicleModel::kKinematic}}};
 inline constexpr ParameterChoices<ReplanningMethod, 3> kReplanningMethods{
     {{"convex_hull", ReplanningMethod::kConvexHull},
      {"concave_hull", ReplanningMethod::kConcaveHull},

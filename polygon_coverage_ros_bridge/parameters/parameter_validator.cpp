@@ -37,6 +37,33 @@ void requireOpenAngle(const char* name, double value) {
   }
 }
 
+/// The dynamic vehicle's mass, damping, thrusters and loop gains.
+void validateRigidBody(const PlannerParameters& p) {
+  requirePositive("mass", p.mass, "kg");
+  requirePositive("inertia_yaw", p.inertia_yaw, "kg m^2");
+  for (const auto& [name, value, unit] : {
+           std::tuple<const char*, double, const char*>{"added_mass_surge", p.added_mass_surge,
+                                                        "kg"},
+           {"added_mass_sway", p.added_mass_sway, "kg"},
+           {"added_inertia_yaw", p.added_inertia_yaw, "kg m^2"},
+           {"damping_surge_linear", p.damping_surge_linear, "N s/m"},
+           {"damping_sway_linear", p.damping_sway_linear, "N s/m"},
+           {"damping_yaw_linear", p.damping_yaw_linear, "N m s/rad"},
+           {"damping_surge_quadratic", p.damping_surge_quadratic, "N s^2/m^2"},
+           {"damping_sway_quadratic", p.damping_sway_quadratic, "N s^2/m^2"},
+           {"damping_yaw_quadratic", p.damping_yaw_quadratic, "N m s^2/rad^2"},
+       }) {
+    if (!(std::isfinite(value) && value >= 0.0)) {
+      throw InvalidInputError(std::string(name) + " = " + formatNumber(value) +
+                              " is out of range: it must be a finite number >= 0 (" + unit + ")");
+    }
+  }
+  requirePositive("thrust_max", p.thrust_max, "N");
+  requirePositive("yaw_torque_max", p.yaw_torque_max, "N m");
+  requirePositive("surge_loop_gain", p.surge_loop_gain, "1/s");
+  requirePositive("yaw_rate_loop_gain", p.yaw_rate_loop_gain, "1/s");
+}
+
 }  // namespace
 
 void ParameterValidator::validate(const PlannerParameters& p) const {
@@ -90,6 +117,8 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
     }
   }
   requirePositive("alpha", p.alpha, "m");
+  choiceOf("vehicle_model", p.vehicle_model, kVehicleModels);
+  validateRigidBody(p);
   requirePositive("yaw_gain", p.yaw_gain, "1/s");
   requirePositive("position_gain", p.position_gain, "1/s");
   requirePositive("position_tolerance", p.position_tolerance, "m");
@@ -103,12 +132,16 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   }
   requirePositive("sim_dt", p.sim_dt, "s");
   requirePositive("sim_time_limit", p.sim_time_limit, "s");
-  // The discrete yaw controller turns yaw_gain * sim_dt of the heading error per step: above
-  // 1 it overshoots the heading it aims at and oscillates.
-  if (p.yaw_gain * p.sim_dt > 1.0) {
-    throw InvalidInputError("yaw_gain = " + formatNumber(p.yaw_gain) +
-                            " with sim_dt = " + formatNumber(p.sim_dt) +
-                            " is out of range: yaw_gain * sim_dt must be <= 1");
+  // A discrete proportional loop with gain k corrects k * sim_dt of its error per step:
+  // above 1 it overshoots what it aims at and oscillates.
+  for (const auto& [name, gain] : {std::pair<const char*, double>{"yaw_gain", p.yaw_gain},
+                                   {"surge_loop_gain", p.surge_loop_gain},
+                                   {"yaw_rate_loop_gain", p.yaw_rate_loop_gain}}) {
+    if (gain * p.sim_dt > 1.0) {
+      throw InvalidInputError(std::string(name) + " = " + formatNumber(gain) +
+                              " with sim_dt = " + formatNumber(p.sim_dt) +
+                              " is out of range: " + name + " * sim_dt must be <= 1");
+    }
   }
 }
 

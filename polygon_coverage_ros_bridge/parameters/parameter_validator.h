@@ -10,7 +10,9 @@ namespace kinematic_coverage::core {
 /// lateral_fov and onward_fov in (0, pi); every number finite; every name-valued
 /// parameter one of its values. The robot model's yaw_gain, position_gain,
 /// position_tolerance, sim_dt and sim_time_limit > 0, yaw_tolerance in (0, pi), the
-/// current finite, and yaw_gain * sim_dt <= 1.
+/// current finite; the dynamic vehicle's mass, inertia_yaw, thrust_max, yaw_torque_max and
+/// loop gains > 0, its added masses and damping >= 0; and yaw_gain, surge_loop_gain and
+/// yaw_rate_loop_gain times sim_dt <= 1.
 class ParameterValidator {
  public:
   /// Throws InvalidInputError naming the first parameter out of range, its value and the

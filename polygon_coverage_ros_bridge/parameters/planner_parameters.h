@@ -52,14 +52,31 @@ struct PlannerParameters {
   double replanning_simplify_tolerance = 0.1;  ///< m, boundary simplification of the remaining area
   double alpha = 2.0;                          ///< m, alpha-shape parameter
   // The robot model of `coverage_tool simulate` and auv_simulator (TrajectoryFollower).
-  double yaw_gain = 5.0;             ///< 1/s: yaw-rate command per rad of heading error
-  double position_gain = 1.5;        ///< 1/s: surge-speed command per m to the target
-  double position_tolerance = 0.05;  ///< m: a position target counts as reached within it
-  double yaw_tolerance = 0.05;       ///< rad: a turn-in-place target is reached within it
-  double current_x = 0.0;            ///< m/s: constant water current along x
-  double current_y = 0.0;            ///< m/s: constant water current along y
-  double sim_dt = 0.1;               ///< s: simulation time step
-  double sim_time_limit = 36000.0;   ///< s: simulated time after which a run gives up
+  std::string vehicle_model = "dynamic";  ///< "dynamic" or "kinematic"
+  // The dynamic vehicle (RigidBodyParameters: the BlueROV2's, Wu 2018).
+  double mass = 11.5;                      ///< kg
+  double added_mass_surge = 5.5;           ///< kg
+  double added_mass_sway = 12.7;           ///< kg
+  double inertia_yaw = 0.16;               ///< kg m^2
+  double added_inertia_yaw = 0.12;         ///< kg m^2
+  double damping_surge_linear = 4.03;      ///< N s/m
+  double damping_sway_linear = 6.22;       ///< N s/m
+  double damping_yaw_linear = 0.07;        ///< N m s/rad
+  double damping_surge_quadratic = 18.18;  ///< N s^2/m^2
+  double damping_sway_quadratic = 21.66;   ///< N s^2/m^2
+  double damping_yaw_quadratic = 1.55;     ///< N m s^2/rad^2
+  double thrust_max = 113.0;               ///< N
+  double yaw_torque_max = 30.0;            ///< N m
+  double surge_loop_gain = 5.0;            ///< 1/s: surge-speed loop bandwidth
+  double yaw_rate_loop_gain = 10.0;        ///< 1/s: yaw-rate loop bandwidth
+  double yaw_gain = 5.0;                   ///< 1/s: yaw-rate command per rad of heading error
+  double position_gain = 1.5;              ///< 1/s: surge-speed command per m to the target
+  double position_tolerance = 0.05;        ///< m: a position target counts as reached within it
+  double yaw_tolerance = 0.05;             ///< rad: a turn-in-place target is reached within it
+  double current_x = 0.0;                  ///< m/s: constant water current along x
+  double current_y = 0.0;                  ///< m/s: constant water current along y
+  double sim_dt = 0.1;                     ///< s: simulation time step
+  double sim_time_limit = 36000.0;         ///< s: simulated time after which a run gives up
 };
 
 }  // namespace kinematic_coverage::core

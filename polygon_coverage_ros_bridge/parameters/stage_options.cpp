@@ -110,7 +110,24 @@ TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters,
 RobotModel robotModelOf(const PlannerParameters& parameters) {
   const PlannerParameters& p = validated(parameters);
   RobotModel model;
+  model.vehicle_model = choiceOf("vehicle_model", p.vehicle_model, kVehicleModels);
   model.vehicle = vehicleLimits(p);
+  RigidBodyParameters& body = model.body;
+  body.mass = p.mass;
+  body.added_mass_surge = p.added_mass_surge;
+  body.added_mass_sway = p.added_mass_sway;
+  body.inertia_yaw = p.inertia_yaw;
+  body.added_inertia_yaw = p.added_inertia_yaw;
+  body.damping_surge_linear = p.damping_surge_linear;
+  body.damping_sway_linear = p.damping_sway_linear;
+  body.damping_yaw_linear = p.damping_yaw_linear;
+  body.damping_surge_quadratic = p.damping_surge_quadratic;
+  body.damping_sway_quadratic = p.damping_sway_quadratic;
+  body.damping_yaw_quadratic = p.damping_yaw_quadratic;
+  body.thrust_max = p.thrust_max;
+  body.yaw_torque_max = p.yaw_torque_max;
+  model.surge_loop_gain = p.surge_loop_gain;
+  model.yaw_rate_loop_gain = p.yaw_rate_loop_gain;
   model.yaw_gain = p.yaw_gain;
   model.position_gain = p.position_gain;
   model.position_tolerance = p.position_tolerance;

@@ -23,17 +23,23 @@
 namespace kinematic_coverage::core {
 namespace {
 
-/// `actual.csv` (docs/REFERENCE.md, File formats): t,x,y,yaw of every recorded step.
+/// `actual.csv` (docs/REFERENCE.md, File formats): the pose and the tracking errors of
+/// every recorded step.
 std::string actualCsv(const std::vector<SimulationStep>& steps) {
-  std::string text = "t,x,y,yaw\n";
+  std::string text = "t,x,y,yaw,error_m,error_x_m,error_y_m,target_error_m\n";
   for (const SimulationStep& step : steps) {
-    text += formatRoundTrip(step.t) + "," + formatRoundTrip(step.pose.x) + "," +
-            formatRoundTrip(step.pose.y) + "," + formatRoundTrip(step.pose.yaw) + "\n";
+    for (const double value :
+         {step.t, step.pose.x, step.pose.y, step.pose.yaw, step.tracking_error_m,
+          step.tracking_error_x_m, step.tracking_error_y_m}) {
+      text += formatRoundTrip(value) + ",";
+    }
+    text += formatRoundTrip(step.target_error_m) + "\n";
   }
   return text;
 }
 
-/// `tracking_error_percentiles_m`: "1" ... "99" to metres, as in Table 4.2.
+/// `tracking_error_percentiles_m` or `tracking_error_target_percentiles_m`: "1" ... "99"
+/// to metres, as in Table 4.2.
 JsonObject percentileObject(const TrackingErrorStatistics& tracking) {
   JsonObject percentiles;
   for (std::size_t i = 0; i < kTrackingErrorPercentiles.size(); ++i) {
@@ -54,11 +60,20 @@ std::vector<Pose2> actualPoses(const SimulationResult& simulation) {
 JsonObject simulationMetrics(const SimulationResult& simulation,
                              const TrajectoryCoverage& coverage) {
   const TrackingErrorStatistics& tracking = simulation.tracking;
+  const AxisErrorStatistics& axes = simulation.tracking_axes;
+  const TrackingErrorStatistics& target = simulation.target_tracking;
   JsonObject metrics;
   metrics.set("traversal_time_s", simulation.traversal_time_s)
       .set("tracking_error_sum_m", tracking.sum_m)
       .set("tracking_error_mean_m", tracking.mean_m)
-      .set("tracking_error_percentiles_m", percentileObject(tracking));
+      .set("tracking_error_percentiles_m", percentileObject(tracking))
+      .set("tracking_error_x_mean_m", axes.x_mean_m)
+      .set("tracking_error_y_mean_m", axes.y_mean_m)
+      .set("tracking_error_x_max_m", axes.x_max_m)
+      .set("tracking_error_y_max_m", axes.y_max_m)
+      .set("tracking_error_target_sum_m", target.sum_m)
+      .set("tracking_error_target_mean_m", target.mean_m)
+      .set("tracking_error_target_percentiles_m", percentileObject(target));
   setCoverageMetrics(coverage.report, metrics);
   return metrics;
 }
@@ -95,10 +110,12 @@ std::string SimulateCommand::usage() {
          "                             [--config FILE] [--set name=value ...]\n"
          "  A robot model follows the trajectory's poses (a CSV file with a header row;\n"
          "  columns x, y, yaw required, t and kind optional) from rest at the first pose,\n"
-         "  with the mission's robot parameters (v_max, a_max, yaw_rate_max, yaw_gain,\n"
+         "  with the mission's robot parameters (vehicle_model, dynamic by default, with its\n"
+         "  mass to yaw_rate_loop_gain; v_max, a_max, yaw_rate_max, yaw_gain,\n"
          "  position_gain, position_tolerance, yaw_tolerance, current_x, current_y, sim_dt,\n"
-         "  sim_time_limit), and writes DIR/actual.csv (t,x,y,yaw per step),\n"
-         "  DIR/metrics.json (traversal time, tracking error, coverage of the actual poses)\n"
+         "  sim_time_limit), and writes DIR/actual.csv (t,x,y,yaw and the tracking errors\n"
+         "  error_m,error_x_m,error_y_m,target_error_m per step), DIR/metrics.json\n"
+         "  (traversal time, tracking errors, coverage of the actual poses)\n"
          "  and DIR/plot.png. --set overrides a parameter of config/default.yaml (the value\n"
          "  is read as YAML), after the mission file.\n"
          "  --config FILE reads the parameters of FILE (as config/default.yaml, e.g.\n"
@@ -140,10 +157,11 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const SimulationResult simulation =
       RobotSimulator(robotModelOf(mission.parameters)).simulate(desired);
   const TrackingErrorStatistics& tracking = simulation.tracking;
-  out << "simulate: reached the last of " << desired.size() << " poses after "
-      << simulation.traversal_time_s << " s in " << simulation.steps.size() - 1
-      << " steps; tracking error sum " << tracking.sum_m << " m, mean " << tracking.mean_m
-      << " m, 99th percentile " << tracking.percentiles_m.back() << " m ("
+  out << "simulate: the " << mission.parameters.vehicle_model << " vehicle reached the last of "
+      << desired.size() << " poses after " << simulation.traversal_time_s << " s in "
+      << simulation.steps.size() - 1 << " steps; tracking error sum " << tracking.sum_m
+      << " m, mean " << tracking.mean_m << " m, 99th percentile " << tracking.percentiles_m.back()
+      << " m; target error sum " << simulation.target_tracking.sum_m << " m ("
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
   const std::vector<Pose2> actual = actualPoses(simulation);

@@ -96,6 +96,22 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"replanning_min_area", "2.5"},
       {"replanning_simplify_tolerance", "0.25"},
       {"alpha", "6"},
+      {"vehicle_model", "kinematic"},
+      {"mass", "20"},
+      {"added_mass_surge", "6"},
+      {"added_mass_sway", "13"},
+      {"inertia_yaw", "0.5"},
+      {"added_inertia_yaw", "0.2"},
+      {"damping_surge_linear", "4"},
+      {"damping_sway_linear", "7"},
+      {"damping_yaw_linear", "0.1"},
+      {"damping_surge_quadratic", "18"},
+      {"damping_sway_quadratic", "22"},
+      {"damping_yaw_quadratic", "1.5"},
+      {"thrust_max", "80"},
+      {"yaw_torque_max", "20"},
+      {"surge_loop_gain", "4"},
+      {"yaw_rate_loop_gain", "3"},
       {"yaw_gain", "3"},
       {"position_gain", "0.8"},
       {"position_tolerance", "0.2"},
@@ -138,6 +154,22 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.rotation_sampling_angle, 0.1);
   EXPECT_EQ(p.replanning_method, "convex_hull");
   EXPECT_EQ(p.alpha, 6.0);
+  EXPECT_EQ(p.vehicle_model, "kinematic");
+  EXPECT_EQ(p.mass, 20.0);
+  EXPECT_EQ(p.added_mass_surge, 6.0);
+  EXPECT_EQ(p.added_mass_sway, 13.0);
+  EXPECT_EQ(p.inertia_yaw, 0.5);
+  EXPECT_EQ(p.added_inertia_yaw, 0.2);
+  EXPECT_EQ(p.damping_surge_linear, 4.0);
+  EXPECT_EQ(p.damping_sway_linear, 7.0);
+  EXPECT_EQ(p.damping_yaw_linear, 0.1);
+  EXPECT_EQ(p.damping_surge_quadratic, 18.0);
+  EXPECT_EQ(p.damping_sway_quadratic, 22.0);
+  EXPECT_EQ(p.damping_yaw_quadratic, 1.5);
+  EXPECT_EQ(p.thrust_max, 80.0);
+  EXPECT_EQ(p.yaw_torque_max, 20.0);
+  EXPECT_EQ(p.surge_loop_gain, 4.0);
+  EXPECT_EQ(p.yaw_rate_loop_gain, 3.0);
   EXPECT_EQ(p.yaw_gain, 3.0);
   EXPECT_EQ(p.position_gain, 0.8);
   EXPECT_EQ(p.position_tolerance, 0.2);

@@ -133,7 +133,13 @@ TEST(ParameterValidator, ChecksTheRobotModelsRanges) {
            {"position_gain", &PlannerParameters::position_gain},
            {"position_tolerance", &PlannerParameters::position_tolerance},
            {"sim_dt", &PlannerParameters::sim_dt},
-           {"sim_time_limit", &PlannerParameters::sim_time_limit}}) {
+           {"sim_time_limit", &PlannerParameters::sim_time_limit},
+           {"mass", &PlannerParameters::mass},
+           {"inertia_yaw", &PlannerParameters::inertia_yaw},
+           {"thrust_max", &PlannerParameters::thrust_max},
+           {"yaw_torque_max", &PlannerParameters::yaw_torque_max},
+           {"surge_loop_gain", &PlannerParameters::surge_loop_gain},
+           {"yaw_rate_loop_gain", &PlannerParameters::yaw_rate_loop_gain}}) {
     const std::string message = errorOf([field = member](PlannerParameters& p) { p.*field = 0.0; });
     EXPECT_EQ(message.rfind(name + " = 0 is out of range: it must be a finite number > 0", 0), 0u)
         << message;
@@ -153,6 +159,22 @@ TEST(ParameterValidator, ChecksTheRobotModelsRanges) {
               p.sim_dt = 0.1;
             }),
             "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.yaw_rate_loop_gain = 11.0; }),
+            "yaw_rate_loop_gain = 11 with sim_dt = 0.1 is out of range: yaw_rate_loop_gain * "
+            "sim_dt must be <= 1");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.surge_loop_gain = 20.0; }),
+            "surge_loop_gain = 20 with sim_dt = 0.1 is out of range: surge_loop_gain * sim_dt "
+            "must be <= 1");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.vehicle_model = "holonomic"; }),
+            "vehicle_model = 'holonomic' is not one of: dynamic, kinematic");
+  // Added masses and damping may be 0 (an idealised body), not negative.
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.added_mass_sway = 0.0; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.damping_sway_quadratic = -1.0; }),
+            "damping_sway_quadratic = -1 is out of range: it must be a finite number >= 0 "
+            "(N s^2/m^2)");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.damping_yaw_linear = std::nan(""); }),
+            "damping_yaw_linear = nan is out of range: it must be a finite number >= 0 "
+            "(N m s/rad)");
 }
 
 }  // namespace

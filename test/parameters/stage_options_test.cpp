@@ -62,6 +62,22 @@ TEST(StageOptions, TheDefaultsMapToTheDocumentedStageOptions) {
             std::max(p.turning_radius, p.v_max / p.yaw_rate_max));
 
   const RobotModel robot = robotModelOf(p);
+  EXPECT_EQ(robot.vehicle_model, VehicleModel::kDynamic);
+  EXPECT_EQ(robot.body.mass, p.mass);
+  EXPECT_EQ(robot.body.added_mass_surge, p.added_mass_surge);
+  EXPECT_EQ(robot.body.added_mass_sway, p.added_mass_sway);
+  EXPECT_EQ(robot.body.inertia_yaw, p.inertia_yaw);
+  EXPECT_EQ(robot.body.added_inertia_yaw, p.added_inertia_yaw);
+  EXPECT_EQ(robot.body.damping_surge_linear, p.damping_surge_linear);
+  EXPECT_EQ(robot.body.damping_sway_linear, p.damping_sway_linear);
+  EXPECT_EQ(robot.body.damping_yaw_linear, p.damping_yaw_linear);
+  EXPECT_EQ(robot.body.damping_surge_quadratic, p.damping_surge_quadratic);
+  EXPECT_EQ(robot.body.damping_sway_quadratic, p.damping_sway_quadratic);
+  EXPECT_EQ(robot.body.damping_yaw_quadratic, p.damping_yaw_quadratic);
+  EXPECT_EQ(robot.body.thrust_max, p.thrust_max);
+  EXPECT_EQ(robot.body.yaw_torque_max, p.yaw_torque_max);
+  EXPECT_EQ(robot.surge_loop_gain, p.surge_loop_gain);
+  EXPECT_EQ(robot.yaw_rate_loop_gain, p.yaw_rate_loop_gain);
   EXPECT_EQ(robot.vehicle.v_max, p.v_max);
   EXPECT_EQ(robot.yaw_gain, p.yaw_gain);
   EXPECT_EQ(robot.position_gain, p.position_gain);

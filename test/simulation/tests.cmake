@@ -1,5 +1,6 @@
 kc_add_gtest(test_simulation
   test/simulation/path_distance_test.cpp
+  test/simulation/planar_rigid_body_test.cpp
   test/simulation/tracking_error_statistics_test.cpp
   test/simulation/trajectory_follower_test.cpp
   test/simulation/actual_path_plot_test.cpp

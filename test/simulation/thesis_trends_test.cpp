@@ -1,5 +1,6 @@
 // The thesis's two experiments (Chapter 4, Tables 4.1 to 4.3) in simulation: the lake
-// missions planned smoothed and unsmoothed, each followed by the same robot.
+// missions planned smoothed and unsmoothed, each followed by the same robot, the default
+// dynamic vehicle (config/default.yaml, its values chosen before these experiments ran).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -53,14 +54,15 @@ std::vector<std::string> with(std::vector<std::string> overrides, const std::str
 
 TEST(ThesisTrendsTest, HighYawGainOnLake30TurnsInPlaceFasterButTracksWorse) {
   // Tables 4.1 and 4.2: unsmoothed 1241 s against smoothed 1529 s, but 452 m against 293 m
-  // of cumulative error, and every percentile of the error lower when smoothed. The robot:
-  // config/default.yaml (yaw_gain 5, rotation_sampling_angle 0.2).
+  // of cumulative error (35 % less when smoothed), and the 99th percentile of the error
+  // lower when smoothed. The robot: config/default.yaml (yaw_gain 5,
+  // rotation_sampling_angle 0.2).
   const RobotRun smoothed = planAndSimulate("lake_30x30", with({}, "true"));
   const RobotRun unsmoothed = planAndSimulate("lake_30x30", with({}, "false"));
   const TrackingErrorStatistics& s = smoothed.simulation.tracking;
   const TrackingErrorStatistics& u = unsmoothed.simulation.tracking;
   EXPECT_LT(unsmoothed.simulation.traversal_time_s, smoothed.simulation.traversal_time_s);
-  EXPECT_LT(s.sum_m, u.sum_m);
+  EXPECT_LE(s.sum_m, 0.75 * u.sum_m);
   EXPECT_LT(s.mean_m, u.mean_m);
   EXPECT_LT(s.percentiles_m.back(), u.percentiles_m.back());
   // As in Table 4.1, neither loses coverage worth speaking of.
@@ -75,6 +77,9 @@ TEST(ThesisTrendsTest, LowYawGainAndFineRotationsOnLake7MakeSmoothingFaster) {
   const RobotRun smoothed = planAndSimulate("lake_7_5", with(robot, "true"));
   const RobotRun unsmoothed = planAndSimulate("lake_7_5", with(robot, "false"));
   EXPECT_LT(smoothed.simulation.traversal_time_s, unsmoothed.simulation.traversal_time_s);
+  // Table 4.3's other half, smoothed tracking worse (284 m against 239 m), does not appear
+  // with this vehicle: the unsmoothed robot coasts past every corner and turns slowly
+  // there, off the path (docs/EXPERIMENTS.md).
   // The reversal comes from the robot, not from the map: with the first experiment's high
   // gain and coarse rotations, turning in place is faster on this map too.
   const RobotRun smoothed_high_gain = planAndSimulate("lake_7_5", with({}, "true"));
@@ -88,7 +93,7 @@ TEST(ThesisTrendsTest, ACurrentGrowsTheTrackingErrorAndCostsCoverage) {
   const RobotRun calm = planAndSimulate("lake_30x30", with({}, "true"));
   const RobotRun current =
       planAndSimulate("lake_30x30", with({"current_x=0.2", "current_y=0.1"}, "true"));
-  EXPECT_GT(current.simulation.tracking.mean_m, 10.0 * calm.simulation.tracking.mean_m);
+  EXPECT_GT(current.simulation.tracking.mean_m, 5.0 * calm.simulation.tracking.mean_m);
   EXPECT_GT(current.simulation.tracking.percentiles_m.back(),
             calm.simulation.tracking.percentiles_m.back());
   EXPECT_LT(current.coverage_percent, calm.coverage_percent - 1.0);

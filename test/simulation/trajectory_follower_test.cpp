@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
@@ -28,11 +31,21 @@ std::vector<Pose2> rotation(double angle, double step) {
   return poses;
 }
 
+/// The default parameters with `vehicle_model`.
+PlannerParameters withVehicle(const std::string& vehicle_model) {
+  PlannerParameters parameters;
+  parameters.vehicle_model = vehicle_model;
+  return parameters;
+}
+
+/// Both vehicles, for the properties they share.
+const std::vector<std::string> kVehicles{"dynamic", "kinematic"};
+
 TEST(TrajectoryFollowerTest, FollowsAStraightLineWithZeroErrorInTheExpectedTime) {
   // position_gain * v_max <= a_max, so that the speed can follow the set-point controller's
   // command exactly: accelerate at a_max to v_max, cruise until position_gain times the
   // distance left falls below v_max, then approach exponentially to the tolerance.
-  PlannerParameters parameters;
+  PlannerParameters parameters = withVehicle("kinematic");
   parameters.position_gain = 0.3;
   const double v = parameters.v_max;
   const double a = parameters.a_max;
@@ -62,99 +75,177 @@ TEST(TrajectoryFollowerTest, FollowsAStraightLineWithZeroErrorInTheExpectedTime)
 TEST(TrajectoryFollowerTest, SlowsTowardsEveryPoseItIsHanded) {
   // The set-point controller slows towards each pose: the same line is followed exactly
   // whatever the sampling, but the denser it is sampled, the longer it takes.
-  const PlannerParameters parameters;
-  double previous_time = 0.0;
-  for (const double spacing : {10.0, 0.5, 0.1}) {
-    const SimulationResult result =
-        RobotSimulator(robotModelOf(parameters)).simulate(straightLine(10.0, spacing));
-    EXPECT_LT(result.tracking.sum_m, 1e-9) << spacing;
-    EXPECT_GT(result.traversal_time_s, previous_time) << spacing;
-    previous_time = result.traversal_time_s;
+  for (const std::string& vehicle : kVehicles) {
+    const PlannerParameters parameters = withVehicle(vehicle);
+    double previous_time = 0.0;
+    for (const double spacing : {10.0, 0.5, 0.1}) {
+      const SimulationResult result =
+          RobotSimulator(robotModelOf(parameters)).simulate(straightLine(10.0, spacing));
+      EXPECT_LT(result.tracking.sum_m, 1e-9) << vehicle << " " << spacing;
+      EXPECT_GT(result.traversal_time_s, previous_time) << vehicle << " " << spacing;
+      previous_time = result.traversal_time_s;
+    }
+    // Never faster than v_max allows.
+    EXPECT_GT(previous_time, 10.0 / parameters.v_max) << vehicle;
   }
-  // Never faster than v_max allows.
-  EXPECT_GT(previous_time, 10.0 / parameters.v_max);
+}
+
+TEST(TrajectoryFollowerTest, TheDynamicVehicleCruisesAtVMaxOnALongLine) {
+  // The surge loop's damping feedforward holds the reference exactly once it settles.
+  const PlannerParameters parameters = withVehicle("dynamic");
+  const SimulationResult result =
+      RobotSimulator(robotModelOf(parameters)).simulate(straightLine(40.0, 40.0));
+  double fastest = 0.0;
+  for (std::size_t i = 1; i < result.steps.size(); ++i) {
+    const double speed =
+        (result.steps[i].pose.position() - result.steps[i - 1].pose.position()).norm() /
+        parameters.sim_dt;
+    fastest = std::max(fastest, speed);
+  }
+  EXPECT_NEAR(fastest, parameters.v_max, 1e-6);
+  EXPECT_LT(result.tracking.sum_m, 1e-9);
 }
 
 TEST(TrajectoryFollowerTest, TurnsInPlaceWhereTheTrajectoryRotates) {
-  const PlannerParameters parameters;
-  const SimulationResult result =
-      RobotSimulator(robotModelOf(parameters)).simulate(rotation(M_PI / 2, 0.2));
-  const Pose2& end = result.steps.back().pose;
-  EXPECT_EQ(end.x, 0.0);
-  EXPECT_EQ(end.y, 0.0);
-  EXPECT_LE(std::abs(wrapAngle(end.yaw - M_PI / 2)), parameters.yaw_tolerance);
-  EXPECT_LT(result.tracking.sum_m, 1e-9);
-  EXPECT_GE(result.traversal_time_s,
-            (M_PI / 2 - parameters.yaw_tolerance) / parameters.yaw_rate_max - 1e-9);
+  for (const std::string& vehicle : kVehicles) {
+    const PlannerParameters parameters = withVehicle(vehicle);
+    const SimulationResult result =
+        RobotSimulator(robotModelOf(parameters)).simulate(rotation(M_PI / 2, 0.2));
+    const Pose2& end = result.steps.back().pose;
+    EXPECT_EQ(end.x, 0.0) << vehicle;
+    EXPECT_EQ(end.y, 0.0) << vehicle;
+    EXPECT_LE(std::abs(wrapAngle(end.yaw - M_PI / 2)), parameters.yaw_tolerance) << vehicle;
+    EXPECT_LT(result.tracking.sum_m, 1e-9) << vehicle;
+    EXPECT_GE(result.traversal_time_s,
+              (M_PI / 2 - parameters.yaw_tolerance) / parameters.yaw_rate_max - 1e-9)
+        << vehicle;
+  }
 }
 
 TEST(TrajectoryFollowerTest, FinerRotationSamplingSlowsALowGainRobot) {
   // A low yaw gain approaches each rotation pose exponentially (Table 4.3's setting): more
   // poses on the same turn take longer. A high gain turns at the saturated yaw rate.
-  PlannerParameters low;
-  low.yaw_gain = 1.0;
-  const double coarse =
-      RobotSimulator(robotModelOf(low)).simulate(rotation(M_PI, 0.2)).traversal_time_s;
-  const double fine =
-      RobotSimulator(robotModelOf(low)).simulate(rotation(M_PI, 0.05)).traversal_time_s;
-  EXPECT_GT(fine, 1.5 * coarse);
-  PlannerParameters high;
-  high.yaw_gain = 5.0;
-  const double fast =
-      RobotSimulator(robotModelOf(high)).simulate(rotation(M_PI, 0.2)).traversal_time_s;
-  EXPECT_LT(fast, coarse);
-  EXPECT_LT(fast, 1.5 * M_PI / high.yaw_rate_max);
+  for (const std::string& vehicle : kVehicles) {
+    PlannerParameters low = withVehicle(vehicle);
+    low.yaw_gain = 1.0;
+    const double coarse =
+        RobotSimulator(robotModelOf(low)).simulate(rotation(M_PI, 0.2)).traversal_time_s;
+    const double fine =
+        RobotSimulator(robotModelOf(low)).simulate(rotation(M_PI, 0.05)).traversal_time_s;
+    EXPECT_GT(fine, 1.5 * coarse) << vehicle;
+    PlannerParameters high = withVehicle(vehicle);
+    high.yaw_gain = 5.0;
+    const double fast =
+        RobotSimulator(robotModelOf(high)).simulate(rotation(M_PI, 0.2)).traversal_time_s;
+    EXPECT_LT(fast, coarse) << vehicle;
+    EXPECT_LT(fast, 1.5 * M_PI / high.yaw_rate_max) << vehicle;
+  }
+}
+
+TEST(TrajectoryFollowerTest, TheDynamicVehicleCoastsPastACornerWhereTheKinematicOneStops) {
+  // An unsmoothed corner: 5 m along x, a turn in place to +y, 5 m along y. The kinematic
+  // vehicle stops within the tolerance of the corner; the dynamic one coasts past it and
+  // drifts while it turns, which the nearest-point error (mostly along x) and the target
+  // error (to the corner) both show.
+  std::vector<Pose2> corner = straightLine(5.0, 0.5);
+  for (const Pose2& turn : rotation(M_PI / 2, 0.2)) corner.push_back({5.0, 0.0, turn.yaw});
+  for (int i = 1; i <= 10; ++i) corner.push_back({5.0, 0.5 * i, M_PI / 2});
+  const SimulationResult kinematic =
+      RobotSimulator(robotModelOf(withVehicle("kinematic"))).simulate(corner);
+  const SimulationResult dynamic =
+      RobotSimulator(robotModelOf(withVehicle("dynamic"))).simulate(corner);
+  EXPECT_GT(dynamic.tracking.sum_m, 2.0 * kinematic.tracking.sum_m);
+  EXPECT_GT(dynamic.target_tracking.sum_m, kinematic.target_tracking.sum_m);
+  EXPECT_GT(dynamic.tracking_axes.x_max_m, dynamic.tracking_axes.y_max_m);
+  EXPECT_GT(dynamic.tracking_axes.x_max_m, 0.01);
+  // Every step's errors are consistent: the axis parts make up the nearest-point error,
+  // and the target piece is never nearer than the nearest point of the whole path.
+  for (const SimulationStep& step : dynamic.steps) {
+    EXPECT_NEAR(std::hypot(step.tracking_error_x_m, step.tracking_error_y_m), step.tracking_error_m,
+                1e-12);
+    EXPECT_GE(step.target_error_m, step.tracking_error_m - 1e-12);
+  }
+}
+
+TEST(TrajectoryFollowerTest, TheDynamicVehicleSlipsOutwardsOnAnArc) {
+  // A quarter circle of radius 1 m sampled every 0.1 m, as the thesis's arcs are: the
+  // unactuated sway slips to the right in a left turn, and the robot ends up off the arc.
+  std::vector<Pose2> arc;
+  for (int i = 0; i <= 16; ++i) {
+    const double angle = M_PI / 2 * i / 16.0;
+    arc.push_back({std::sin(angle), 1.0 - std::cos(angle), angle});
+  }
+  RobotState start;
+  start.pose = arc.front();
+  TrajectoryFollower follower(robotModelOf(withVehicle("dynamic")), arc, start);
+  double most_sway = 0.0;
+  while (!follower.finished()) {
+    follower.step();
+    most_sway = std::min(most_sway, follower.state().sway);
+  }
+  EXPECT_LT(most_sway, -1e-4);
+  const SimulationResult result =
+      RobotSimulator(robotModelOf(withVehicle("dynamic"))).simulate(arc);
+  EXPECT_GT(result.tracking.mean_m, 1e-4);
+  EXPECT_LT(result.tracking.percentiles_m.back(), 0.2);
 }
 
 TEST(TrajectoryFollowerTest, CrabsIntoACrossCurrentAndStillArrives) {
-  PlannerParameters parameters;
-  parameters.current_y = 0.1;
-  const SimulationResult result =
-      RobotSimulator(robotModelOf(parameters)).simulate(straightLine(20.0, 0.5));
-  EXPECT_NEAR(result.steps.back().pose.x, 20.0, 0.5);
-  EXPECT_GT(result.tracking.mean_m, 0.0);
-  EXPECT_LT(result.tracking.percentiles_m.back(), 0.5);
-  // Mid-way it heads upstream (yaw < 0) to hold the line against the current.
-  const Pose2& middle = result.steps[result.steps.size() / 2].pose;
-  EXPECT_LT(middle.yaw, -0.1);
-  EXPECT_LT(std::abs(middle.y), 0.3);
+  for (const std::string& vehicle : kVehicles) {
+    PlannerParameters parameters = withVehicle(vehicle);
+    parameters.current_y = 0.1;
+    const SimulationResult result =
+        RobotSimulator(robotModelOf(parameters)).simulate(straightLine(20.0, 0.5));
+    EXPECT_NEAR(result.steps.back().pose.x, 20.0, 0.5) << vehicle;
+    EXPECT_GT(result.tracking.mean_m, 0.0) << vehicle;
+    EXPECT_LT(result.tracking.percentiles_m.back(), 0.5) << vehicle;
+    // Mid-way it heads upstream (yaw < 0) to hold the line against the current.
+    const Pose2& middle = result.steps[result.steps.size() / 2].pose;
+    EXPECT_LT(middle.yaw, -0.1) << vehicle;
+    EXPECT_LT(std::abs(middle.y), 0.3) << vehicle;
+  }
 }
 
 TEST(TrajectoryFollowerTest, GivesUpWhenTheCurrentIsFasterThanTheRobot) {
-  PlannerParameters parameters;
-  parameters.current_x = -1.0;
-  parameters.sim_time_limit = 100.0;
-  try {
-    RobotSimulator(robotModelOf(parameters)).simulate(straightLine(10.0, 0.5));
-    FAIL() << "expected InvalidInputError";
-  } catch (const InvalidInputError& error) {
-    EXPECT_NE(std::string(error.what())
-                  .find("did not reach the last pose within sim_time_limit = 100 s (it was "
-                        "driving to pose 2 of 21)"),
-              std::string::npos)
-        << error.what();
+  for (const std::string& vehicle : kVehicles) {
+    PlannerParameters parameters = withVehicle(vehicle);
+    parameters.current_x = -1.0;
+    parameters.sim_time_limit = 100.0;
+    try {
+      RobotSimulator(robotModelOf(parameters)).simulate(straightLine(10.0, 0.5));
+      FAIL() << "expected InvalidInputError";
+    } catch (const InvalidInputError& error) {
+      EXPECT_NE(std::string(error.what())
+                    .find("did not reach the last pose within sim_time_limit = 100 s (it was "
+                          "driving to pose 2 of 21)"),
+                std::string::npos)
+          << vehicle << ": " << error.what();
+    }
   }
 }
 
 TEST(TrajectoryFollowerTest, RestartsFromAMovingStateAndSkipsPassedPoses) {
   // As auv_simulator does when a new trajectory arrives: the robot keeps its pose and
-  // speed, and poses behind it count as passed.
-  const PlannerParameters parameters;
-  RobotState start;
-  start.t = 42.0;
-  start.pose = {5.2, 0.0, 0.0};
-  start.speed = 0.3;
-  TrajectoryFollower follower(robotModelOf(parameters), straightLine(10.0, 1.0), start);
-  EXPECT_EQ(follower.nextTarget(), 6u);
-  follower.step();
-  EXPECT_DOUBLE_EQ(follower.state().t, 42.0 + parameters.sim_dt);
-  EXPECT_GE(follower.state().speed, 0.3 - parameters.a_max * parameters.sim_dt - 1e-12);
-  EXPECT_GT(follower.state().pose.x, 5.2);
-  while (!follower.finished()) follower.step();
-  EXPECT_EQ(follower.nextTarget(), follower.targets().size());
-  const double end_time = follower.state().t;
-  follower.step();
-  EXPECT_EQ(follower.state().t, end_time);
+  // velocities, and poses behind it count as passed.
+  for (const std::string& vehicle : kVehicles) {
+    const PlannerParameters parameters = withVehicle(vehicle);
+    RobotState start;
+    start.t = 42.0;
+    start.pose = {5.2, 0.0, 0.0};
+    start.speed = 0.3;
+    TrajectoryFollower follower(robotModelOf(parameters), straightLine(10.0, 1.0), start);
+    EXPECT_EQ(follower.nextTarget(), 6u) << vehicle;
+    follower.step();
+    EXPECT_DOUBLE_EQ(follower.state().t, 42.0 + parameters.sim_dt) << vehicle;
+    EXPECT_GE(follower.state().speed, 0.3 - parameters.a_max * parameters.sim_dt - 1e-12)
+        << vehicle;
+    EXPECT_GT(follower.state().pose.x, 5.2) << vehicle;
+    while (!follower.finished()) follower.step();
+    EXPECT_EQ(follower.nextTarget(), follower.targets().size()) << vehicle;
+    const double end_time = follower.state().t;
+    follower.step();
+    EXPECT_EQ(follower.state().t, end_time) << vehicle;
+  }
 }
 
 TEST(TrajectoryFollowerTest, RejectsInvalidInput) {
@@ -164,9 +255,9 @@ TEST(TrajectoryFollowerTest, RejectsInvalidInput) {
   EXPECT_THROW(
       TrajectoryFollower(robotModelOf(parameters), {{0, 0, 0}, {1, std::nan(""), 0}}, start),
       InvalidInputError);
-  RobotState reversing;
-  reversing.speed = -0.1;
-  EXPECT_THROW(TrajectoryFollower(robotModelOf(parameters), {{0, 0, 0}}, reversing),
+  RobotState spinning;
+  spinning.yaw_rate = std::nan("");
+  EXPECT_THROW(TrajectoryFollower(robotModelOf(parameters), {{0, 0, 0}}, spinning),
                InvalidInputError);
   PlannerParameters too_high_gain;
   too_high_gain.yaw_gain = 20.0;

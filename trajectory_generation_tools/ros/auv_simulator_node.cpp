@@ -63,7 +63,11 @@ void AuvSimulatorNode::onTrajectory(const geometry_msgs::PoseArray::ConstPtr& me
     if (follower_) {
       start = follower_->state();
       // A robot that arrived holds station at its last pose.
-      if (follower_->finished()) start.speed = 0.0;
+      if (follower_->finished()) {
+        start.speed = 0.0;
+        start.sway = 0.0;
+        start.yaw_rate = 0.0;
+      }
     } else {
       start.pose = poses.front();
     }

@@ -19,7 +19,7 @@ namespace kinematic_coverage::nodes {
 /// (geometry_msgs/PoseArray, latched: its start and its pose at every tick it moved,
 /// oldest first). The first trajectory starts the robot at rest at its first pose
 /// and fixes the frame; a newer one restarts the model from the robot's current pose and
-/// speed, keeping the visited history; one with an older header stamp is ignored. `~status`
+/// velocities, keeping the visited history; one with an older header stamp is ignored. `~status`
 /// (PlanStatus, stage "simulate") reports each start, the arrival at the last pose and every
 /// failure. Bad input (no poses, a non-finite pose or orientation, another frame, a parameter out
 /// of range, the last pose not reached within sim_time_limit) gives one ROS_ERROR and a failed

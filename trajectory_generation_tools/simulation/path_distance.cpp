@@ -81,21 +81,23 @@ std::pair<int, int> PathDistance::cellOf(const Point2& point) const {
   return {index(point.x() - origin_.x(), columns_), index(point.y() - origin_.y(), rows_)};
 }
 
-double PathDistance::nearestInCell(int column, int row, const Point2& point, double best) const {
+PathDistance::Nearest PathDistance::nearestInCell(int column, int row, const Point2& point,
+                                                  Nearest best) const {
   const std::size_t cell = static_cast<std::size_t>(row) * columns_ + column;
   for (std::uint32_t e = cell_begin_[cell]; e < cell_begin_[cell + 1]; ++e) {
     const std::uint32_t s = cell_entries_[e];
-    best = std::min(best, distanceToSegment(point, starts_[s], ends_[s]));
+    const double distance = distanceToSegment(point, starts_[s], ends_[s]);
+    if (distance < best.distance) best = {distance, s};
   }
   return best;
 }
 
-double PathDistance::distance(const Point2& point) const {
+PathDistance::Nearest PathDistance::nearestSegment(const Point2& point) const {
   // Rings of cells around the point's (clamped) cell. Every cell beyond ring k lies at
   // least k cells away from the clamped point, and clamping into the grid brings a point
   // no farther from any cell, so once the best distance is within k cells it is final.
   const auto [centre_column, centre_row] = cellOf(point);
-  double best = std::numeric_limits<double>::infinity();
+  Nearest best{std::numeric_limits<double>::infinity(), 0};
   for (int k = 0;; ++k) {
     const int left = centre_column - k;
     const int right = centre_column + k;
@@ -111,9 +113,16 @@ double PathDistance::distance(const Point2& point) const {
         if (right < columns_) best = nearestInCell(right, row, point, best);
       }
     }
-    if (best <= k * cell_size_) return best;
+    if (best.distance <= k * cell_size_) return best;
     if (left <= 0 && bottom <= 0 && right >= columns_ - 1 && top >= rows_ - 1) return best;
   }
+}
+
+double PathDistance::distance(const Point2& point) const { return nearestSegment(point).distance; }
+
+Point2 PathDistance::nearestPoint(const Point2& point) const {
+  const std::uint32_t s = nearestSegment(point).segment;
+  return closestPointOnSegment(point, starts_[s], ends_[s]);
 }
 
 }  // namespace kinematic_coverage::core

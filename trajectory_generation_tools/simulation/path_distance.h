@@ -24,11 +24,21 @@ class PathDistance {
   /// near the path or far from it).
   double distance(const Point2& point) const;
 
+  /// The nearest point of the polyline to `point` (the first found among equally near ones).
+  Point2 nearestPoint(const Point2& point) const;
+
  private:
   /// The grid cell of a point clamped into the grid.
   std::pair<int, int> cellOf(const Point2& point) const;
-  /// The distance to the nearest segment bucketed in cell (column, row), or `best`.
-  double nearestInCell(int column, int row, const Point2& point, double best) const;
+  /// The nearest segment found so far: its distance and index.
+  struct Nearest {
+    double distance;
+    std::uint32_t segment;
+  };
+  /// `best`, or the nearest segment bucketed in cell (column, row) if nearer.
+  Nearest nearestInCell(int column, int row, const Point2& point, Nearest best) const;
+  /// The nearest segment to `point`.
+  Nearest nearestSegment(const Point2& point) const;
 
   std::vector<Point2> starts_;  ///< segment i runs from starts_[i] to ends_[i]
   std::vector<Point2> ends_;

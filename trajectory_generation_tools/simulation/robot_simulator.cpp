@@ -1,11 +1,13 @@
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/simulation/path_distance.h"
 #include "trajectory_generation_tools/simulation/trajectory_follower.h"
 
@@ -20,6 +22,46 @@ RobotSimulator::RobotSimulator(const RobotModel& model) : model_(model) {
   }
 }
 
+namespace {
+
+/// A recorded step of `follower` with its errors against `desired_path`.
+SimulationStep recordedStep(const TrajectoryFollower& follower, const PathDistance& desired_path) {
+  const RobotState& state = follower.state();
+  const Point2 position = state.pose.position();
+  const Point2 offset = position - desired_path.nearestPoint(position);
+  SimulationStep step;
+  step.t = state.t;
+  step.pose = state.pose;
+  step.tracking_error_m = offset.norm();
+  step.tracking_error_x_m = offset.x();
+  step.tracking_error_y_m = offset.y();
+  const std::vector<Pose2>& targets = follower.targets();
+  const std::size_t target = std::min(follower.nextTarget(), targets.size() - 1);
+  const Point2 piece_end = targets[target].position();
+  const Point2 piece_start = target == 0 ? piece_end : targets[target - 1].position();
+  step.target_error_m = distanceToSegment(position, piece_start, piece_end);
+  return step;
+}
+
+/// The axis statistics of `steps` without the first (the start).
+AxisErrorStatistics axisStatistics(const std::vector<SimulationStep>& steps) {
+  AxisErrorStatistics axes;
+  if (steps.size() < 2) return axes;
+  for (std::size_t i = 1; i < steps.size(); ++i) {
+    const double x = std::abs(steps[i].tracking_error_x_m);
+    const double y = std::abs(steps[i].tracking_error_y_m);
+    axes.x_mean_m += x;
+    axes.y_mean_m += y;
+    axes.x_max_m = std::max(axes.x_max_m, x);
+    axes.y_max_m = std::max(axes.y_max_m, y);
+  }
+  axes.x_mean_m /= static_cast<double>(steps.size() - 1);
+  axes.y_mean_m /= static_cast<double>(steps.size() - 1);
+  return axes;
+}
+
+}  // namespace
+
 SimulationResult RobotSimulator::simulate(const std::vector<Pose2>& trajectory) const {
   if (trajectory.empty()) throw InvalidInputError("simulate: the trajectory has no poses");
   RobotState start;
@@ -31,9 +73,9 @@ SimulationResult RobotSimulator::simulate(const std::vector<Pose2>& trajectory) 
   const PathDistance desired_path(path);
 
   SimulationResult result;
-  result.steps.push_back(
-      {0.0, follower.state().pose, desired_path.distance(start.pose.position())});
+  result.steps.push_back(recordedStep(follower, desired_path));
   std::vector<double> errors;
+  std::vector<double> target_errors;
   const std::size_t step_limit =
       static_cast<std::size_t>(std::floor(model_.sim_time_limit / model_.sim_dt));
   while (!follower.finished()) {
@@ -45,13 +87,14 @@ SimulationResult RobotSimulator::simulate(const std::vector<Pose2>& trajectory) 
           ")");
     }
     follower.step();
-    const RobotState& state = follower.state();
-    const double error = desired_path.distance(state.pose.position());
-    result.steps.push_back({state.t, state.pose, error});
-    errors.push_back(error);
+    result.steps.push_back(recordedStep(follower, desired_path));
+    errors.push_back(result.steps.back().tracking_error_m);
+    target_errors.push_back(result.steps.back().target_error_m);
   }
   result.traversal_time_s = follower.state().t;
   result.tracking = summarizeTrackingErrors(std::move(errors));
+  result.tracking_axes = axisStatistics(result.steps);
+  result.target_tracking = summarizeTrackingErrors(std::move(target_errors));
   return result;
 }
 

@@ -16,6 +16,22 @@ struct SimulationStep {
   /// m from the robot to the nearest point of the desired path (the polyline through the
   /// trajectory's poses).
   double tracking_error_m = 0.0;
+  /// m: the robot's position less that nearest point, along x and along y.
+  double tracking_error_x_m = 0.0;
+  double tracking_error_y_m = 0.0;
+  /// m from the robot to the trajectory piece that leads to the pose the controller targets
+  /// (the segment from the pose before it; the first pose itself before any piece), which
+  /// shows the lag and overshoot that the nearest point hides.
+  double target_error_m = 0.0;
+};
+
+/// The tracking error split by axis (the thesis's Fig. 4.5c): over the simulation steps,
+/// the mean and the largest absolute x and y components of the nearest-point error.
+struct AxisErrorStatistics {
+  double x_mean_m = 0.0;
+  double y_mean_m = 0.0;
+  double x_max_m = 0.0;
+  double y_max_m = 0.0;
 };
 
 /// What a robot did on a trajectory.
@@ -26,12 +42,14 @@ struct SimulationResult {
   double traversal_time_s = 0.0;
   /// Over the simulation steps (the start left out); docs/REFERENCE.md, Metrics.
   TrackingErrorStatistics tracking;
+  AxisErrorStatistics tracking_axes;
+  TrackingErrorStatistics target_tracking;
 };
 
 /// Runs the robot model of TrajectoryFollower over a whole trajectory, as `coverage_tool
 /// simulate` does: the robot starts at rest at the first pose, with its heading, and is
 /// stepped every sim_dt until it has reached the last pose; every step records its pose
-/// and its tracking error.
+/// and its tracking errors.
 class RobotSimulator {
  public:
   /// Most simulation steps of a run (sim_time_limit / sim_dt), which bounds its memory.

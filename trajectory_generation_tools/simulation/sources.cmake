@@ -1,6 +1,7 @@
 kc_add_stage_library(kc_simulation
   SOURCES
     trajectory_generation_tools/simulation/path_distance.cpp
+    trajectory_generation_tools/simulation/planar_rigid_body.cpp
     trajectory_generation_tools/simulation/robot_simulator.cpp
     trajectory_generation_tools/simulation/tracking_error_statistics.cpp
     trajectory_generation_tools/simulation/trajectory_follower.cpp

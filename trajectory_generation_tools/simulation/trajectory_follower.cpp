@@ -22,7 +22,10 @@ bool isFinite(const Pose2& pose) {
 
 TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets,
                                        const RobotState& start)
-    : model_(model), targets_(std::move(targets)), state_(start) {
+    : model_(model),
+      targets_(std::move(targets)),
+      state_(start),
+      body_(model.body, model.current_x, model.current_y) {
   if (targets_.empty()) throw InvalidInputError("trajectory follower: no poses to follow");
   heading_target_.resize(targets_.size(), false);
   for (std::size_t i = 0; i < targets_.size(); ++i) {
@@ -33,11 +36,15 @@ TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose
                                       kSamePositionTolerance;
   }
   if (!isFinite(state_.pose) || !std::isfinite(state_.t) || !std::isfinite(state_.speed) ||
-      state_.speed < 0.0) {
-    throw InvalidInputError(
-        "trajectory follower: the start state must be finite with a speed >= 0");
+      !std::isfinite(state_.sway) || !std::isfinite(state_.yaw_rate)) {
+    throw InvalidInputError("trajectory follower: the start state must be finite");
   }
   state_.pose.yaw = wrapAngle(state_.pose.yaw);
+  if (model_.vehicle_model == VehicleModel::kKinematic) {
+    state_.speed = std::max(state_.speed, 0.0);
+    state_.sway = 0.0;
+  }
+  speed_reference_ = std::max(state_.speed, 0.0);
   start_time_ = state_.t;
   skipReachedTargets();
 }
@@ -56,14 +63,12 @@ void TrajectoryFollower::skipReachedTargets() {
   while (next_target_ < targets_.size() && reached(next_target_)) ++next_target_;
 }
 
-void TrajectoryFollower::step() {
-  if (finished()) return;
+TrajectoryFollower::Command TrajectoryFollower::command() const {
   const RobotModel& p = model_;
   const VehicleLimits& limits = model_.vehicle;
   const Pose2& target = targets_[next_target_];
-  const Point2 current(p.current_x, p.current_y);
   double heading_error = 0.0;
-  double speed_command = 0.0;
+  Command command;
   if (heading_target_[next_target_]) {
     heading_error = wrapAngle(target.yaw - state_.pose.yaw);
   } else {
@@ -72,24 +77,58 @@ void TrajectoryFollower::step() {
     const Point2 to_target = target.position() - state_.pose.position();
     const Point2 over_ground =
         std::min(limits.v_max, p.position_gain * to_target.norm()) * to_target.normalized();
-    const Point2 through_water = over_ground - current;
+    const Point2 through_water = over_ground - Point2(p.current_x, p.current_y);
     heading_error = wrapAngle(std::atan2(through_water.y(), through_water.x()) - state_.pose.yaw);
-    speed_command = std::min(limits.v_max, through_water.norm());
+    command.speed = std::min(limits.v_max, through_water.norm());
   }
-  const double yaw_rate =
+  command.yaw_rate =
       std::clamp(p.yaw_gain * heading_error, -limits.yaw_rate_max, limits.yaw_rate_max);
-  speed_command =
-      std::min(speed_command, limits.v_max * (1.0 - std::abs(yaw_rate) / limits.yaw_rate_max));
-  const double speed_change = limits.a_max * p.sim_dt;
-  state_.speed += std::clamp(speed_command - state_.speed, -speed_change, speed_change);
-  state_.speed = std::max(state_.speed, 0.0);
-  state_.pose.yaw = wrapAngle(state_.pose.yaw + yaw_rate * p.sim_dt);
+  command.speed = std::min(command.speed,
+                           limits.v_max * (1.0 - std::abs(command.yaw_rate) / limits.yaw_rate_max));
+  return command;
+}
+
+void TrajectoryFollower::advanceKinematic(const Command& command) {
+  const double dt = model_.sim_dt;
+  state_.speed = speed_reference_;
+  state_.yaw_rate = command.yaw_rate;
+  state_.pose.yaw = wrapAngle(state_.pose.yaw + command.yaw_rate * dt);
   const Point2 velocity =
-      state_.speed * Point2(std::cos(state_.pose.yaw), std::sin(state_.pose.yaw)) + current;
-  state_.pose.x += velocity.x() * p.sim_dt;
-  state_.pose.y += velocity.y() * p.sim_dt;
+      state_.speed * Point2(std::cos(state_.pose.yaw), std::sin(state_.pose.yaw)) +
+      Point2(model_.current_x, model_.current_y);
+  state_.pose.x += velocity.x() * dt;
+  state_.pose.y += velocity.y() * dt;
+}
+
+void TrajectoryFollower::advanceDynamic(const Command& command) {
+  const RigidBodyParameters& b = model_.body;
+  BodyForces forces;
+  forces.surge = b.surgeInertia() * model_.surge_loop_gain * (speed_reference_ - state_.speed) +
+                 b.surgeDamping(speed_reference_);
+  forces.yaw_torque =
+      b.yawInertia() * model_.yaw_rate_loop_gain * (command.yaw_rate - state_.yaw_rate) +
+      b.yawDamping(command.yaw_rate);
+  const RigidBodyState next = body_.advance(
+      {state_.pose, state_.speed, state_.sway, state_.yaw_rate}, forces, model_.sim_dt);
+  state_.pose = next.pose;
+  state_.speed = next.surge;
+  state_.sway = next.sway;
+  state_.yaw_rate = next.yaw_rate;
+}
+
+void TrajectoryFollower::step() {
+  if (finished()) return;
+  const Command command = this->command();
+  const double speed_change = model_.vehicle.a_max * model_.sim_dt;
+  speed_reference_ = std::max(0.0, speed_reference_ + std::clamp(command.speed - speed_reference_,
+                                                                 -speed_change, speed_change));
+  if (model_.vehicle_model == VehicleModel::kKinematic) {
+    advanceKinematic(command);
+  } else {
+    advanceDynamic(command);
+  }
   ++steps_;
-  state_.t = start_time_ + static_cast<double>(steps_) * p.sim_dt;
+  state_.t = start_time_ + static_cast<double>(steps_) * model_.sim_dt;
   skipReachedTargets();
 }
 

@@ -4,22 +4,25 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "trajectory_generation_tools/simulation/planar_rigid_body.h"
 #include "trajectory_generation_tools/simulation/robot_model.h"
 
 namespace kinematic_coverage::core {
 
 /// Where a simulated robot is and how fast it moves.
 struct RobotState {
-  double t = 0.0;      ///< s since the simulation started
-  Pose2 pose;          ///< position and heading (yaw in (-pi, pi])
-  double speed = 0.0;  ///< m/s through the water along the heading, >= 0
+  double t = 0.0;         ///< s since the simulation started
+  Pose2 pose;             ///< position and heading (yaw in (-pi, pi])
+  double speed = 0.0;     ///< m/s through the water along the heading (surge)
+  double sway = 0.0;      ///< m/s through the water to the left (0 for the kinematic vehicle)
+  double yaw_rate = 0.0;  ///< rad/s
 };
 
 /// A planar robot that follows a trajectory's poses as a sequence of targets, as the
 /// thesis's robot did in the lake (Chapter 4): it is handed one pose after the other, not
 /// a timetable, so its traversal time comes out of its dynamics and controllers.
 ///
-/// Model (one step of `sim_dt`, explicit Euler, heading updated before position):
+/// Every step of `sim_dt`:
 /// - Targets. A pose at the same position as the pose before it (an in-place rotation of
 ///   the trajectory) is a heading target: reached when the heading is within
 ///   `yaw_tolerance` of its yaw. Any other pose is a position target: reached within
@@ -32,26 +35,32 @@ struct RobotState {
 ///   handed). The robot measures its velocity over ground, so it steers the velocity
 ///   through the water that gives it in the current (crabbing); that velocity's direction
 ///   is the desired heading and its length the speed command. For a heading target the
-///   desired heading is the target's yaw and the speed command 0 (turn in place, drifting
-///   with the current).
-/// - Yaw controller. With e the error to the desired heading, the yaw rate is
+///   desired heading is the target's yaw and the speed command 0 (turn in place).
+/// - Yaw controller. With e the error to the desired heading, the yaw-rate command is
 ///   yaw_gain * e, limited to +-yaw_rate_max.
 /// - Shared thrust. Turning takes thrust from surge: the speed command is at most
-///   v_max * (1 - |yaw rate| / yaw_rate_max), so the robot turns in place when the heading
-///   error is large instead of circling a target.
-/// - Surge dynamics. The speed moves towards its command by at most a_max * sim_dt.
-/// - Current. The robot moves with speed * (cos yaw, sin yaw) + (current_x, current_y).
+///   v_max * (1 - |yaw-rate command| / yaw_rate_max), so the robot turns in place when the
+///   heading error is large instead of circling a target.
+/// - Acceleration limit. The surge-speed reference moves towards the speed command by at
+///   most a_max * sim_dt, and stays >= 0.
+/// - Vehicle, `vehicle_model: kinematic`: the surge speed is the reference and the yaw rate
+///   the command, at once (explicit Euler, heading before position); the robot moves with
+///   speed * (cos yaw, sin yaw) + current.
+/// - Vehicle, `vehicle_model: dynamic`: a PlanarRigidBody driven by two velocity loops,
+///   each a proportional term on its inertia plus a feedforward of its damping:
+///   X = m11 * surge_loop_gain * (u_ref - u) + D_u(u_ref) and
+///   N = m33 * yaw_rate_loop_gain * (r_cmd - r) + D_r(r_cmd), clamped to thrust_max and
+///   yaw_torque_max and held over the step. Sway is not actuated: in a turn the body slips
+///   outwards, and it coasts past a pose it brakes for.
 /// The two thesis trends come out of it (docs/EXPERIMENTS.md): with a high yaw_gain the
 /// turns in place are fast (the yaw rate saturates) while densely sampled arcs cost a slow
-/// down at every pose, and stopping at the corners overshoots them (the robot cannot brake
-/// harder than a_max); with a low yaw_gain each rotation pose is approached exponentially,
+/// down at every pose; with a low yaw_gain each rotation pose is approached exponentially,
 /// so finely sampled rotations (small rotation_sampling_angle) are slow.
 class TrajectoryFollower {
  public:
   /// Follows `targets` from `start` with the robot `model` (its ranges checked where it
   /// was made: robotModelOf). Targets already reached at the start are skipped. Throws
-  /// InvalidInputError for no targets, a non-finite target or start, or a negative start
-  /// speed.
+  /// InvalidInputError for no targets, or a non-finite target or start.
   TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets, const RobotState& start);
 
   /// Advances the robot by sim_dt; does nothing once finished().
@@ -68,14 +77,26 @@ class TrajectoryFollower {
   const std::vector<Pose2>& targets() const { return targets_; }
 
  private:
+  /// The controllers' commands for this step: a surge speed (m/s, >= 0) and a yaw rate.
+  struct Command {
+    double speed = 0.0;
+    double yaw_rate = 0.0;
+  };
+
   bool reached(std::size_t index) const;
   void skipReachedTargets();
+  Command command() const;
+  void advanceKinematic(const Command& command);
+  void advanceDynamic(const Command& command);
 
   RobotModel model_;
   std::vector<Pose2> targets_;
   /// Per target: true for a heading target (same position as the target before it).
   std::vector<bool> heading_target_;
   RobotState state_;
+  PlanarRigidBody body_;
+  /// m/s: the surge-speed reference, the speed command limited by a_max.
+  double speed_reference_ = 0.0;
   double start_time_ = 0.0;  ///< state_.t at the start: t = start + steps * sim_dt
   std::size_t steps_ = 0;
   std::size_t next_target_ = 0;

@@ -1,0 +1,59 @@
+#pragma once
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "trajectory_generation_tools/simulation/rigid_body_parameters.h"
+
+namespace kinematic_coverage::core {
+
+/// Where a rigid body is and how it moves through the water.
+struct RigidBodyState {
+  Pose2 pose;             ///< position (m) and heading (rad) in the world frame
+  double surge = 0.0;     ///< u, m/s through the water along the heading
+  double sway = 0.0;      ///< v, m/s through the water to the left of the heading
+  double yaw_rate = 0.0;  ///< r, rad/s
+};
+
+/// The forces a controller applies, in the body frame.
+struct BodyForces {
+  double surge = 0.0;       ///< N along the heading
+  double yaw_torque = 0.0;  ///< N m, counter-clockwise
+};
+
+/// A planar rigid body in surge, sway and yaw, the dynamic vehicle of the simulator
+/// (vehicle_model: dynamic). Its equations of motion, for velocities relative to the
+/// water nu = (u, v, r) and a constant, irrotational current V_c (Fossen 2011, its
+/// relative-velocity form for such a current):
+///   m11 u' = X + m22 v r - D_u(u)
+///   m22 v' =   - m11 u r - D_v(v)            (sway is not actuated)
+///   m33 r' = N + (m11 - m22) u v - D_r(r)    (the Munk moment)
+///   (x, y)' = R(psi) (u, v) + V_c,  psi' = r
+/// with D_*(s) = (d_linear + d_quadratic |s|) s. It is integrated with the classical
+/// Runge-Kutta method in fixed steps of at most kIntegrationStep.
+class PlanarRigidBody {
+ public:
+  /// s: the longest integration step; a simulation step is cut into equal steps no longer.
+  static constexpr double kIntegrationStep = 0.01;
+
+  /// A body with `parameters` in a current of (current_x, current_y) m/s.
+  PlanarRigidBody(const RigidBodyParameters& parameters, double current_x, double current_y);
+
+  /// The state after `duration` s under constant `forces` (each clamped to the thrust and
+  /// torque limits first), starting from `state`; the heading wrapped into (-pi, pi].
+  RigidBodyState advance(const RigidBodyState& state, const BodyForces& forces,
+                         double duration) const;
+
+  /// `forces` clamped to +-thrust_max and +-yaw_torque_max.
+  BodyForces limited(const BodyForces& forces) const;
+
+  const RigidBodyParameters& parameters() const { return parameters_; }
+
+ private:
+  /// The time derivative of (x, y, psi, u, v, r) under `forces`.
+  void derivative(const double* s, const BodyForces& forces, double* ds) const;
+
+  RigidBodyParameters parameters_;
+  double current_x_ = 0.0;
+  double current_y_ = 0.0;
+};
+
+}  // namespace kinematic_coverage::core
