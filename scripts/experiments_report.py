@@ -251,6 +251,21 @@ the heatmap of what its sensor saw.
 
 <img src="images/experiments_lake_30x30_local.png" width="32%"> <img src="images/experiments_lake_30x30_default.png" width="32%"> <img src="images/experiments_lake_30x30_unsmoothed.png" width="32%">
 
+As the thesis's figures, Algorithm 1 (left) against unsmoothed (right). The planned
+trajectories over the heatmaps of what they let the sensor see (Fig. 4.2):
+
+<img src="images/experiments_lake_30x30_local_plan.png" width="48%"> <img src="images/experiments_lake_30x30_unsmoothed_plan.png" width="48%">
+
+The desired trajectory in red and the poses the robot drove as black arrows, about one a
+second (Fig. 4.3):
+
+<img src="images/experiments_lake_30x30_local_poses.png" width="48%"> <img src="images/experiments_lake_30x30_unsmoothed_poses.png" width="48%">
+
+The error statistics (Fig. 4.5): the histogram of the error with its normal fit, the
+histograms of its x and y parts, and the x, y and Euclidean errors over time:
+
+<img src="images/experiments_lake_30x30_local_errors.png" width="48%"> <img src="images/experiments_lake_30x30_unsmoothed_errors.png" width="48%">
+
 ## Experiment 2: lake_7_5, low yaw gain, finer rotations (Table 4.3)
 
 Mission `config/missions/lake_7_5.yaml` (a 7.5 m x 7.5 m map with many turns and an
@@ -325,6 +340,12 @@ Where the numbers differ from the thesis, and why:
   0 % for its 7.5 m map, whose sensor height and wall offset it does not state.
 
 <img src="images/experiments_lake_7_5_local.png" width="32%"> <img src="images/experiments_lake_7_5_default.png" width="32%"> <img src="images/experiments_lake_7_5_unsmoothed.png" width="32%">
+
+Algorithm 1 (left) against unsmoothed (right): the driven poses and the error statistics.
+
+<img src="images/experiments_lake_7_5_local_poses.png" width="48%"> <img src="images/experiments_lake_7_5_unsmoothed_poses.png" width="48%">
+
+<img src="images/experiments_lake_7_5_local_errors.png" width="48%"> <img src="images/experiments_lake_7_5_unsmoothed_errors.png" width="48%">
 
 ## A constant current
 

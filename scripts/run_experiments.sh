@@ -103,5 +103,14 @@ for name in lake_30x30_local lake_30x30_default lake_30x30_unsmoothed lake_7_5_l
   lake_7_5_default lake_7_5_unsmoothed lake_30x30_current; do
   cp "$out/$name/simulate/plot.png" "$images/experiments_$name.png"
 done
+# The thesis's figures for Algorithm 1 against unsmoothed: the planned trajectories'
+# heatmaps (Fig. 4.2), the driven poses (Fig. 4.3) and the error statistics (Fig. 4.5).
+for name in lake_30x30_local lake_30x30_unsmoothed lake_7_5_local lake_7_5_unsmoothed; do
+  cp "$out/$name/simulate/poses.png" "$images/experiments_${name}_poses.png"
+  cp "$out/$name/simulate/errors.png" "$images/experiments_${name}_errors.png"
+done
+for name in lake_30x30_local lake_30x30_unsmoothed; do
+  cp "$out/$name/plan/plot.png" "$images/experiments_${name}_plan.png"
+done
 echo "== write docs/EXPERIMENTS.md" >&2
 /usr/bin/python3 "$root/scripts/experiments_report.py" "$out" >"$root/docs/EXPERIMENTS.md"

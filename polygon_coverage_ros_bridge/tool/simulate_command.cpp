@@ -1,6 +1,8 @@
 #include "polygon_coverage_ros_bridge/tool/simulate_command.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -18,6 +20,7 @@
 #include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
+#include "trajectory_generation_tools/plot/tracking_error_plot.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 
 namespace kinematic_coverage::core {
@@ -103,6 +106,66 @@ CoveragePlotData simulationPlot(const SimulationResult& simulation,
   return plot;
 }
 
+/// Arrows of poses.png per simulated second at most, and in all.
+constexpr double kPoseArrowsPerSecond = 1.0;
+constexpr std::size_t kMaxPoseArrows = 1500;
+
+/// poses.png of `simulate` without its areas: the desired trajectory in red and the
+/// driven poses as black arrows (the thesis's Fig. 4.3).
+CoveragePlotData posesPlot(const SimulationResult& simulation, const std::vector<Pose2>& desired,
+                           double sim_dt) {
+  CoveragePlotData plot;
+  plot.trajectory = desired;
+  const std::size_t steps = simulation.steps.size();
+  const std::size_t stride = std::max<std::size_t>(
+      {1, static_cast<std::size_t>(std::lround(1.0 / (kPoseArrowsPerSecond * sim_dt))),
+       (steps + kMaxPoseArrows - 1) / kMaxPoseArrows});
+  for (std::size_t i = 0; i < steps; i += stride) {
+    plot.actual_pose_arrows.push_back(simulation.steps[i].pose);
+  }
+  return plot;
+}
+
+/// errors.png of `simulate`: the step errors, their histograms and normal fits.
+TrackingErrorPlotData errorsPlot(const SimulationResult& simulation) {
+  TrackingErrorPlotData plot;
+  for (std::size_t i = 1; i < simulation.steps.size(); ++i) {
+    const SimulationStep& step = simulation.steps[i];
+    plot.t.push_back(step.t);
+    plot.error.push_back(step.tracking_error_m);
+    plot.error_x.push_back(step.tracking_error_x_m);
+    plot.error_y.push_back(step.tracking_error_y_m);
+  }
+  if (plot.t.empty()) {
+    const SimulationStep& start = simulation.steps.front();
+    plot.t.push_back(start.t);
+    plot.error.push_back(start.tracking_error_m);
+    plot.error_x.push_back(start.tracking_error_x_m);
+    plot.error_y.push_back(start.tracking_error_y_m);
+  }
+  return plot;
+}
+
+/// Writes plot.png, poses.png and errors.png into `dir`, titled by `title`.
+void writeSimulationFigures(const std::filesystem::path& dir, const std::string& title,
+                            const SimulationResult& simulation, const TrajectoryCoverage& coverage,
+                            const std::vector<Pose2>& desired, const CleanedPolygon& cleaned,
+                            const OffsetFreeArea& offset, double sim_dt) {
+  CoveragePlotData plot = simulationPlot(simulation, coverage, desired, actualPoses(simulation));
+  CoveragePlotData poses = posesPlot(simulation, desired, sim_dt);
+  for (CoveragePlotData* figure : {&plot, &poses}) {
+    figure->free_area = cleaned.free_area;
+    figure->offset_parts = offset.parts;
+  }
+  plot.title_lines.insert(plot.title_lines.begin(), title);
+  poses.title_lines = plot.title_lines;
+  CoveragePlot().writePng(plot, (dir / "plot.png").string());
+  CoveragePlot().writePng(poses, (dir / "poses.png").string());
+  TrackingErrorPlotData errors = errorsPlot(simulation);
+  errors.title_lines = plot.title_lines;
+  TrackingErrorPlot().writePng(errors, (dir / "errors.png").string());
+}
+
 }  // namespace
 
 std::string SimulateCommand::usage() {
@@ -115,8 +178,10 @@ std::string SimulateCommand::usage() {
          "  position_gain, position_tolerance, yaw_tolerance, current_x, current_y, sim_dt,\n"
          "  sim_time_limit), and writes DIR/actual.csv (t,x,y,yaw and the tracking errors\n"
          "  error_m,error_x_m,error_y_m,target_error_m per step), DIR/metrics.json\n"
-         "  (traversal time, tracking errors, coverage of the actual poses)\n"
-         "  and DIR/plot.png. --set overrides a parameter of config/default.yaml (the value\n"
+         "  (traversal time, tracking errors, coverage of the actual poses),\n"
+         "  DIR/plot.png (the driven path over the heatmap), DIR/poses.png (desired\n"
+         "  trajectory and actual poses) and DIR/errors.png (error histograms, normal fits\n"
+         "  and errors over time). --set overrides a parameter of config/default.yaml (the value\n"
          "  is read as YAML), after the mission file.\n"
          "  --config FILE reads the parameters of FILE (as config/default.yaml, e.g.\n"
          "  config/thesis.yaml) over the built-in defaults, before the mission file.\n";
@@ -174,22 +239,19 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const std::filesystem::path dir(out_dir);
   const std::string actual_path = (dir / "actual.csv").string();
   const std::string metrics_path = (dir / "metrics.json").string();
-  const std::string plot_path = (dir / "plot.png").string();
   writeTextFile(actual_path, actualCsv(simulation.steps));
   simulationMetrics(simulation, coverage).write(metrics_path);
-  CoveragePlotData plot = simulationPlot(simulation, coverage, desired, actual);
-  plot.free_area = cleaned.free_area;
-  plot.offset_parts = offset.parts;
-  plot.title_lines.insert(
-      plot.title_lines.begin(),
+  writeSimulationFigures(
+      dir,
       "Simulated robot on " + std::filesystem::path(trajectory_path).filename().string() + " (" +
-          std::filesystem::path(arguments.mission_path).filename().string() + ")");
-  CoveragePlot().writePng(plot, plot_path);
+          std::filesystem::path(arguments.mission_path).filename().string() + ")",
+      simulation, coverage, desired, cleaned, offset, mission.parameters.sim_dt);
 
   std::ostringstream notes;
   for (const std::string& warning : cleaned.warnings) notes << "warning: " << warning << "\n";
   err << notes.str();
-  out << "wrote " << actual_path << " " << metrics_path << " " << plot_path << "\n";
+  out << "wrote " << actual_path << " " << metrics_path << " " << (dir / "plot.png").string() << " "
+      << (dir / "poses.png").string() << " " << (dir / "errors.png").string() << "\n";
 }
 
 }  // namespace kinematic_coverage::core

@@ -152,6 +152,29 @@ TEST(CoveragePlotTest, PixelsShowObstaclesHeatmapAndBackground) {
   expectColour(kBackgroundColour, image.colourAt(Point2(2.0, 2.0)), "image corner");
 }
 
+TEST(CoveragePlotTest, ActualPoseArrowsAreBlackOverARedTrajectory) {
+  // The thesis's Fig. 4.3: the desired trajectory in red, the poses driven as black arrows.
+  const CoveragePlot plot(CoveragePlotOptions{800, 600});
+  CoveragePlotData data = scene();
+  data.heatmap.reset();
+  data.actual_pose_arrows = {{20.0, 4.0, 0.0}, {24.0, 4.0, M_PI / 2}};
+  const CoveragePlotLayout layout = plot.layout(data);
+  const std::string path = tempPng("pose_arrows");
+  plot.writePng(data, path);
+  const PngImage image(path);
+  ASSERT_TRUE(image.valid());
+  const PlotColour line = image.colourAt(layout.toPixel(Point2(6.0, 9.5)));
+  EXPECT_GT(line.red, 150);
+  EXPECT_LT(line.green, 90);
+  EXPECT_LT(line.blue, 90);
+  for (const Pose2& arrow : data.actual_pose_arrows) {
+    const PlotColour centre = image.colourAt(layout.toPixel(arrow.position()));
+    EXPECT_LT(centre.red + centre.green + centre.blue, 150) << arrow.x;
+  }
+  data.actual_pose_arrows.push_back({std::nan(""), 0.0, 0.0});
+  EXPECT_THROW(plot.writePng(data, tempPng("bad_arrows")), InvalidInputError);
+}
+
 TEST(CoveragePlotTest, FreeAreaWithoutHeatmapHasItsFill) {
   const CoveragePlot plot(CoveragePlotOptions{800, 600});
   CoveragePlotData data = scene();

@@ -506,8 +506,11 @@ TEST(CoverageTool, SimulatesPlansTrajectoryAndWritesItsFiles) {
   const std::vector<std::string> out_lines = lines(run.out);
   ASSERT_FALSE(out_lines.empty());
   EXPECT_EQ(out_lines.back(), "wrote " + out_dir + "/actual.csv " + out_dir + "/metrics.json " +
-                                  out_dir + "/plot.png");
-  EXPECT_EQ(readText(out_dir + "/plot.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
+                                  out_dir + "/plot.png " + out_dir + "/poses.png " + out_dir +
+                                  "/errors.png");
+  for (const char* figure : {"/plot.png", "/poses.png", "/errors.png"}) {
+    EXPECT_EQ(readText(out_dir + figure).substr(0, 8), "\x89PNG\r\n\x1a\n") << figure;
+  }
 
   const std::string json = readText(out_dir + "/metrics.json");
   EXPECT_EQ(jsonKeys(json), (std::vector<std::string>{"traversal_time_s",

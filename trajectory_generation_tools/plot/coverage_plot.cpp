@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "trajectory_generation_tools/plot/plot_canvas.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -23,6 +24,8 @@ constexpr PlotColour kOutlineColour{45, 45, 45};
 constexpr PlotColour kOffsetAreaColour{80, 80, 80};
 constexpr PlotColour kWaypointColour{230, 97, 1};
 constexpr PlotColour kTrajectoryColour{20, 20, 20};
+/// The trajectory under the actual pose arrows, red as in the thesis's Fig. 4.3.
+constexpr PlotColour kDesiredColour{215, 25, 28};
 constexpr PlotColour kStartColour{26, 152, 80};
 constexpr PlotColour kGoalColour{123, 50, 148};
 constexpr PlotColour kUnseenRegionColour{200, 0, 110};
@@ -39,8 +42,6 @@ constexpr std::array<PlotColour, 5> kErrorColours{
 /// The heatmap image's longest side, pixels: larger grids are sampled down (nearest cell),
 /// which keeps memory bounded and is still finer than any plot box.
 constexpr int kMaxHeatmapImageSide = 4096;
-/// Image width at which fonts, margins and line widths have their nominal size.
-constexpr double kNominalWidth = 1200.0;
 /// Default on-image distance between heading arrows, pixels, and the least one.
 constexpr double kDefaultArrowSpacingPixels = 90.0;
 constexpr double kMinArrowSpacingPixels = 12.0;
@@ -53,15 +54,6 @@ constexpr double kMaxAutoAspect = 1.4;
 constexpr double kMinBoxSide = 100.0;
 /// On-image distance between axis ticks the tick step aims at, pixels.
 constexpr double kTickSpacingPixels = 110.0;
-
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
-};
-struct ContextDeleter {
-  void operator()(cairo_t* context) const { cairo_destroy(context); }
-};
-using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
-using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
 
 bool isFinite(const Point2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
 
@@ -130,6 +122,7 @@ void checkData(const CoveragePlotData& data) {
   checkPoses(data.waypoints, "waypoint path");
   checkPoses(data.trajectory, "trajectory");
   checkPoses(data.actual_path, "actual path");
+  checkPoses(data.actual_pose_arrows, "actual pose arrows");
   if (data.actual_errors.size() != data.actual_path.size()) {
     throw InvalidInputError("coverage plot: " + std::to_string(data.actual_errors.size()) +
                             " actual errors for " + std::to_string(data.actual_path.size()) +
@@ -171,30 +164,14 @@ Bounds drawnBounds(const CoveragePlotData& data) {
   for (const Pose2& pose : data.waypoints) bounds.add(pose.position());
   for (const Pose2& pose : data.trajectory) bounds.add(pose.position());
   for (const Pose2& pose : data.actual_path) bounds.add(pose.position());
+  for (const Pose2& pose : data.actual_pose_arrows) bounds.add(pose.position());
   if (data.start) bounds.add(*data.start);
   if (data.goal) bounds.add(*data.goal);
   return bounds;
 }
 
-/// Sizes that scale with the image width.
-struct Scale {
-  double factor;  ///< of lengths: margins, line widths, markers
-  double title;   ///< font sizes, pixels
-  double subtitle;
-  double tick;
-  double label;
-  double legend;
-};
-
-/// Sizes grow with the square root of the width, so that small images keep legible text
-/// and large ones give the extra room to the plot.
-Scale scaleFor(int width) {
-  const double f = std::sqrt(width / kNominalWidth);
-  return {f, 21.0 * f, 15.0 * f, 14.0 * f, 15.0 * f, 14.0 * f};
-}
-
 /// Height of the title block above the box, pixels.
-double titleBlockHeight(const std::vector<std::string>& lines, const Scale& scale) {
+double titleBlockHeight(const std::vector<std::string>& lines, const PlotScale& scale) {
   if (lines.empty()) return 26.0 * scale.factor;
   double height = 18.0 * scale.factor + 1.35 * scale.title;
   height += 1.35 * scale.subtitle * static_cast<double>(lines.size() - 1);
@@ -213,7 +190,7 @@ CoveragePlotLayout computeLayout(const CoveragePlotData& data, const CoveragePlo
     throw InvalidInputError("coverage plot: coordinates too large to plot");
   }
 
-  const Scale scale = scaleFor(options.width);
+  const PlotScale scale = plotScaleFor(options.width);
   CoveragePlotLayout layout;
   layout.width = options.width;
   layout.box_left = std::round(92.0 * scale.factor);
@@ -242,10 +219,6 @@ CoveragePlotLayout computeLayout(const CoveragePlotData& data, const CoveragePlo
   const Point2 box_span = Point2(layout.box_width, layout.box_height) / layout.pixels_per_metre;
   layout.box_world_min = 0.5 * (bounds.min + bounds.max) - 0.5 * box_span;
   return layout;
-}
-
-void setColour(cairo_t* cr, const PlotColour& colour) {
-  cairo_set_source_rgb(cr, colour.red / 255.0, colour.green / 255.0, colour.blue / 255.0);
 }
 
 void moveTo(cairo_t* cr, const CoveragePlotLayout& layout, const Point2& world) {
@@ -289,6 +262,11 @@ std::uint32_t packedColour(const PlotColour& colour) {
 
 /// The heatmap as an image, one pixel per cell (sampled down beyond
 /// kMaxHeatmapImageSide), top row = the grid's last row.
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
+};
+using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+
 SurfacePtr heatmapImage(const Heatmap& heatmap) {
   const int columns = std::min(heatmap.columns, kMaxHeatmapImageSide);
   const int rows = std::min(heatmap.rows, kMaxHeatmapImageSide);
@@ -321,7 +299,7 @@ SurfacePtr heatmapImage(const Heatmap& heatmap) {
 
 /// The free area: a light fill, the heatmap clipped to it, then the obstacles and outlines.
 void drawAreas(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
-               const Scale& scale) {
+               const PlotScale& scale) {
   areaPath(cr, layout, data.free_area);
   setColour(cr, kFreeAreaColour);
   cairo_fill(cr);
@@ -366,7 +344,7 @@ void drawAreas(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlot
 }
 
 void drawWaypointPath(cairo_t* cr, const CoveragePlotLayout& layout,
-                      const std::vector<Pose2>& waypoints, const Scale& scale) {
+                      const std::vector<Pose2>& waypoints, const PlotScale& scale) {
   if (waypoints.empty()) return;
   setColour(cr, kWaypointColour);
   if (waypoints.size() > 1) {
@@ -385,7 +363,7 @@ void drawWaypointPath(cairo_t* cr, const CoveragePlotLayout& layout,
 }
 
 /// A filled arrowhead centred on pixel `centre`, pointing along world heading `yaw`.
-void arrowPath(cairo_t* cr, const Point2& centre, double yaw, const Scale& scale) {
+void arrowPath(cairo_t* cr, const Point2& centre, double yaw, const PlotScale& scale) {
   const Point2 along(std::cos(yaw), -std::sin(yaw));
   const Point2 across(-along.y(), along.x());
   const double length = 12.0 * scale.factor;
@@ -401,15 +379,18 @@ void arrowPath(cairo_t* cr, const Point2& centre, double yaw, const Scale& scale
 
 double wrappedAngle(double angle) { return std::remainder(angle, 2.0 * M_PI); }
 
-void drawTrajectory(cairo_t* cr, const CoveragePlotLayout& layout,
-                    const std::vector<Pose2>& trajectory, double arrow_spacing,
-                    const Scale& scale) {
+/// The trajectory with heading arrows, or red without them under actual pose arrows.
+void drawTrajectory(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
+                    double arrow_spacing, const PlotScale& scale) {
+  const std::vector<Pose2>& trajectory = data.trajectory;
   if (trajectory.size() < 2) return;
-  setColour(cr, kTrajectoryColour);
+  const bool under_arrows = !data.actual_pose_arrows.empty();
+  setColour(cr, under_arrows ? kDesiredColour : kTrajectoryColour);
   posePath(cr, layout, trajectory);
   cairo_set_line_width(cr, 1.8 * scale.factor);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_stroke(cr);
+  if (under_arrows) return;
 
   const double spacing =
       arrow_spacing > 0.0
@@ -433,6 +414,19 @@ void drawTrajectory(cairo_t* cr, const CoveragePlotLayout& layout,
   cairo_fill(cr);
 }
 
+/// The actual poses as black arrows, smaller than the trajectory's heading arrows.
+void drawPoseArrows(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
+                    const PlotScale& scale) {
+  if (data.actual_pose_arrows.empty()) return;
+  const PlotScale small{0.7 * scale.factor, scale.title, scale.subtitle,
+                        scale.tick,         scale.label, scale.legend};
+  setColour(cr, kTrajectoryColour);
+  for (const Pose2& pose : data.actual_pose_arrows) {
+    arrowPath(cr, layout.toPixel(pose.position()), pose.yaw, small);
+  }
+  cairo_fill(cr);
+}
+
 /// The least top of the tracking error's colour scale, metres: millimetre deviations of a
 /// well-tracked path stay dark instead of spanning the whole colour map.
 constexpr double kMinErrorScale = 0.05;
@@ -447,7 +441,7 @@ double errorScale(const std::vector<double>& errors) {
 
 /// The actual path, each piece coloured by its ends' mean tracking error.
 void drawActualPath(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
-                    const Scale& scale) {
+                    const PlotScale& scale) {
   if (data.actual_path.size() < 2) return;
   const double top = errorScale(data.actual_errors);
   cairo_set_line_width(cr, 2.4 * scale.factor);
@@ -462,35 +456,9 @@ void drawActualPath(cairo_t* cr, const CoveragePlotLayout& layout, const Coverag
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
 }
 
-enum class Align { kStart, kCentre, kEnd };
-
-void selectFont(cairo_t* cr, double size, bool bold) {
-  cairo_select_font_face(cr, "sans", CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size);
-}
-
-/// Moves to where `text` starts so that it is aligned at (x, y) horizontally as `horizontal`
-/// says and vertically centred on y.
-void moveToText(cairo_t* cr, const std::string& text, double x, double y, Align horizontal) {
-  cairo_text_extents_t extents;
-  cairo_text_extents(cr, text.c_str(), &extents);
-  cairo_font_extents_t font;
-  cairo_font_extents(cr, &font);
-  double left = x - extents.x_bearing;
-  if (horizontal == Align::kCentre) left -= 0.5 * extents.width;
-  if (horizontal == Align::kEnd) left -= extents.width;
-  cairo_move_to(cr, left, y + 0.5 * (font.ascent - font.descent));
-}
-
-void showText(cairo_t* cr, const std::string& text, double x, double y, Align horizontal) {
-  moveToText(cr, text, x, y, horizontal);
-  cairo_show_text(cr, text.c_str());
-}
-
 /// Text with a white halo, readable over the heatmap and lines.
-void showHaloText(cairo_t* cr, const std::string& text, double x, double y, Align horizontal,
-                  const Scale& scale) {
+void showHaloText(cairo_t* cr, const std::string& text, double x, double y, TextAlign horizontal,
+                  const PlotScale& scale) {
   moveToText(cr, text, x, y, horizontal);
   cairo_text_path(cr, text.c_str());
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
@@ -501,17 +469,17 @@ void showHaloText(cairo_t* cr, const std::string& text, double x, double y, Alig
   cairo_fill(cr);
 }
 
-void startMarkerPath(cairo_t* cr, const Point2& centre, const Scale& scale) {
+void startMarkerPath(cairo_t* cr, const Point2& centre, const PlotScale& scale) {
   cairo_new_sub_path(cr);
   cairo_arc(cr, centre.x(), centre.y(), 7.0 * scale.factor, 0.0, 2.0 * M_PI);
 }
 
-void goalMarkerPath(cairo_t* cr, const Point2& centre, const Scale& scale) {
+void goalMarkerPath(cairo_t* cr, const Point2& centre, const PlotScale& scale) {
   const double half = 6.5 * scale.factor;
   cairo_rectangle(cr, centre.x() - half, centre.y() - half, 2.0 * half, 2.0 * half);
 }
 
-void fillMarker(cairo_t* cr, const PlotColour& colour, const Scale& scale) {
+void fillMarker(cairo_t* cr, const PlotColour& colour, const PlotScale& scale) {
   setColour(cr, colour);
   cairo_fill_preserve(cr);
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
@@ -524,7 +492,7 @@ void fillMarker(cairo_t* cr, const PlotColour& colour, const Scale& scale) {
 /// the walls it lies along do not hide it), circled too where it is only a few pixels
 /// across.
 void drawUnseenRegion(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
-                      const Scale& scale) {
+                      const PlotScale& scale) {
   if (!data.unseen_region || data.unseen_region->empty()) return;
   Point2 low = layout.toPixel(data.unseen_region->front());
   Point2 high = low;
@@ -547,55 +515,25 @@ void drawUnseenRegion(cairo_t* cr, const CoveragePlotLayout& layout, const Cover
 }
 
 void drawMarkers(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
-                 const Scale& scale) {
+                 const PlotScale& scale) {
   selectFont(cr, scale.legend, true);
   if (data.start) {
     const Point2 p = layout.toPixel(*data.start);
     startMarkerPath(cr, p, scale);
     fillMarker(cr, kStartColour, scale);
     showHaloText(cr, "start", p.x() + 10.0 * scale.factor, p.y() - 13.0 * scale.factor,
-                 Align::kStart, scale);
+                 TextAlign::kStart, scale);
   }
   if (data.goal) {
     const Point2 p = layout.toPixel(*data.goal);
     goalMarkerPath(cr, p, scale);
     fillMarker(cr, kGoalColour, scale);
     showHaloText(cr, "goal", p.x() + 10.0 * scale.factor, p.y() + 14.0 * scale.factor,
-                 Align::kStart, scale);
+                 TextAlign::kStart, scale);
   }
 }
 
-/// The tick step of 1, 2 or 5 times a power of ten nearest (by ratio) to `range` divided
-/// into `target_count` steps.
-double niceStep(double range, double target_count) {
-  const double raw = range / std::max(target_count, 1.0);
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  double best = magnitude;
-  for (const double multiple : {2.0, 5.0, 10.0}) {
-    const double step = multiple * magnitude;
-    if (std::abs(std::log(step / raw)) < std::abs(std::log(best / raw))) best = step;
-  }
-  return best;
-}
-
-/// Tick positions within [min, max], multiples of `step`.
-std::vector<double> ticks(double min, double max, double step) {
-  std::vector<double> values;
-  for (double k = std::ceil(min / step - 1e-9); k * step <= max + 1e-9 * step; k += 1.0) {
-    values.push_back(k * step);
-  }
-  return values;
-}
-
-std::string tickLabel(double value, double step) {
-  const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
-  if (std::abs(value) < 1e-9 * step) value = 0.0;
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-  return text;
-}
-
-void drawAxes(cairo_t* cr, const CoveragePlotLayout& layout, const Scale& scale) {
+void drawAxes(cairo_t* cr, const CoveragePlotLayout& layout, const PlotScale& scale) {
   const double left = layout.box_left;
   const double top = layout.box_top;
   const double right = left + layout.box_width;
@@ -617,35 +555,36 @@ void drawAxes(cairo_t* cr, const CoveragePlotLayout& layout, const Scale& scale)
     const double px = layout.toPixel(Point2(x, 0.0)).x();
     cairo_move_to(cr, px, bottom);
     cairo_line_to(cr, px, bottom + tick_length);
-    showText(cr, tickLabel(x, step), px, bottom + tick_length + 0.85 * scale.tick, Align::kCentre);
+    showText(cr, tickLabel(x, step), px, bottom + tick_length + 0.85 * scale.tick,
+             TextAlign::kCentre);
   }
   for (const double y : ticks(layout.box_world_min.y(), world_max.y(), step)) {
     const double py = layout.toPixel(Point2(0.0, y)).y();
     cairo_move_to(cr, left, py);
     cairo_line_to(cr, left - tick_length, py);
-    showText(cr, tickLabel(y, step), left - tick_length - 4.0 * scale.factor, py, Align::kEnd);
+    showText(cr, tickLabel(y, step), left - tick_length - 4.0 * scale.factor, py, TextAlign::kEnd);
   }
   cairo_stroke(cr);
 
   selectFont(cr, scale.label, false);
   showText(cr, "x [m]", 0.5 * (left + right), bottom + tick_length + 2.4 * scale.label,
-           Align::kCentre);
+           TextAlign::kCentre);
   cairo_save(cr);
   cairo_translate(cr, left - tick_length - 4.4 * scale.label, 0.5 * (top + bottom));
   cairo_rotate(cr, -0.5 * M_PI);
-  showText(cr, "y [m]", 0.0, 0.0, Align::kCentre);
+  showText(cr, "y [m]", 0.0, 0.0, TextAlign::kCentre);
   cairo_restore(cr);
 }
 
 void drawTitle(cairo_t* cr, const CoveragePlotLayout& layout, const std::vector<std::string>& lines,
-               const Scale& scale) {
+               const PlotScale& scale) {
   const double centre = layout.box_left + 0.5 * layout.box_width;
   double y = 18.0 * scale.factor + 0.6 * scale.title;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const bool title = i == 0;
     selectFont(cr, title ? scale.title : scale.subtitle, title);
     setColour(cr, title ? kTextColour : kSubtitleColour);
-    showText(cr, lines[i], centre, y, Align::kCentre);
+    showText(cr, lines[i], centre, y, TextAlign::kCentre);
     y += 1.35 * (title ? 0.5 * (scale.title + scale.subtitle) : scale.subtitle);
   }
 }
@@ -653,11 +592,11 @@ void drawTitle(cairo_t* cr, const CoveragePlotLayout& layout, const std::vector<
 /// The tracking error's colour bar, from 0 at the bottom to the largest error at the top,
 /// with its title at `y` in the legend column at `x`.
 void drawErrorBar(cairo_t* cr, const CoveragePlotData& data, double x, double y,
-                  const Scale& scale) {
+                  const PlotScale& scale) {
   const double f = scale.factor;
   selectFont(cr, scale.legend, true);
   setColour(cr, kTextColour);
-  showText(cr, "tracking error [m]", x, y, Align::kStart);
+  showText(cr, "tracking error [m]", x, y, TextAlign::kStart);
   y += 0.8 * 25.0 * f;
   const double bar_width = 22.0 * f;
   const double bar_height = 120.0 * f;
@@ -681,14 +620,14 @@ void drawErrorBar(cairo_t* cr, const CoveragePlotData& data, double x, double y,
   for (const double share : {0.0, 0.5, 1.0}) {
     char text[32];
     std::snprintf(text, sizeof(text), "%.2g", share * top);
-    showText(cr, text, x + bar_width + 8.0 * f, y + (1.0 - share) * bar_height, Align::kStart);
+    showText(cr, text, x + bar_width + 8.0 * f, y + (1.0 - share) * bar_height, TextAlign::kStart);
   }
 }
 
 /// A column of legend rows right of the box: each row's sample at x, its label beside it.
 struct LegendColumn {
   cairo_t* cr;
-  const Scale& scale;
+  const PlotScale& scale;
   double x;
   double sample_width;
   double label_x;
@@ -699,7 +638,7 @@ struct LegendColumn {
   void label(const std::string& text) {
     selectFont(cr, scale.legend, false);
     setColour(cr, kTextColour);
-    showText(cr, text, label_x, y, Align::kStart);
+    showText(cr, text, label_x, y, TextAlign::kStart);
     y += row_height;
   }
 };
@@ -710,15 +649,24 @@ void drawLineKeys(LegendColumn& column, const CoveragePlotData& data) {
   const double f = column.scale.factor;
   const double x = column.x;
   const double sample_width = column.sample_width;
+  const bool under_arrows = !data.actual_pose_arrows.empty();
   if (data.trajectory.size() > 1) {
-    setColour(cr, kTrajectoryColour);
+    setColour(cr, under_arrows ? kDesiredColour : kTrajectoryColour);
     cairo_move_to(cr, x, column.y);
     cairo_line_to(cr, x + sample_width, column.y);
     cairo_set_line_width(cr, 1.8 * f);
     cairo_stroke(cr);
+    if (!under_arrows) {
+      arrowPath(cr, Point2(x + 0.5 * sample_width, column.y), 0.0, column.scale);
+      cairo_fill(cr);
+    }
+    column.label(under_arrows ? "desired trajectory" : "trajectory");
+  }
+  if (under_arrows) {
+    setColour(cr, kTrajectoryColour);
     arrowPath(cr, Point2(x + 0.5 * sample_width, column.y), 0.0, column.scale);
     cairo_fill(cr);
-    column.label("trajectory");
+    column.label("actual poses");
   }
   if (data.actual_path.size() > 1) {
     cairo_set_line_width(cr, 2.4 * f);
@@ -802,7 +750,7 @@ void drawVisitKey(LegendColumn& column) {
   column.y += 0.6 * column.row_height;
   selectFont(cr, column.scale.legend, true);
   setColour(cr, kTextColour);
-  showText(cr, "visits", x, column.y, Align::kStart);
+  showText(cr, "visits", x, column.y, TextAlign::kStart);
   column.y += 0.8 * column.row_height;
   const double swatch_width = 22.0 * f;
   const double swatch_height = 24.0 * f;
@@ -816,7 +764,7 @@ void drawVisitKey(LegendColumn& column) {
     cairo_fill(cr);
     setColour(cr, kTextColour);
     showText(cr, names[i], x + swatch_width + 8.0 * f, column.y + 0.5 * swatch_height,
-             Align::kStart);
+             TextAlign::kStart);
     column.y += swatch_height;
   }
   setColour(cr, kOutlineColour);
@@ -829,7 +777,7 @@ void drawVisitKey(LegendColumn& column) {
 /// The key to the lines and markers, then the colour bars of the heatmap and of the
 /// tracking error, right of the box.
 void drawLegend(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
-                const Scale& scale) {
+                const PlotScale& scale) {
   const double f = scale.factor;
   const double x = layout.box_left + layout.box_width + 24.0 * f;
   const double sample_width = 34.0 * f;
@@ -878,25 +826,18 @@ CoveragePlotLayout CoveragePlot::layout(const CoveragePlotData& data) const {
 
 void CoveragePlot::writePng(const CoveragePlotData& data, const std::string& path) const {
   const CoveragePlotLayout layout = computeLayout(data, options_);
-  const Scale scale = scaleFor(layout.width);
-  const SurfacePtr surface(
-      cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height));
-  const ContextPtr context(cairo_create(surface.get()));
-  if (cairo_status(context.get()) != CAIRO_STATUS_SUCCESS) {
-    throw std::runtime_error("coverage plot: cannot allocate a " + std::to_string(layout.width) +
-                             " x " + std::to_string(layout.height) + " image");
-  }
-  cairo_t* cr = context.get();
-  setColour(cr, kBackgroundColour);
-  cairo_paint(cr);
+  const PlotScale scale = plotScaleFor(layout.width);
+  const PlotCanvas canvas(layout.width, layout.height, "coverage plot");
+  cairo_t* cr = canvas.context();
 
   cairo_save(cr);
   cairo_rectangle(cr, layout.box_left, layout.box_top, layout.box_width, layout.box_height);
   cairo_clip(cr);
   drawAreas(cr, layout, data, scale);
   drawWaypointPath(cr, layout, data.waypoints, scale);
-  drawTrajectory(cr, layout, data.trajectory, options_.arrow_spacing, scale);
+  drawTrajectory(cr, layout, data, options_.arrow_spacing, scale);
   drawActualPath(cr, layout, data, scale);
+  drawPoseArrows(cr, layout, data, scale);
   drawUnseenRegion(cr, layout, data, scale);
   drawMarkers(cr, layout, data, scale);
   cairo_restore(cr);
@@ -905,12 +846,7 @@ void CoveragePlot::writePng(const CoveragePlotData& data, const std::string& pat
   drawTitle(cr, layout, data.title_lines, scale);
   drawLegend(cr, layout, data, scale);
 
-  cairo_surface_flush(surface.get());
-  const cairo_status_t status = cairo_surface_write_to_png(surface.get(), path.c_str());
-  if (status != CAIRO_STATUS_SUCCESS) {
-    throw InvalidInputError("coverage plot: cannot write '" + path +
-                            "': " + cairo_status_to_string(status));
-  }
+  canvas.writePng(path, "coverage plot");
 }
 
 PlotColour CoveragePlot::visitColour(std::uint16_t visits) {

@@ -34,6 +34,9 @@ struct CoveragePlotData {
   std::vector<Pose2> actual_path;
   /// The tracking error at each pose of `actual_path`, metres, >= 0: one per pose.
   std::vector<double> actual_errors;
+  /// Poses the robot drove, drawn as black arrows (the thesis's Fig. 4.3); when there are
+  /// any, the trajectory is drawn red, without its own heading arrows.
+  std::vector<Pose2> actual_pose_arrows;
   /// The largest piece of the reachable area left unseen (its bounding box), outlined in
   /// red; none drawn when unset.
   std::optional<Ring> unseen_region;
