@@ -1,5 +1,6 @@
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -117,8 +118,16 @@ PoseTable PoseCsvReader::parse(const std::string& text, const std::string& sourc
     }
     if (table.has_kind) {
       record.kind = fields[column.at("kind")];
-      if (record.kind != "segment" && record.kind != "arc" && record.kind != "rotation") {
-        fail("column kind: '" + record.kind + "' is not segment, arc or rotation");
+      // A kind added later (e.g. clothoid) is a curve sampled densely enough: any name of
+      // lower-case letters, digits and underscores is read.
+      const bool is_name =
+          !record.kind.empty() && std::all_of(record.kind.begin(), record.kind.end(), [](char c) {
+            return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+          });
+      if (!is_name) {
+        fail("column kind: '" + record.kind +
+             "' is not a kind name (segment, arc, rotation, clothoid, ...: lower-case letters, "
+             "digits and underscores)");
       }
     }
     table.rows.push_back(std::move(record));

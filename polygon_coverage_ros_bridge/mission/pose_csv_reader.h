@@ -10,9 +10,11 @@ namespace kinematic_coverage::core {
 
 /// One row of a trajectory or visited-poses file.
 struct PoseRecord {
-  Pose2 pose;        ///< yaw wrapped into (-pi, pi]
-  double t = 0.0;    ///< seconds; 0 when the file has no t column
-  std::string kind;  ///< "segment", "arc" or "rotation"; empty without a kind column
+  Pose2 pose;      ///< yaw wrapped into (-pi, pi]
+  double t = 0.0;  ///< seconds; 0 when the file has no t column
+  /// "segment", "arc", "rotation", "clothoid" or a kind added later; empty without a kind
+  /// column.
+  std::string kind;
 };
 
 /// The rows of a pose file, and which optional columns it had.
@@ -27,8 +29,9 @@ struct PoseTable {
 /// columns allowed and ignored, in any order. Fields are separated by commas (no quoting);
 /// surrounding spaces, CRLF line ends and blank lines are accepted. Every problem is an
 /// InvalidInputError naming the file, line and column: a missing or repeated column, a row
-/// with the wrong number of fields, a non-numeric or non-finite number, a kind other than
-/// segment/arc/rotation, a decreasing t, no rows. Yaw may be any finite angle; it is
+/// with the wrong number of fields, a non-numeric or non-finite number, a kind that is not
+/// a name of lower-case letters, digits and underscores (an unknown kind is a curve
+/// sampled densely enough), a decreasing t, no rows. Yaw may be any finite angle; it is
 /// wrapped into (-pi, pi]. Limits: files of at most kMaxFileBytes and kMaxRows rows.
 class PoseCsvReader {
  public:

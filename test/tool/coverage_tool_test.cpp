@@ -452,8 +452,9 @@ TEST(CoverageTool, EvaluateRejectsBadInputWithOneLine) {
            "nan.csv:3: column yaw: 'nan' is not finite");
   evaluate(writeTrajectory("empty", "x,y,yaw\n"), "empty.csv: the file has no rows");
   evaluate(writeTrajectory("no_yaw", "x,y,t\n5,5,0\n"), "no_yaw.csv:1: the header has no 'yaw'");
-  evaluate(writeTrajectory("bad_kind", "t,x,y,yaw,kind\n0,5,5,0,segment\n1,6,5,0,jump\n"),
-           "bad_kind.csv:3: column kind: 'jump' is not segment, arc or rotation");
+  evaluate(writeTrajectory("bad_kind", "t,x,y,yaw,kind\n0,5,5,0,segment\n1,6,5,0,\n"),
+           "bad_kind.csv:3: column kind: '' is not a kind name (segment, arc, rotation, "
+           "clothoid, ...: lower-case letters, digits and underscores)");
   evaluate(writeTrajectory("time", "t,x,y,yaw\n1,5,5,0\n0.5,6,5,0\n"),
            "time.csv:3: column t: 0.5 is before the previous row's time");
   expectInvalid("evaluate '" + path + "' --out '" + out_dir + "'",

@@ -68,8 +68,10 @@ TEST(PoseCsvReader, NamesEveryProblem) {
   EXPECT_EQ(csvError("x,y,yaw\n1,abc,3\n"), "f.csv:2: column y: 'abc' is not a number");
   EXPECT_EQ(csvError("x,y,yaw\n1,2,\n"), "f.csv:2: column yaw: '' is not a number");
   EXPECT_EQ(csvError("x,y,yaw\n1,inf,3\n"), "f.csv:2: column y: 'inf' is not finite");
-  EXPECT_EQ(csvError("x,y,yaw,kind\n1,2,3,curve\n"),
-            "f.csv:2: column kind: 'curve' is not segment, arc or rotation");
+  EXPECT_EQ(csvError("x,y,yaw,kind\n1,2,3,Curve!\n"),
+            "f.csv:2: column kind: 'Curve!' is not a kind name (segment, arc, rotation, "
+            "clothoid, ...: lower-case letters, digits and underscores)");
+  EXPECT_EQ(csvError("x,y,yaw,kind\n1,2,3,clothoid\n1,2,3,spline_2\n"), "");
   EXPECT_EQ(csvError("t,x,y,yaw\n2,1,2,3\n1,1,2,3\n"),
             "f.csv:3: column t: 1 is before the previous row's time");
   EXPECT_EQ(csvError(""), "f.csv: the file is empty (no header row)");
