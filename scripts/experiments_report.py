@@ -12,7 +12,7 @@ import sys
 
 PERCENTILES = ['1', '5', '10', '25', '50', '75', '90', '95', '99']
 STRATEGIES = [('local', 'smoothed, Alg. 1 (`local`)'), ('default', 'smoothed, default'),
-              ('unsmoothed', 'unsmoothed')]
+              ('clothoid', 'smoothed, default, clothoid turns'), ('unsmoothed', 'unsmoothed')]
 COMMAND = 'scripts/run_experiments.sh --print'
 
 
@@ -83,21 +83,21 @@ class Report:
               ['-', '-']) for label, format_value in extra_rows]
         text = self.marker()
         text += '| metric | ' + ' | '.join(label for _, label in STRATEGIES)
-        text += ' | thesis smoothed | thesis unsmoothed |\n|---|---|---|---|---|---|\n'
+        text += ' | thesis smoothed | thesis unsmoothed |\n|---|' + '---|' * (len(STRATEGIES) + 2) + '\n'
         for label, ours, theirs in rows:
             text += f'| {label} | ' + ' | '.join(ours + theirs) + ' |\n'
         return text
 
     def trends(self, mission):
-        """Traversal time and error sum of the local, default and unsmoothed runs."""
+        """Traversal time and error sum of the runs of STRATEGIES, in order."""
         runs = [self.sim[f'{mission}_{strategy}'] for strategy, _ in STRATEGIES]
         return [(r['traversal_time_s'], r['tracking_error_sum_m']) for r in runs]
 
     def text(self):
         sim, plan = self.sim, self.plan
-        local1, default1, unsmoothed1 = self.trends('lake_30x30')
-        local2, default2, unsmoothed2 = self.trends('lake_7_5')
-        local3, default3, unsmoothed3 = self.trends('lake_7_5_high_gain')
+        local1, default1, clothoid1, unsmoothed1 = self.trends('lake_30x30')
+        local2, default2, clothoid2, unsmoothed2 = self.trends('lake_7_5')
+        local3, default3, clothoid3, unsmoothed3 = self.trends('lake_7_5_high_gain')
         calm, drift = sim['lake_30x30_default'], sim['lake_30x30_current']
 
         def holds(condition):
@@ -110,16 +110,21 @@ printed by `{COMMAND}`, and the `doc_figures` test (CI) reruns it and compares e
 with this document (all of them are machine-independent: the simulation runs at a fixed
 step). The thesis compared smoothed and unsmoothed trajectories on the Proteus vehicle in
 Lake Zurich (Chapter 4, Tables 4.1 to 4.3). Here the vehicle is the robot model of
-`coverage_tool simulate` and of the `auv_simulator` node. Each mission is planned three
+`coverage_tool simulate` and of the `auv_simulator` node. Each mission is planned four
 times with `coverage_tool plan`: smoothed by the thesis's Algorithm 1
 (`smoothing_strategy: local`), smoothed with the default strategy (`coverage_safe`: every
 corner's smoothing chosen jointly to minimise the traversal time while the path as a whole
-still sees what the unsmoothed path sees), and unsmoothed (`smoothing: false`), all three
-from the same waypoints (with the default `coverage_repair`); the same robot follows every trajectory with `coverage_tool simulate`. The metrics
-(docs/REFERENCE.md, Metrics) are the traversal time, the tracking error (the distance from
-the robot to the nearest point of the desired path, once per 0.1 s simulation step: its sum,
-mean and percentiles) and the coverage loss of the poses the robot actually drove. The trend
-assertions of `test/simulation/thesis_trends_test.cpp` are made under Algorithm 1.
+still sees what the unsmoothed path sees), the same with continuous-curvature turns
+(`turn_curve: clothoid`: clothoid-arc-clothoid instead of an arc between two legs, where
+the legs leave room and the turn comes no nearer an obstacle and sees no less), and
+unsmoothed (`smoothing: false`), all four from the same waypoints (with the default
+`coverage_repair`); the same robot follows every trajectory with `coverage_tool simulate`.
+The metrics (docs/REFERENCE.md, Metrics) are the traversal time, the tracking error (the
+distance from the robot to the nearest point of the desired path, once per 0.1 s
+simulation step: its sum, mean and percentiles; the error to the targeted trajectory
+piece; the mean x and y parts) and the coverage loss of the poses the robot actually
+drove. The trend assertions of `test/simulation/thesis_trends_test.cpp` are made under
+Algorithm 1, and for the clothoid turns under the default strategy.
 
 ## The robot model
 
@@ -171,7 +176,8 @@ the same for every trajectory: `config/default.yaml`, i.e. the dynamic vehicle, 
 no current, `sim_dt` 0.1 s.
 
     coverage_tool plan config/missions/lake_30x30.yaml --out DIR \\
-        --set smoothing=true --set smoothing_strategy=local     # or the default, or smoothing=false
+        --set smoothing=true --set smoothing_strategy=local     # or the default, with or
+                                   # without --set turn_curve=clothoid, or smoothing=false
     coverage_tool simulate config/missions/lake_30x30.yaml --trajectory DIR/trajectory.csv --out SIM
 
 '''
@@ -218,6 +224,10 @@ The thesis's two findings, turning in place is faster (the thesis: the unsmoothe
 - Default strategy: the unsmoothed run takes {ratio(unsmoothed1[0], default1[0])} of the smoothed run's time (faster in
   place: {holds(unsmoothed1[0] < default1[0])}); error sum {metres(default1[1])} against {metres(unsmoothed1[1])}, {100 * (1 - default1[1] / unsmoothed1[1]):.0f} % less
   (tracked better: {holds(default1[1] < unsmoothed1[1])}).
+- Beyond the thesis, the default strategy with continuous-curvature turns
+  (`turn_curve: clothoid`, {plan['lake_30x30_clothoid']['turns_clothoid']} of its {plan['lake_30x30_clothoid']['turns_smoothed']} smoothed turns clothoid-arc-clothoid): error sum
+  {metres(clothoid1[1])} against {metres(unsmoothed1[1])}, {100 * (1 - clothoid1[1] / unsmoothed1[1]):.0f} % less (tracked better: {holds(clothoid1[1] < unsmoothed1[1])}), and
+  {100 * (1 - clothoid1[1] / default1[1]):.0f} % less than with its arcs; 99th percentile {metres(sim['lake_30x30_clothoid']['tracking_error_percentiles_m']['99'], 3)} against {metres(sim['lake_30x30_default']['tracking_error_percentiles_m']['99'], 3)}.
 
 Where the numbers differ from the thesis, and why:
 
@@ -245,11 +255,11 @@ Where the numbers differ from the thesis, and why:
             text += f"| {vehicle} | {seconds(local['traversal_time_s'])} | {metres(local['tracking_error_sum_m'])} | "
             text += f"{seconds(unsmoothed['traversal_time_s'])} | {metres(unsmoothed['tracking_error_sum_m'])} |\n"
         text += '''
-Smoothed by Algorithm 1 (left), by the default strategy (middle) and unsmoothed (right): the
-desired trajectory in black, the path the robot drove coloured by its tracking error, over
+Smoothed by Algorithm 1, by the default strategy, by the default strategy with clothoid
+turns, and unsmoothed (left to right): the desired trajectory in black, the path the robot drove coloured by its tracking error, over
 the heatmap of what its sensor saw.
 
-<img src="images/experiments_lake_30x30_local.png" width="32%"> <img src="images/experiments_lake_30x30_default.png" width="32%"> <img src="images/experiments_lake_30x30_unsmoothed.png" width="32%">
+<img src="images/experiments_lake_30x30_local.png" width="24%"> <img src="images/experiments_lake_30x30_default.png" width="24%"> <img src="images/experiments_lake_30x30_clothoid.png" width="24%"> <img src="images/experiments_lake_30x30_unsmoothed.png" width="24%">
 
 As the thesis's figures, Algorithm 1 (left) against unsmoothed (right). The planned
 trajectories over the heatmaps of what they let the sensor see (Fig. 4.2):
@@ -291,17 +301,21 @@ unsmoothed run's time):
 
 - Algorithm 1: {ratio(local2[0], unsmoothed2[0])} of the unsmoothed run's time ({holds(local2[0] < unsmoothed2[0])}).
 - Default strategy: {ratio(default2[0], unsmoothed2[0])} ({holds(default2[0] < unsmoothed2[0])}).
+- Default strategy with clothoid turns ({plan['lake_7_5_clothoid']['turns_clothoid']} of {plan['lake_7_5_clothoid']['turns_smoothed']} turns: most legs here are too short for
+  the longer turn): {ratio(clothoid2[0], unsmoothed2[0])} ({holds(clothoid2[0] < unsmoothed2[0])}), and it tracks better than the unsmoothed run: {metres(clothoid2[1])}
+  against {metres(unsmoothed2[1])} ({holds(clothoid2[1] < unsmoothed2[1])}).
 
 It comes from the robot, not from the map: the same map with experiment 1's robot
 (`yaw_gain` 5, `rotation_sampling_angle` 0.2):
 
 '''
         text += self.marker()
-        text += '| robot | ' + ' | '.join(label for _, label in STRATEGIES) + ' |\n|---|---|---|---|\n'
+        text += '| robot | ' + ' | '.join(label for _, label in STRATEGIES) + ' |\n|---|'
+        text += '---|' * len(STRATEGIES) + '\n'
         text += '| traversing time, experiment 1 robot | ' + ' | '.join(
-            seconds(time) for time, _ in (local3, default3, unsmoothed3)) + ' |\n'
+            seconds(time) for time, _ in (local3, default3, clothoid3, unsmoothed3)) + ' |\n'
         text += '| traversing time, experiment 2 robot | ' + ' | '.join(
-            seconds(time) for time, _ in (local2, default2, unsmoothed2)) + ' |\n'
+            seconds(time) for time, _ in (local2, default2, clothoid2, unsmoothed2)) + ' |\n'
         text += f'''
 With experiment 1's robot, turning in place is faster than Algorithm 1's smoothing:
 {holds(unsmoothed3[0] < local3[0])}; than the default strategy's: {holds(unsmoothed3[0] < default3[0])}.
@@ -339,7 +353,7 @@ Where the numbers differ from the thesis, and why:
   strip beside the obstacle lie beyond the footprints (the red cells); the thesis reports
   0 % for its 7.5 m map, whose sensor height and wall offset it does not state.
 
-<img src="images/experiments_lake_7_5_local.png" width="32%"> <img src="images/experiments_lake_7_5_default.png" width="32%"> <img src="images/experiments_lake_7_5_unsmoothed.png" width="32%">
+<img src="images/experiments_lake_7_5_local.png" width="24%"> <img src="images/experiments_lake_7_5_default.png" width="24%"> <img src="images/experiments_lake_7_5_clothoid.png" width="24%"> <img src="images/experiments_lake_7_5_unsmoothed.png" width="24%">
 
 Algorithm 1 (left) against unsmoothed (right): the driven poses and the error statistics.
 

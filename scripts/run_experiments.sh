@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Regenerates docs/EXPERIMENTS.md and docs/images/experiments_*.png: the thesis's two
 # experiments (Chapter 4, Tables 4.1 to 4.3) in simulation, plus a run in a current and the
-# first, kinematic vehicle on the same trajectories. Each
-# mission is planned three times with `coverage_tool plan`: smoothed by the thesis's
-# Algorithm 1 (`smoothing_strategy: local`), smoothed with the default strategy, and
-# unsmoothed; the same robot follows every trajectory with `coverage_tool simulate`.
+# first, kinematic vehicle on the same trajectories. Each mission is planned four times
+# with `coverage_tool plan`: smoothed by the thesis's Algorithm 1 (`smoothing_strategy:
+# local`), smoothed with the default strategy, the same with continuous-curvature turns
+# (`turn_curve: clothoid`), and unsmoothed; the same robot follows every trajectory with
+# `coverage_tool simulate`.
 #
 #   scripts/run_experiments.sh            # builds coverage_tool into ./build, writes the doc
 #   scripts/run_experiments.sh --print    # the doc on standard output, nothing written
@@ -44,9 +45,11 @@ fi
 robot_high_gain=()
 robot_low_gain=(--set yaw_gain=2 --set rotation_sampling_angle=0.1)
 current=(--set current_x=0.2 --set current_y=0.1)
-# The three trajectories of each run: Algorithm 1, the default strategy, unsmoothed.
+# The four trajectories of each run: Algorithm 1, the default strategy, the default strategy
+# with continuous-curvature (clothoid) turns, unsmoothed.
 local_smoothing=(--set smoothing=true --set smoothing_strategy=local)
 default_smoothing=(--set smoothing=true)
+clothoid_smoothing=(--set smoothing=true --set turn_curve=clothoid)
 no_smoothing=(--set smoothing=false)
 
 # run NAME MISSION [--set ...]: plans and simulates into $out/NAME.
@@ -75,10 +78,11 @@ resimulate() {
   grep '^simulate: ' "$out/$name/simulate.log" >&2
 }
 
-for strategy in local default unsmoothed; do
+for strategy in local default clothoid unsmoothed; do
   case $strategy in
     local) smoothing=("${local_smoothing[@]}") ;;
     default) smoothing=("${default_smoothing[@]}") ;;
+    clothoid) smoothing=("${clothoid_smoothing[@]}") ;;
     unsmoothed) smoothing=("${no_smoothing[@]}") ;;
   esac
   run "lake_30x30_$strategy" lake_30x30 "${smoothing[@]}" "${robot_high_gain[@]}"
@@ -99,8 +103,8 @@ if $print_only; then
   exit 0
 fi
 mkdir -p "$images"
-for name in lake_30x30_local lake_30x30_default lake_30x30_unsmoothed lake_7_5_local \
-  lake_7_5_default lake_7_5_unsmoothed lake_30x30_current; do
+for name in lake_30x30_local lake_30x30_default lake_30x30_clothoid lake_30x30_unsmoothed \
+  lake_7_5_local lake_7_5_default lake_7_5_clothoid lake_7_5_unsmoothed lake_30x30_current; do
   cp "$out/$name/simulate/plot.png" "$images/experiments_$name.png"
 done
 # The thesis's figures for Algorithm 1 against unsmoothed: the planned trajectories'

@@ -54,6 +54,8 @@ const std::vector<ParameterField>& parameterFields() {
       {"segment_sampling_distance", &P::segment_sampling_distance},
       {"arc_sampling_distance", &P::arc_sampling_distance},
       {"rotation_sampling_angle", &P::rotation_sampling_angle},
+      {"turn_curve", &P::turn_curve},
+      {"curvature_rate_max", &P::curvature_rate_max},
       {"replanning_method", &P::replanning_method},
       {"replanning_sliver_fraction", &P::replanning_sliver_fraction},
       {"replanning_min_area", &P::replanning_min_area},

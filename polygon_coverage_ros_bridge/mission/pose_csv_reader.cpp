@@ -16,6 +16,14 @@
 namespace kinematic_coverage::core {
 namespace {
 
+/// A kind is a name of lower-case letters, digits and underscores: segment, arc, rotation,
+/// clothoid, or a kind added later, which a reader treats as a curve sampled densely enough.
+bool isKindName(const std::string& kind) {
+  return !kind.empty() && std::all_of(kind.begin(), kind.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+  });
+}
+
 std::string trim(const std::string& text) {
   const std::size_t first = text.find_first_not_of(" \t\r");
   if (first == std::string::npos) return "";
@@ -118,13 +126,7 @@ PoseTable PoseCsvReader::parse(const std::string& text, const std::string& sourc
     }
     if (table.has_kind) {
       record.kind = fields[column.at("kind")];
-      // A kind added later (e.g. clothoid) is a curve sampled densely enough: any name of
-      // lower-case letters, digits and underscores is read.
-      const bool is_name =
-          !record.kind.empty() && std::all_of(record.kind.begin(), record.kind.end(), [](char c) {
-            return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-          });
-      if (!is_name) {
+      if (!isKindName(record.kind)) {
         fail("column kind: '" + record.kind +
              "' is not a kind name (segment, arc, rotation, clothoid, ...: lower-case letters, "
              "digits and underscores)");

@@ -12,6 +12,7 @@
 #include "trajectory_generation_tools/replanning/remaining_area_options.h"
 #include "trajectory_generation_tools/simulation/robot_model.h"
 #include "trajectory_generation_tools/smoothing/smoothing_strategy.h"
+#include "trajectory_generation_tools/trajectory/trajectory_options.h"
 
 namespace kinematic_coverage::core {
 
@@ -39,6 +40,8 @@ inline constexpr ParameterChoices<SmoothingStrategy, 3> kSmoothingStrategies{
     {{"coverage_safe", SmoothingStrategy::kCoverageSafe},
      {"global", SmoothingStrategy::kGlobal},
      {"local", SmoothingStrategy::kLocal}}};
+inline constexpr ParameterChoices<TurnCurve, 2> kTurnCurves{
+    {{"arc", TurnCurve::kArc}, {"clothoid", TurnCurve::kClothoid}}};
 inline constexpr ParameterChoices<VehicleModel, 2> kVehicleModels{
     {{"dynamic", VehicleModel::kDynamic}, {"kinematic", VehicleModel::kKinematic}}};
 inline constexpr ParameterChoices<ReplanningMethod, 3> kReplanningMethods{

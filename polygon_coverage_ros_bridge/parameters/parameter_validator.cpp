@@ -86,6 +86,8 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   requirePositive("turning_radius", p.turning_radius, "m");
   choiceOf("offset_parts", p.offset_parts, kOffsetParts);
   choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies);
+  choiceOf("turn_curve", p.turn_curve, kTurnCurves);
+  requirePositive("curvature_rate_max", p.curvature_rate_max, "1/m^2");
   if (!(std::isfinite(p.min_turning_radius) && p.min_turning_radius >= 0.0 &&
         p.min_turning_radius <= p.turning_radius)) {
     throw InvalidInputError(

@@ -45,6 +45,8 @@ struct PlannerParameters {
   double segment_sampling_distance = 0.5;  ///< m
   double arc_sampling_distance = 0.1;      ///< m
   double rotation_sampling_angle = 0.2;    ///< rad
+  std::string turn_curve = "arc";          ///< "arc" or "clothoid"
+  double curvature_rate_max = 2.0;         ///< 1/m^2, clothoid turns only
   std::string replanning_method = "footprint";  ///< "convex_hull", "concave_hull", "footprint"
   double replanning_sliver_fraction =
       0.2;                           ///< remaining parts narrower than this x sweep spacing go

@@ -97,6 +97,8 @@ TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters) {
   options.segment_sampling_distance = p.segment_sampling_distance;
   options.arc_sampling_distance = p.arc_sampling_distance;
   options.rotation_sampling_angle = p.rotation_sampling_angle;
+  options.turn_curve = choiceOf("turn_curve", p.turn_curve, kTurnCurves);
+  options.curvature_rate_max = p.curvature_rate_max;
   return options;
 }
 

@@ -10,6 +10,8 @@ namespace {
 
 /// Arcs are drawn as chords of at most this angle (rad).
 constexpr double kArcDrawingStep = 0.1;
+/// Metres a drawn clothoid's chords may stray from it.
+constexpr double kClothoidDrawingTolerance = 0.005;
 
 geometry_msgs::Point point(const core::Point2& p) {
   geometry_msgs::Point message;
@@ -46,6 +48,7 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
   visualization_msgs::Marker tangent = lineList("arcs_outer_tangent", header, 0.8f, 0.1f, 0.8f);
   visualization_msgs::Marker reverse = lineList("arcs_reverse_curve", header, 0.1f, 0.7f, 0.7f);
   visualization_msgs::Marker bulb = lineList("arcs_bulb", header, 0.9f, 0.6f, 0.1f);
+  visualization_msgs::Marker clothoids = lineList("clothoids", header, 0.2f, 0.7f, 0.2f);
   visualization_msgs::Marker rotations = lineList("rotations", header, 0.9f, 0.1f, 0.1f);
   rotations.type = visualization_msgs::Marker::SPHERE_LIST;
   rotations.scale.x = rotations.scale.y = rotations.scale.z = 0.3;
@@ -58,6 +61,14 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
       case core::PrimitiveKind::kRotation:
         rotations.points.push_back(point(primitive.start()));
         break;
+      case core::PrimitiveKind::kClothoid: {
+        const std::vector<core::Point2> chords = primitive.polyline(kClothoidDrawingTolerance);
+        for (std::size_t i = 1; i < chords.size(); ++i) {
+          clothoids.points.push_back(point(chords[i - 1]));
+          clothoids.points.push_back(point(chords[i]));
+        }
+        break;
+      }
       case core::PrimitiveKind::kArc: {
         visualization_msgs::Marker& marker =
             primitive.variant() == core::SmoothingVariant::kOuterBisector  ? bisector
@@ -80,7 +91,7 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
   visualization_msgs::MarkerArray markers;
   markers.markers.push_back(deleteAllMarker(header));
   for (visualization_msgs::Marker* marker :
-       {&segments, &inner, &bisector, &tangent, &reverse, &bulb, &rotations}) {
+       {&segments, &inner, &bisector, &tangent, &reverse, &bulb, &clothoids, &rotations}) {
     if (!marker->points.empty()) markers.markers.push_back(*marker);
   }
   return markers;

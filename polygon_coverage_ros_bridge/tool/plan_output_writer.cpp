@@ -93,6 +93,7 @@ JsonObject planMetrics(const PlanOutputRequest& request, const GeneratedTrajecto
       .set("turns_outer_tangent", static_cast<double>(turns.outer_tangent))
       .set("turns_reverse_curve", static_cast<double>(turns.reverse_curve))
       .set("turns_bulb", static_cast<double>(turns.bulb))
+      .set("turns_clothoid", static_cast<double>(turns.clothoid))
       .set("turns_sharp", static_cast<double>(turns.turns_total - turns.turns_smoothed));
   setCoverageMetrics(coverage.report, metrics);
   if (combined) metrics.set("combined_coverage_percent", combined->report.coverage_percent);

@@ -17,6 +17,8 @@ const char* TrajectoryCsvWriter::kindName(PrimitiveKind kind) {
       return "arc";
     case PrimitiveKind::kRotation:
       return "rotation";
+    case PrimitiveKind::kClothoid:
+      return "clothoid";
   }
   return "segment";
 }

@@ -48,6 +48,12 @@ void expectBarsKept(testing::MapFamily family, int seed) {
   const double safe_percent = reachableCoverage(planned, safe);
   EXPECT_GE(safe_percent, sharp_percent - kMaxDropPoints) << name;
   if (sharp_percent >= 99.9 + kMaxDropPoints) EXPECT_GE(safe_percent, 99.9) << name;
+  // Continuous-curvature turns keep the bars too: each loses no more than its arc.
+  PlannerParameters clothoid = safe;
+  clothoid.turn_curve = "clothoid";
+  const double clothoid_percent = reachableCoverage(planned, clothoid);
+  EXPECT_GE(clothoid_percent, sharp_percent - kMaxDropPoints) << name;
+  if (sharp_percent >= 99.9 + kMaxDropPoints) EXPECT_GE(clothoid_percent, 99.9) << name;
 }
 
 TEST(CoverageSafeBars, EveryFamilysFirstMapsKeepWhatTheUnsmoothedTrajectorySees) {

@@ -90,6 +90,8 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"segment_sampling_distance", "0.25"},
       {"arc_sampling_distance", "0.05"},
       {"rotation_sampling_angle", "0.1"},
+      {"turn_curve", "clothoid"},
+      {"curvature_rate_max", "3.5"},
       {"replanning_method", "convex_hull"},
       {"replanning_sliver_fraction", "0.3"},
       {"boundary_simplification", "0.05"},
@@ -152,6 +154,8 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.segment_sampling_distance, 0.25);
   EXPECT_EQ(p.arc_sampling_distance, 0.05);
   EXPECT_EQ(p.rotation_sampling_angle, 0.1);
+  EXPECT_EQ(p.turn_curve, "clothoid");
+  EXPECT_EQ(p.curvature_rate_max, 3.5);
   EXPECT_EQ(p.replanning_method, "convex_hull");
   EXPECT_EQ(p.alpha, 6.0);
   EXPECT_EQ(p.vehicle_model, "kinematic");

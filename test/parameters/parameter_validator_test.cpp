@@ -165,6 +165,10 @@ TEST(ParameterValidator, ChecksTheRobotModelsRanges) {
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.surge_loop_gain = 20.0; }),
             "surge_loop_gain = 20 with sim_dt = 0.1 is out of range: surge_loop_gain * sim_dt "
             "must be <= 1");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.turn_curve = "spline"; }),
+            "turn_curve = 'spline' is not one of: arc, clothoid");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.curvature_rate_max = 0.0; }),
+            "curvature_rate_max = 0 is out of range: it must be a finite number > 0 (1/m^2)");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.vehicle_model = "holonomic"; }),
             "vehicle_model = 'holonomic' is not one of: dynamic, kinematic");
   // Added masses and damping may be 0 (an idealised body), not negative.

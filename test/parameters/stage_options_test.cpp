@@ -52,6 +52,8 @@ TEST(StageOptions, TheDefaultsMapToTheDocumentedStageOptions) {
   EXPECT_EQ(trajectory.segment_sampling_distance, p.segment_sampling_distance);
   EXPECT_EQ(trajectory.arc_sampling_distance, p.arc_sampling_distance);
   EXPECT_EQ(trajectory.rotation_sampling_angle, p.rotation_sampling_angle);
+  EXPECT_EQ(trajectory.turn_curve, TurnCurve::kArc);
+  EXPECT_EQ(trajectory.curvature_rate_max, p.curvature_rate_max);
   // Coverage-safe: the safe sensor, bulb turns, and the radius of an arc at v_max.
   EXPECT_TRUE(trajectory.global.safe_sensor.has_value());
   EXPECT_FALSE(trajectory.global.preserved_sensor.has_value());

@@ -88,6 +88,24 @@ TEST(ThesisTrendsTest, LowYawGainAndFineRotationsOnLake7MakeSmoothingFaster) {
             smoothed_high_gain.simulation.traversal_time_s);
 }
 
+TEST(ThesisTrendsTest, ContinuousCurvatureTurnsTrackBetterInBothExperiments) {
+  // Beyond the thesis: with clothoid transitions (the default strategy), the smoothed
+  // trajectory tracks better than the unsmoothed one in both experiments, with no
+  // reversal, and stays the faster one in experiment 2.
+  const std::vector<std::string> clothoid{"smoothing=true", "turn_curve=clothoid"};
+  const RobotRun lake30 = planAndSimulate("lake_30x30", clothoid);
+  const RobotRun lake30_unsmoothed = planAndSimulate("lake_30x30", {"smoothing=false"});
+  EXPECT_LT(lake30.simulation.tracking.sum_m, lake30_unsmoothed.simulation.tracking.sum_m);
+  std::vector<std::string> low_gain{"yaw_gain=2", "rotation_sampling_angle=0.1"};
+  std::vector<std::string> lake7_clothoid = low_gain;
+  lake7_clothoid.insert(lake7_clothoid.end(), clothoid.begin(), clothoid.end());
+  low_gain.push_back("smoothing=false");
+  const RobotRun lake7 = planAndSimulate("lake_7_5", lake7_clothoid);
+  const RobotRun lake7_unsmoothed = planAndSimulate("lake_7_5", low_gain);
+  EXPECT_LT(lake7.simulation.tracking.sum_m, lake7_unsmoothed.simulation.tracking.sum_m);
+  EXPECT_LT(lake7.simulation.traversal_time_s, lake7_unsmoothed.simulation.traversal_time_s);
+}
+
 TEST(ThesisTrendsTest, ACurrentGrowsTheTrackingErrorAndCostsCoverage) {
   // The thesis's outlook: stronger currents. The robot crabs and drifts off its sweeps.
   const RobotRun calm = planAndSimulate("lake_30x30", with({}, "true"));

@@ -31,10 +31,11 @@ TEST(TrajectoryCsvWriter, HeaderRowsAndKinds) {
   const std::string text =
       TrajectoryCsvWriter().format({pose(0, 0.1, -2, 0.5, PrimitiveKind::kSegment),
                                     pose(1.5, 3, 4, 3 * M_PI / 2, PrimitiveKind::kArc),
-                                    pose(2, 3, 4, -M_PI, PrimitiveKind::kRotation)});
+                                    pose(2, 3, 4, -M_PI, PrimitiveKind::kRotation),
+                                    pose(3, 5, 4, 0.25, PrimitiveKind::kClothoid)});
   EXPECT_EQ(text,
             "t,x,y,yaw,kind\n0,0.1,-2,0.5,segment\n1.5,3,4,-1.5707963267948966,arc\n"
-            "2,3,4,3.141592653589793,rotation\n");
+            "2,3,4,3.141592653589793,rotation\n3,5,4,0.25,clothoid\n");
   EXPECT_EQ(TrajectoryCsvWriter().format({}), "t,x,y,yaw,kind\n");
   EXPECT_THROW(TrajectoryCsvWriter().format({pose(std::nan(""), 0, 0, 0, PrimitiveKind::kArc)}),
                std::domain_error);

@@ -1,4 +1,6 @@
 kc_add_gtest(test_trajectory
+  test/trajectory/continuous_curvature_turn_test.cpp
+  test/trajectory/continuous_curvature_turns_test.cpp
   test/trajectory/primitive_path_metrics_test.cpp
   test/trajectory/segment_path_builder_test.cpp
   test/trajectory/trajectory_generator_test.cpp

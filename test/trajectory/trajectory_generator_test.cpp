@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "trajectory_generation_tools/trajectory/primitive_distance.h"
+#include "trajectory_generation_tools/trajectory/primitive_path_validation.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -107,6 +110,56 @@ TEST(TrajectoryGenerator, GlobalIsNeverSlowerThanLocalOnRandomLawnmowers) {
     }
     if (::testing::Test::HasFailure()) return;
   }
+}
+
+TEST(TrajectoryGenerator, ClothoidTurnsKeepTheArcsGuaranteesOnRandomLawnmowers) {
+  // turn_curve: clothoid under every strategy: a valid path ending at the last waypoint,
+  // curvature at most 1 / r and continuous wherever a clothoid joins, curvature rates at
+  // most curvature_rate_max, and no nearer an obstacle than the arcs.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> radius(0.5, 2.5);
+  int clothoids = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const std::vector<Pose2> waypoints = randomLawnmower(rng, 6);
+    const PolygonWithHoles area = boundingHull(waypoints);
+    for (const char* strategy : {"local", "global", "coverage_safe"}) {
+      PlannerParameters arcs;
+      arcs.turning_radius = radius(rng);
+      arcs.smoothing_strategy = strategy;
+      PlannerParameters continuous = arcs;
+      continuous.turn_curve = "clothoid";
+      const GeneratedTrajectory with_arcs =
+          TrajectoryGenerator(trajectoryOptionsOf(arcs)).generate(waypoints, area);
+      const GeneratedTrajectory with_clothoids =
+          TrajectoryGenerator(trajectoryOptionsOf(continuous)).generate(waypoints, area);
+      const std::vector<PathPrimitive>& path = with_clothoids.path;
+      EXPECT_NO_THROW(validatePrimitivePath(path)) << strategy;
+      EXPECT_LE(with_clothoids.max_curvature, 1.0 / arcs.turning_radius + 1e-9) << strategy;
+      EXPECT_GE(with_clothoids.min_obstacle_clearance_m,
+                with_arcs.min_obstacle_clearance_m - 2.0 * kClothoidDistanceTolerance)
+          << strategy;
+      EXPECT_NEAR((with_clothoids.poses.back().position() - waypoints.back().position()).norm(),
+                  0.0, 1e-6)
+          << strategy;
+      for (std::size_t i = 0; i < path.size(); ++i) {
+        if (path[i].kind() != PrimitiveKind::kClothoid) continue;
+        ++clothoids;
+        EXPECT_LE(std::abs(path[i].curvatureRate()), continuous.curvature_rate_max + 1e-12);
+        ASSERT_GT(i, 0u);
+        ASSERT_LT(i + 1, path.size());
+        EXPECT_NEAR(path[i].curvatureAt(0.0), path[i - 1].curvatureAt(1.0), 1e-9) << i;
+        EXPECT_NEAR(path[i].curvatureAt(1.0), path[i + 1].curvatureAt(0.0), 1e-9) << i;
+      }
+      EXPECT_EQ(with_clothoids.statistics.clothoid * 2,
+                static_cast<int>(std::count_if(
+                    path.begin(), path.end(),
+                    [](const PathPrimitive& p) { return p.kind() == PrimitiveKind::kClothoid; })))
+          << strategy;
+    }
+    if (::testing::Test::HasFailure()) return;
+  }
+  EXPECT_GT(clothoids, 100);
 }
 
 }  // namespace

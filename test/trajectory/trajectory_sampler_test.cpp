@@ -48,6 +48,21 @@ TEST(TrajectorySampler, ArcUsesArcIntervalAndTangentHeading) {
   EXPECT_NEAR(std::abs(poses.back().yaw), M_PI, 1e-12);
 }
 
+TEST(TrajectorySampler, ClothoidUsesArcIntervalAndItsExactPoses) {
+  const TrajectorySampler sampler(0.5, 0.1, 0.2);
+  const PathPrimitive clothoid = PathPrimitive::clothoid({1, 0, 0}, 0.0, 2.0, 1.05);
+  const std::vector<PathPrimitive> path = {
+      PathPrimitive::segment({0, 0}, {1, 0}), clothoid,
+      PathPrimitive::segment(clothoid.end(),
+                             clothoid.end() + Point2(std::cos(clothoid.endPose().yaw),
+                                                     std::sin(clothoid.endPose().yaw)))};
+  const std::vector<TrajectoryPose> poses = sampler.sample(path);
+  // 2 + 11 + 2 pieces, shared joints once.
+  EXPECT_EQ(poses.size(), 1u + 2u + 11u + 2u);
+  EXPECT_EQ(poses[5].kind, PrimitiveKind::kClothoid);
+  expectSamplingContract(path, poses, 0.5, 0.1, 0.2);
+}
+
 TEST(TrajectorySampler, RotationPosesShareAPositionAndStepByTheAngle) {
   const TrajectorySampler sampler(0.5, 0.1, 0.2);
   const std::vector<PathPrimitive> path =

@@ -84,6 +84,16 @@ inline void expectSamplingContract(const std::vector<PathPrimitive>& path,
         EXPECT_NEAR(wrapAngle(tangent - pose.yaw), 0.0, kHeadingTolerance) << "pose " << i;
         break;
       }
+      case PrimitiveKind::kClothoid: {
+        ASSERT_GT(gap, 0.0) << "pose " << i;
+        // Chords of a curve are no longer than its length between their ends.
+        EXPECT_LE(gap, arc_distance * (1.0 + kSlack)) << "pose " << i;
+        const PathPrimitive& clothoid = path[pose.primitive];
+        const Pose2 exact = clothoid.poseAt(pose.fraction);
+        EXPECT_LT((exact.position() - pose.position()).norm(), 1e-12) << "pose " << i;
+        EXPECT_NEAR(wrapAngle(exact.yaw - pose.yaw), 0.0, kHeadingTolerance) << "pose " << i;
+        break;
+      }
       case PrimitiveKind::kRotation:
         EXPECT_EQ(gap, 0.0) << "pose " << i;
         EXPECT_GT(std::abs(wrapAngle(pose.yaw - previous.yaw)), 0.0) << "pose " << i;

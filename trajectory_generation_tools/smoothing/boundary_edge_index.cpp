@@ -151,6 +151,13 @@ bool BoundaryEdgeIndex::primitiveClear(const PathPrimitive& primitive) const {
       return segmentClear(primitive.start(), primitive.end());
     case PrimitiveKind::kRotation:
       return segmentClear(primitive.start(), primitive.start());
+    case PrimitiveKind::kClothoid: {
+      const std::vector<Point2> chords = primitive.polyline(kClothoidChordTolerance);
+      for (std::size_t i = 1; i < chords.size(); ++i) {
+        if (!segmentClear(chords[i - 1], chords[i])) return false;
+      }
+      return true;
+    }
   }
   return false;
 }

@@ -30,7 +30,10 @@ class BoundaryEdgeIndex {
   bool segmentClear(const Point2& a, const Point2& b) const;
   /// True when the arc keeps more than kContactTolerance from every edge.
   bool arcClear(const PathPrimitive& arc) const;
-  /// segmentClear / arcClear by kind; a rotation is its point.
+  /// Metres a clothoid's chords, which primitiveClear tests, may stray from it.
+  static constexpr double kClothoidChordTolerance = 1e-5;
+
+  /// segmentClear / arcClear by kind; a rotation is its point; a clothoid its chords.
   bool primitiveClear(const PathPrimitive& primitive) const;
   /// True when p lies in the free area (inside the hull, outside every hole). Points on an
   /// edge may go either way; callers first check clearance.

@@ -18,6 +18,8 @@ namespace {
 /// Largest angle (rad) between the sampled poses of an arc (also bounded by the raster's
 /// cells below) and of an in-place rotation, whose sectors are swept exactly in between.
 constexpr double kArcStep = 0.05;
+/// Metres the chords bounding a clothoid's extent may stray from it.
+constexpr double kClothoidExtentTolerance = 1e-3;
 constexpr double kRotationStep = kDefaultRotationStep;
 
 /// The poses along `primitives` that SeenArea::addSweptPath measures: a segment's ends (a
@@ -30,6 +32,10 @@ std::vector<Pose2> sweptPoses(const std::vector<PathPrimitive>& primitives, doub
     int pieces = 1;
     if (primitive.kind() == PrimitiveKind::kArc) {
       pieces = sweptArcPieces(primitive.sweep(), primitive.radius() + reach, cell, kArcStep);
+    } else if (primitive.kind() == PrimitiveKind::kClothoid) {
+      // Its pieces sweep no more than arcs of its tightest radius turning as fast.
+      pieces = sweptArcPieces(primitive.length() * primitive.curvature(),
+                              primitive.radius() + reach, cell, kArcStep);
     } else if (primitive.kind() == PrimitiveKind::kRotation) {
       pieces =
           std::max(1, static_cast<int>(std::ceil(std::abs(primitive.turnAngle()) / kRotationStep)));
@@ -56,6 +62,10 @@ Box extentOf(const PathPrimitive& primitive) {
   if (primitive.kind() == PrimitiveKind::kArc) {
     box.extend(Point2(primitive.centre().array() - primitive.radius()));
     box.extend(Point2(primitive.centre().array() + primitive.radius()));
+  }
+  if (primitive.kind() == PrimitiveKind::kClothoid) {
+    for (const Point2& p : primitive.polyline(kClothoidExtentTolerance)) box.extend(p);
+    box = grown(box, kClothoidExtentTolerance);
   }
   return box;
 }

@@ -23,6 +23,8 @@ struct SmoothingStatistics {
   int outer_tangent = 0;
   int reverse_curve = 0;  ///< corners taken by reverse curves (two per curve; global only)
   int bulb = 0;           ///< corners taken by bulb turns (two per turn; global only)
+  /// Arcs between straight legs made clothoid-arc-clothoid (`turn_curve: clothoid`).
+  int clothoid = 0;
   int kept_for_coverage = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
@@ -82,6 +83,14 @@ double distancePointToPrimitive(const Point2& p, const PathPrimitive& primitive)
       if (!(from_centre > 0.0)) return primitive.radius();
       return std::min((p - primitive.start()).norm(), (p - primitive.end()).norm());
     }
+    case PrimitiveKind::kClothoid: {
+      const std::vector<Point2> chords = primitive.polyline(kClothoidDistanceTolerance);
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 1; i < chords.size(); ++i) {
+        best = std::min(best, distanceToSegment(p, chords[i - 1], chords[i]));
+      }
+      return std::max(0.0, best - kClothoidDistanceTolerance);
+    }
   }
   return 0.0;
 }
@@ -95,6 +104,14 @@ double distancePrimitiveToSegment(const PathPrimitive& primitive, const Point2& 
       return distanceToSegment(primitive.start(), a, b);
     case PrimitiveKind::kArc:
       return arcToSegment(primitive, a, b);
+    case PrimitiveKind::kClothoid: {
+      const std::vector<Point2> chords = primitive.polyline(kClothoidDistanceTolerance);
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 1; i < chords.size(); ++i) {
+        best = std::min(best, segmentToSegment(chords[i - 1], chords[i], a, b));
+      }
+      return std::max(0.0, best - kClothoidDistanceTolerance);
+    }
   }
   return 0.0;
 }

@@ -17,11 +17,22 @@ struct Box {
 
 Box boxOf(const Point2& a, const Point2& b) { return {a.cwiseMin(b), a.cwiseMax(b)}; }
 
-/// A box holding the primitive (an arc's whole circle, which is enough for pruning).
+/// A box holding the primitive (an arc's whole circle, a clothoid's chords grown by their
+/// tolerance; enough for pruning).
 Box boxOf(const PathPrimitive& primitive) {
   if (primitive.kind() == PrimitiveKind::kArc) {
     const Point2 extent = Point2::Constant(primitive.radius());
     return {primitive.centre() - extent, primitive.centre() + extent};
+  }
+  if (primitive.kind() == PrimitiveKind::kClothoid) {
+    Box box = boxOf(primitive.start(), primitive.end());
+    for (const Point2& p : primitive.polyline(kClothoidDistanceTolerance)) {
+      box.low = box.low.cwiseMin(p);
+      box.high = box.high.cwiseMax(p);
+    }
+    box.low -= Point2::Constant(kClothoidDistanceTolerance);
+    box.high += Point2::Constant(kClothoidDistanceTolerance);
+    return box;
   }
   return boxOf(primitive.start(), primitive.end());
 }

@@ -1,5 +1,7 @@
 kc_add_stage_library(kc_trajectory
   SOURCES
+    trajectory_generation_tools/trajectory/continuous_curvature_turn.cpp
+    trajectory_generation_tools/trajectory/continuous_curvature_turns.cpp
     trajectory_generation_tools/trajectory/primitive_distance.cpp
     trajectory_generation_tools/trajectory/primitive_path_metrics.cpp
     trajectory_generation_tools/trajectory/primitive_path_validation.cpp

@@ -6,7 +6,9 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "trajectory_generation_tools/smoothing/corner_waypoints.h"
 #include "trajectory_generation_tools/smoothing/global_path_smoother.h"
+#include "trajectory_generation_tools/smoothing/path_coverage_check.h"
 #include "trajectory_generation_tools/trajectory/primitive_path_metrics.h"
 #include "trajectory_generation_tools/trajectory/segment_path_builder.h"
 #include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
@@ -49,6 +51,25 @@ SmoothedPath TrajectoryGenerator::smoothedPath(const std::vector<Pose2>& waypoin
                                                                                            : local;
 }
 
+ContinuousCurvaturePath TrajectoryGenerator::continuousCurvature(
+    const std::vector<PathPrimitive>& path, const std::vector<Pose2>& waypoints,
+    const PolygonWithHoles& free_area) const {
+  const ContinuousCurvatureTurns turns(free_area, options_.curvature_rate_max);
+  // The strategies that keep coverage keep it through the turns too, with their sensor.
+  const GlobalSmoothingOptions& global = options_.global;
+  const std::optional<FrustumSensor>& sensor =
+      options_.strategy == SmoothingStrategy::kLocal
+          ? std::nullopt
+          : (global.safe_sensor ? global.safe_sensor : global.preserved_sensor);
+  if (!sensor) return turns.apply(path, nullptr);
+  std::vector<Point2> points;
+  points.reserve(waypoints.size());
+  for (const Pose2& waypoint : waypoints) points.push_back(waypoint.position());
+  PathCoverageCheck check(free_area, global.wall_distance, global.offset_parts, *sensor,
+                          cornerWaypoints(points));
+  return turns.apply(path, &check);
+}
+
 GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& waypoints,
                                                   const PolygonWithHoles& free_area) const {
   if (waypoints.empty()) {
@@ -59,6 +80,12 @@ GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& wayp
     SmoothedPath smoothed = smoothedPath(waypoints, free_area);
     trajectory.path = std::move(smoothed.primitives);
     trajectory.statistics = smoothed.statistics;
+    if (options_.turn_curve == TurnCurve::kClothoid) {
+      ContinuousCurvaturePath continuous =
+          continuousCurvature(trajectory.path, waypoints, free_area);
+      trajectory.path = std::move(continuous.primitives);
+      trajectory.statistics.clothoid = continuous.turns_clothoid;
+    }
   } else {
     trajectory.path = SegmentPathBuilder().build(waypoints);
     trajectory.statistics = segmentPathStatistics(trajectory.path);

@@ -5,6 +5,7 @@
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
+#include "trajectory_generation_tools/trajectory/continuous_curvature_turns.h"
 #include "trajectory_generation_tools/trajectory/trajectory_options.h"
 #include "trajectory_generation_tools/trajectory/trajectory_pose.h"
 
@@ -26,8 +27,8 @@ struct GeneratedTrajectory {
 /// Turns a waypoint path into a trajectory (Thesis sections 3.2 and 3.3): smoothing against
 /// the raw hull and holes by `smoothing_strategy` (Algorithm 1, PathSmoother, or the
 /// global GlobalPathSmoother, coverage-safe or not; with `smoothing: false`, segments with
-/// in-place rotations),
-/// sampling, and timing with v_max, a_max and yaw_rate_max.
+/// in-place rotations), clothoid transitions into its turns with `turn_curve: clothoid`
+/// (ContinuousCurvatureTurns), sampling, and timing with v_max, a_max and yaw_rate_max.
 class TrajectoryGenerator {
  public:
   explicit TrajectoryGenerator(const TrajectoryOptions& options) : options_(options) {}
@@ -47,6 +48,12 @@ class TrajectoryGenerator {
   /// coverage.
   SmoothedPath smoothedPath(const std::vector<Pose2>& waypoints,
                             const PolygonWithHoles& free_area) const;
+
+  /// `turn_curve: clothoid`: the smoothed `path` with its turns continuous in curvature,
+  /// guarded by the coverage check of the strategy's sensor (none for Algorithm 1).
+  ContinuousCurvaturePath continuousCurvature(const std::vector<PathPrimitive>& path,
+                                              const std::vector<Pose2>& waypoints,
+                                              const PolygonWithHoles& free_area) const;
 
   TrajectoryOptions options_;
 };

@@ -6,6 +6,12 @@
 
 namespace kinematic_coverage::core {
 
+/// The curve a smoothed turn between two straight legs takes (parameter `turn_curve`).
+enum class TurnCurve {
+  kArc,       ///< the thesis's circular arc (Dubins-like): a curvature jump at each end
+  kClothoid,  ///< clothoid-arc-clothoid, continuous in curvature (ContinuousCurvatureTurns)
+};
+
 /// The options trajectory generation reads (docs/REFERENCE.md, Parameters): how the
 /// waypoint path is smoothed, how densely the trajectory is sampled, and the robot whose
 /// velocity model dates it.
@@ -19,6 +25,8 @@ struct TrajectoryOptions {
   double segment_sampling_distance = 0.5;  ///< m
   double arc_sampling_distance = 0.1;      ///< m
   double rotation_sampling_angle = 0.2;    ///< rad
+  TurnCurve turn_curve = TurnCurve::kArc;
+  double curvature_rate_max = 2.0;  ///< 1/m^2: the clothoids' curvature change per metre
 };
 
 }  // namespace kinematic_coverage::core

@@ -47,6 +47,7 @@ std::size_t TrajectorySampler::pieces(const PathPrimitive& primitive) const {
       ratio = primitive.length() / segment_sampling_distance_;
       break;
     case PrimitiveKind::kArc:
+    case PrimitiveKind::kClothoid:
       ratio = primitive.length() / arc_sampling_distance_;
       break;
     case PrimitiveKind::kRotation:
@@ -115,6 +116,18 @@ void TrajectorySampler::appendPoses(const PathPrimitive& primitive, std::size_t 
       for (std::size_t k = 1; k < count; ++k) {
         pose.fraction = static_cast<double>(k) * step;
         pose.yaw = wrapNear(start_yaw + pose.fraction * yaw_change);
+        poses.push_back(pose);
+      }
+      break;
+    case PrimitiveKind::kClothoid:
+      for (std::size_t k = 1; k < count; ++k) {
+        pose.fraction = static_cast<double>(k) * step;
+        const Pose2 at = primitive.poseAt(pose.fraction);
+        const double s = pose.fraction * primitive.length();
+        pose.x = at.x;
+        pose.y = at.y;
+        pose.yaw = wrapNear(start_yaw + primitive.startCurvature() * s +
+                            0.5 * primitive.curvatureRate() * s * s);
         poses.push_back(pose);
       }
       break;

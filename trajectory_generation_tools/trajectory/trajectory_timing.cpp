@@ -52,9 +52,11 @@ std::vector<PrimitiveTiming> TrajectoryTiming::profile(
       continue;
     }
     PrimitiveTiming& timing = timings[i];
-    timing.speed_limit = primitive.kind() == PrimitiveKind::kArc
-                             ? limits_.arcSpeed(primitive.radius())
-                             : limits_.v_max;
+    // A clothoid is driven no faster than an arc of its tightest radius.
+    timing.speed_limit =
+        primitive.kind() == PrimitiveKind::kArc || primitive.kind() == PrimitiveKind::kClothoid
+            ? limits_.arcSpeed(primitive.radius())
+            : limits_.v_max;
     double limit = 0.0;
     if (!stop_pending && !moving.empty()) {
       const PathPrimitive& previous = path[moving.back()];
