@@ -88,6 +88,18 @@ class Report:
             text += f'| {label} | ' + ' | '.join(ours + theirs) + ' |\n'
         return text
 
+    def vehicle_table(self, mission):
+        """Time and error sum of Algorithm 1 and unsmoothed on `mission` for both vehicles."""
+        text = self.marker()
+        text += '| vehicle | Algorithm 1: time | Algorithm 1: error sum | unsmoothed: time '
+        text += '| unsmoothed: error sum |\n|---|---|---|---|---|\n'
+        for vehicle, suffix in (('dynamic', ''), ('kinematic', '_kinematic')):
+            runs = [self.sim[f'{mission}_{strategy}{suffix}'] for strategy in ('local', 'unsmoothed')]
+            text += f'| {vehicle} | ' + ' | '.join(
+                f"{seconds(run['traversal_time_s'])} | {metres(run['tracking_error_sum_m'])}"
+                for run in runs) + ' |\n'
+        return text
+
     def trends(self, mission):
         """Traversal time and error sum of the runs of STRATEGIES, in order."""
         runs = [self.sim[f'{mission}_{strategy}'] for strategy, _ in STRATEGIES]
@@ -247,13 +259,7 @@ Where the numbers differ from the thesis, and why:
   slipping, stay on the arcs within millimetres:
 
 '''
-        text += self.marker()
-        text += '| vehicle | Algorithm 1: time | Algorithm 1: error sum | unsmoothed: time | unsmoothed: error sum |\n'
-        text += '|---|---|---|---|---|\n'
-        for vehicle, suffix in (('dynamic', ''), ('kinematic', '_kinematic')):
-            local, unsmoothed = sim[f'lake_30x30_local{suffix}'], sim[f'lake_30x30_unsmoothed{suffix}']
-            text += f"| {vehicle} | {seconds(local['traversal_time_s'])} | {metres(local['tracking_error_sum_m'])} | "
-            text += f"{seconds(unsmoothed['traversal_time_s'])} | {metres(unsmoothed['tracking_error_sum_m'])} |\n"
+        text += self.vehicle_table('lake_30x30')
         text += '''
 Smoothed by Algorithm 1, by the default strategy, by the default strategy with clothoid
 turns, and unsmoothed (left to right): the desired trajectory in black, the path the robot drove coloured by its tracking error, over
@@ -333,13 +339,7 @@ Where the numbers differ from the thesis, and why:
   vehicle shows the same order:
 
 '''
-        text += self.marker()
-        text += '| vehicle | Algorithm 1: time | Algorithm 1: error sum | unsmoothed: time | unsmoothed: error sum |\n'
-        text += '|---|---|---|---|---|\n'
-        for vehicle, suffix in (('dynamic', ''), ('kinematic', '_kinematic')):
-            local, unsmoothed = sim[f'lake_7_5_local{suffix}'], sim[f'lake_7_5_unsmoothed{suffix}']
-            text += f"| {vehicle} | {seconds(local['traversal_time_s'])} | {metres(local['tracking_error_sum_m'])} | "
-            text += f"{seconds(unsmoothed['traversal_time_s'])} | {metres(unsmoothed['tracking_error_sum_m'])} |\n"
+        text += self.vehicle_table('lake_7_5')
         text += f'''
 - The planned times order the trajectories otherwise: {seconds(plan['lake_7_5_local']['traversal_time_s'])} (Algorithm 1),
   {seconds(plan['lake_7_5_default']['traversal_time_s'])} (default) and {seconds(plan['lake_7_5_unsmoothed']['traversal_time_s'])} (unsmoothed) by the planner's velocity model, in

@@ -20,7 +20,6 @@ namespace {
 /// sequence (ColorBrewer YlGnBu) for seen once and for overlap.
 constexpr std::array<PlotColour, 5> kVisitColours{
     {{215, 48, 39}, {199, 233, 180}, {127, 205, 187}, {65, 182, 196}, {44, 127, 184}}};
-constexpr PlotColour kOutlineColour{45, 45, 45};
 constexpr PlotColour kOffsetAreaColour{80, 80, 80};
 constexpr PlotColour kWaypointColour{230, 97, 1};
 constexpr PlotColour kTrajectoryColour{20, 20, 20};
@@ -33,8 +32,6 @@ constexpr PlotColour kUnseenRegionColour{200, 0, 110};
 /// than kUnseenRegionMinPixels across is circled as well.
 constexpr double kUnseenRegionMarginPixels = 4.0;
 constexpr double kUnseenRegionMinPixels = 16.0;
-constexpr PlotColour kTextColour{25, 25, 25};
-constexpr PlotColour kSubtitleColour{70, 70, 70};
 /// The "plasma" colour map at 0, 1/4, 1/2, 3/4 and 1, for the tracking error.
 constexpr std::array<PlotColour, 5> kErrorColours{
     {{13, 8, 135}, {126, 3, 168}, {204, 71, 120}, {248, 149, 64}, {240, 249, 33}}};

@@ -13,6 +13,12 @@ typedef struct _cairo_surface cairo_surface_t;  // NOLINT(modernize-use-using)
 
 namespace kinematic_coverage::core {
 
+/// Text: titles and labels, and the figures lines under a title.
+inline constexpr PlotColour kTextColour{25, 25, 25};
+inline constexpr PlotColour kSubtitleColour{70, 70, 70};
+/// Outlines: the hull, axes boxes.
+inline constexpr PlotColour kOutlineColour{45, 45, 45};
+
 /// Sizes of a plot that scale with the image width.
 struct PlotScale {
   double factor;  ///< of lengths: margins, line widths, markers

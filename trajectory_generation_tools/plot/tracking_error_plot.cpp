@@ -17,13 +17,10 @@ namespace kinematic_coverage::core {
 namespace {
 
 constexpr int kMaxWidth = 4096;
-constexpr PlotColour kFrameColour{45, 45, 45};
 constexpr PlotColour kEuclideanColour{20, 20, 20};
 constexpr PlotColour kEuclideanBarColour{180, 180, 190};
 constexpr PlotColour kXColour{33, 102, 172};
 constexpr PlotColour kYColour{230, 97, 1};
-constexpr PlotColour kTitleColour{25, 25, 25};
-constexpr PlotColour kSubtitleColour{70, 70, 70};
 /// On-image distance between axis ticks the tick step aims at, pixels.
 constexpr double kTickSpacingPixels = 90.0;
 
@@ -89,7 +86,7 @@ void drawFrame(cairo_t* cr, const Panel& panel, const std::string& title,
                const std::string& x_label, const std::string& y_label, const PlotScale& scale) {
   const double f = scale.factor;
   const double tick_length = 5.0 * f;
-  setColour(cr, kFrameColour);
+  setColour(cr, kOutlineColour);
   cairo_set_line_width(cr, 1.1 * f);
   cairo_rectangle(cr, panel.left, panel.top, panel.width, panel.height);
   cairo_stroke(cr);
@@ -120,8 +117,21 @@ void drawFrame(cairo_t* cr, const Panel& panel, const std::string& title,
   showText(cr, y_label, 0.0, 0.0, TextAlign::kCentre);
   cairo_restore(cr);
   selectFont(cr, scale.label, true);
-  setColour(cr, kTitleColour);
+  setColour(cr, kTextColour);
   showText(cr, title, panel.left, panel.top - 0.9 * scale.label, TextAlign::kStart);
+}
+
+/// The polyline through the points (xs[i], ys[i]) of the panel, as the current path.
+void polylinePath(cairo_t* cr, const Panel& panel, const std::vector<double>& xs,
+                  const std::vector<double>& ys) {
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const Point2 p = panel.toPixel(xs[i], ys[i]);
+    if (i == 0) {
+      cairo_move_to(cr, p.x(), p.y());
+    } else {
+      cairo_line_to(cr, p.x(), p.y());
+    }
+  }
 }
 
 /// The histogram of `values` over [panel.x_min, panel.x_max] as a density: filled bars, or
@@ -160,17 +170,15 @@ void drawNormal(cairo_t* cr, const Panel& panel, const NormalFit& fit, const Plo
   cairo_save(cr);
   cairo_rectangle(cr, panel.left, panel.top, panel.width, panel.height);
   cairo_clip(cr);
+  std::vector<double> xs;
+  std::vector<double> densities;
   for (int i = 0; i <= kPoints; ++i) {
     const double x = panel.x_min + (panel.x_max - panel.x_min) * i / kPoints;
     const double z = (x - fit.mean) / fit.standard_deviation;
-    const double density = std::exp(-0.5 * z * z) / (fit.standard_deviation * std::sqrt(2 * M_PI));
-    const Point2 p = panel.toPixel(x, density);
-    if (i == 0) {
-      cairo_move_to(cr, p.x(), p.y());
-    } else {
-      cairo_line_to(cr, p.x(), p.y());
-    }
+    xs.push_back(x);
+    densities.push_back(std::exp(-0.5 * z * z) / (fit.standard_deviation * std::sqrt(2 * M_PI)));
   }
+  polylinePath(cr, panel, xs, densities);
   setColour(cr, colour);
   cairo_set_line_width(cr, 2.2 * scale.factor);
   cairo_set_dash(cr, std::array<double, 2>{7.0 * scale.factor, 4.0 * scale.factor}.data(), 2, 0.0);
@@ -182,14 +190,7 @@ void drawNormal(cairo_t* cr, const Panel& panel, const NormalFit& fit, const Plo
 void drawSeries(cairo_t* cr, const Panel& panel, const std::vector<double>& t,
                 const std::vector<double>& values, const PlotColour& colour,
                 const PlotScale& scale) {
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    const Point2 p = panel.toPixel(t[i], values[i]);
-    if (i == 0) {
-      cairo_move_to(cr, p.x(), p.y());
-    } else {
-      cairo_line_to(cr, p.x(), p.y());
-    }
-  }
+  polylinePath(cr, panel, t, values);
   setColour(cr, colour);
   cairo_set_line_width(cr, 1.3 * scale.factor);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
@@ -219,7 +220,7 @@ void drawKey(cairo_t* cr, const Panel& panel, const std::vector<KeyEntry>& entri
     cairo_move_to(cr, right - 26.0 * f, y);
     cairo_line_to(cr, right, y);
     cairo_stroke(cr);
-    setColour(cr, kTitleColour);
+    setColour(cr, kTextColour);
     showText(cr, entry.name, right - 32.0 * f, y, TextAlign::kEnd);
     y += 1.5 * scale.legend;
   }
@@ -292,7 +293,7 @@ void TrackingErrorPlot::writePng(const TrackingErrorPlotData& data, const std::s
   double y = 16.0 * f + 0.6 * scale.title;
   for (std::size_t i = 0; i < data.title_lines.size(); ++i) {
     selectFont(cr, i == 0 ? scale.title : scale.subtitle, i == 0);
-    setColour(cr, i == 0 ? kTitleColour : kSubtitleColour);
+    setColour(cr, i == 0 ? kTextColour : kSubtitleColour);
     showText(cr, data.title_lines[i], 0.5 * width_, y, TextAlign::kCentre);
     y += 1.35 * (i == 0 ? 0.5 * (scale.title + scale.subtitle) : scale.subtitle);
   }
