@@ -355,7 +355,10 @@ Where the numbers differ from the thesis, and why:
 
 <img src="images/experiments_lake_7_5_local.png" width="24%"> <img src="images/experiments_lake_7_5_default.png" width="24%"> <img src="images/experiments_lake_7_5_clothoid.png" width="24%"> <img src="images/experiments_lake_7_5_unsmoothed.png" width="24%">
 
-Algorithm 1 (left) against unsmoothed (right): the driven poses and the error statistics.
+Algorithm 1 (left) against unsmoothed (right): the planned trajectories over their
+heatmaps, the driven poses and the error statistics.
+
+<img src="images/experiments_lake_7_5_local_plan.png" width="48%"> <img src="images/experiments_lake_7_5_unsmoothed_plan.png" width="48%">
 
 <img src="images/experiments_lake_7_5_local_poses.png" width="48%"> <img src="images/experiments_lake_7_5_unsmoothed_poses.png" width="48%">
 

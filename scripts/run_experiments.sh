@@ -113,7 +113,7 @@ for name in lake_30x30_local lake_30x30_unsmoothed lake_7_5_local lake_7_5_unsmo
   cp "$out/$name/simulate/poses.png" "$images/experiments_${name}_poses.png"
   cp "$out/$name/simulate/errors.png" "$images/experiments_${name}_errors.png"
 done
-for name in lake_30x30_local lake_30x30_unsmoothed; do
+for name in lake_30x30_local lake_30x30_unsmoothed lake_7_5_local lake_7_5_unsmoothed; do
   cp "$out/$name/plan/plot.png" "$images/experiments_${name}_plan.png"
 done
 echo "== write docs/EXPERIMENTS.md" >&2
