@@ -52,10 +52,11 @@ struct RobotState {
 ///   N = m33 * yaw_rate_loop_gain * (r_cmd - r) + D_r(r_cmd), clamped to thrust_max and
 ///   yaw_torque_max and held over the step. Sway is not actuated: in a turn the body slips
 ///   outwards, and it coasts past a pose it brakes for.
-/// The two thesis trends come out of it (docs/EXPERIMENTS.md): with a high yaw_gain the
+/// The thesis's time trends come out of it (docs/EXPERIMENTS.md): with a high yaw_gain the
 /// turns in place are fast (the yaw rate saturates) while densely sampled arcs cost a slow
 /// down at every pose; with a low yaw_gain each rotation pose is approached exponentially,
-/// so finely sampled rotations (small rotation_sampling_angle) are slow.
+/// so finely sampled rotations (small rotation_sampling_angle) are slow. Its tracking
+/// errors come from the dynamic vehicle: the coast past a stopping corner, the slip on arcs.
 class TrajectoryFollower {
  public:
   /// Follows `targets` from `start` with the robot `model` (its ranges checked where it
