@@ -83,6 +83,11 @@ const std::vector<ParameterField>& parameterFields() {
       {"yaw_tolerance", &P::yaw_tolerance},
       {"current_x", &P::current_x},
       {"current_y", &P::current_y},
+      {"current_sigma", &P::current_sigma},
+      {"current_time_constant", &P::current_time_constant},
+      {"navigation_sigma", &P::navigation_sigma},
+      {"navigation_time_constant", &P::navigation_time_constant},
+      {"disturbance_seed", &P::disturbance_seed},
       {"sim_dt", &P::sim_dt},
       {"sim_time_limit", &P::sim_time_limit},
   };

@@ -37,6 +37,25 @@ void requireOpenAngle(const char* name, double value) {
   }
 }
 
+/// The current's fluctuation, the navigation error and their seed.
+void validateDisturbance(const PlannerParameters& p) {
+  for (const auto& [name, value, unit] :
+       {std::tuple<const char*, double, const char*>{"current_sigma", p.current_sigma, "m/s"},
+        {"navigation_sigma", p.navigation_sigma, "m"}}) {
+    if (!(std::isfinite(value) && value >= 0.0)) {
+      throw InvalidInputError(std::string(name) + " = " + formatNumber(value) +
+                              " is out of range: it must be a finite number >= 0 (" + unit + ")");
+    }
+  }
+  requirePositive("current_time_constant", p.current_time_constant, "s");
+  requirePositive("navigation_time_constant", p.navigation_time_constant, "s");
+  const double seed = p.disturbance_seed;
+  if (!(std::isfinite(seed) && seed >= 0.0 && seed < 4294967296.0 && seed == std::floor(seed))) {
+    throw InvalidInputError("disturbance_seed = " + formatNumber(seed) +
+                            " is out of range: it must be an integer in [0, 4294967295]");
+  }
+}
+
 /// The dynamic vehicle's mass, damping, thrusters and loop gains.
 void validateRigidBody(const PlannerParameters& p) {
   requirePositive("mass", p.mass, "kg");
@@ -132,6 +151,7 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
                               " is out of range: it must be a finite number (m/s)");
     }
   }
+  validateDisturbance(p);
   requirePositive("sim_dt", p.sim_dt, "s");
   requirePositive("sim_time_limit", p.sim_time_limit, "s");
   // A discrete proportional loop with gain k corrects k * sim_dt of its error per step:

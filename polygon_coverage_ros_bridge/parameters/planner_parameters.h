@@ -77,6 +77,11 @@ struct PlannerParameters {
   double yaw_tolerance = 0.05;             ///< rad: a turn-in-place target is reached within it
   double current_x = 0.0;                  ///< m/s: constant water current along x
   double current_y = 0.0;                  ///< m/s: constant water current along y
+  double current_sigma = 0.0;              ///< m/s: current fluctuation, per axis
+  double current_time_constant = 60.0;     ///< s: correlation time of the fluctuation
+  double navigation_sigma = 0.0;           ///< m: navigation position error, per axis
+  double navigation_time_constant = 2.0;   ///< s: correlation time of the navigation error
+  double disturbance_seed = 1.0;           ///< an integer in [0, 2^32): the disturbance's draw
   double sim_dt = 0.1;                     ///< s: simulation time step
   double sim_time_limit = 36000.0;         ///< s: simulated time after which a run gives up
 };

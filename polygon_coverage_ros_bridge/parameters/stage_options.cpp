@@ -1,6 +1,7 @@
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include "polygon_coverage_ros_bridge/parameters/parameter_choices.h"
 #include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
@@ -136,6 +137,11 @@ RobotModel robotModelOf(const PlannerParameters& parameters) {
   model.yaw_tolerance = p.yaw_tolerance;
   model.current_x = p.current_x;
   model.current_y = p.current_y;
+  model.disturbance.current_sigma = p.current_sigma;
+  model.disturbance.current_time_constant = p.current_time_constant;
+  model.disturbance.navigation_sigma = p.navigation_sigma;
+  model.disturbance.navigation_time_constant = p.navigation_time_constant;
+  model.disturbance.seed = static_cast<std::uint32_t>(p.disturbance_seed);
   model.sim_dt = p.sim_dt;
   model.sim_time_limit = p.sim_time_limit;
   return model;

@@ -120,6 +120,11 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"yaw_tolerance", "0.1"},
       {"current_x", "-0.05"},
       {"current_y", "0.15"},
+      {"current_sigma", "0.02"},
+      {"current_time_constant", "30"},
+      {"navigation_sigma", "0.1"},
+      {"navigation_time_constant", "1.5"},
+      {"disturbance_seed", "7"},
       {"sim_dt", "0.2"},
       {"sim_time_limit", "600"}};
   EXPECT_EQ(values.size(), MissionFileReader::parameterNames().size());
@@ -180,6 +185,11 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.yaw_tolerance, 0.1);
   EXPECT_EQ(p.current_x, -0.05);
   EXPECT_EQ(p.current_y, 0.15);
+  EXPECT_EQ(p.current_sigma, 0.02);
+  EXPECT_EQ(p.current_time_constant, 30.0);
+  EXPECT_EQ(p.navigation_sigma, 0.1);
+  EXPECT_EQ(p.navigation_time_constant, 1.5);
+  EXPECT_EQ(p.disturbance_seed, 7.0);
   EXPECT_EQ(p.sim_dt, 0.2);
   EXPECT_EQ(p.sim_time_limit, 600.0);
 }

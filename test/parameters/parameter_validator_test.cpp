@@ -149,6 +149,27 @@ TEST(ParameterValidator, ChecksTheRobotModelsRanges) {
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_y = std::nan(""); }),
             "current_y = nan is out of range: it must be a finite number (m/s)");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_x = -3.0; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_sigma = -0.01; }),
+            "current_sigma = -0.01 is out of range: it must be a finite number >= 0 (m/s)");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.navigation_sigma = INFINITY; }),
+            "navigation_sigma = inf is out of range: it must be a finite number >= 0 (m)");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_time_constant = 0.0; }),
+            "current_time_constant = 0 is out of range: it must be a finite number > 0 (s)");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.navigation_time_constant = -1.0; }),
+            "navigation_time_constant = -1 is out of range: it must be a finite number > 0 (s)");
+  for (const double seed : {-1.0, 1.5, 4294967296.0, std::nan("")}) {
+    const std::string message =
+        errorOf([seed](PlannerParameters& p) { p.disturbance_seed = seed; });
+    EXPECT_NE(message.find("disturbance_seed = "), std::string::npos) << seed;
+    EXPECT_NE(message.find("it must be an integer in [0, 4294967295]"), std::string::npos)
+        << message;
+  }
+  EXPECT_EQ(errorOf([](PlannerParameters& p) {
+              p.current_sigma = 0.0;
+              p.navigation_sigma = 0.0;
+              p.disturbance_seed = 0.0;
+            }),
+            "");
   EXPECT_EQ(errorOf([](PlannerParameters& p) {
               p.yaw_gain = 4.0;
               p.sim_dt = 0.5;

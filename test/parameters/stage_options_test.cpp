@@ -87,6 +87,19 @@ TEST(StageOptions, TheDefaultsMapToTheDocumentedStageOptions) {
   EXPECT_EQ(robot.yaw_tolerance, p.yaw_tolerance);
   EXPECT_EQ(robot.sim_dt, p.sim_dt);
   EXPECT_EQ(robot.sim_time_limit, p.sim_time_limit);
+  EXPECT_EQ(robot.disturbance.current_sigma, 0.0);
+  EXPECT_EQ(robot.disturbance.navigation_sigma, 0.0);
+  EXPECT_EQ(robot.disturbance.current_time_constant, p.current_time_constant);
+  EXPECT_EQ(robot.disturbance.navigation_time_constant, p.navigation_time_constant);
+  EXPECT_EQ(robot.disturbance.seed, 1u);
+  PlannerParameters lake = p;
+  lake.current_sigma = 0.02;
+  lake.navigation_sigma = 0.1;
+  lake.disturbance_seed = 4294967295.0;
+  const RobotModel lake_robot = robotModelOf(lake);
+  EXPECT_EQ(lake_robot.disturbance.current_sigma, 0.02);
+  EXPECT_EQ(lake_robot.disturbance.navigation_sigma, 0.1);
+  EXPECT_EQ(lake_robot.disturbance.seed, 4294967295u);
 
   const RemainingAreaOptions remaining = remainingAreaOptionsOf(p);
   EXPECT_EQ(remaining.method, ReplanningMethod::kFootprint);

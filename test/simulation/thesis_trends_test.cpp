@@ -1,6 +1,8 @@
 // The thesis's two experiments (Chapter 4, Tables 4.1 to 4.3) in simulation: the lake
 // missions planned smoothed and unsmoothed, each followed by the same robot, the default
-// dynamic vehicle (config/default.yaml, its values chosen before these experiments ran).
+// dynamic vehicle (config/default.yaml), in the lake's disturbances or in calm water with
+// exact navigation; the vehicle's and the lake's values were chosen before these
+// experiments ran. docs/EXPERIMENTS.md reports which of the thesis's trends appear.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -44,6 +46,20 @@ RobotRun planAndSimulate(const std::string& mission_name,
   return run;
 }
 
+/// The lake of docs/EXPERIMENTS.md: a current fluctuating by 0.02 m/s per axis and a
+/// navigation error of 0.1 m per axis (set before the experiments ran with them).
+const std::vector<std::string> kLake{"current_sigma=0.02", "navigation_sigma=0.1"};
+
+/// Experiment 2's robot: a lower yaw gain and finer rotations, the thesis's two changes.
+const std::vector<std::string> kLowGain{"yaw_gain=2", "rotation_sampling_angle=0.1"};
+
+/// `first` followed by `second`.
+std::vector<std::string> operator+(std::vector<std::string> first,
+                                   const std::vector<std::string>& second) {
+  first.insert(first.end(), second.begin(), second.end());
+  return first;
+}
+
 /// The overrides with `smoothing` on or off, smoothing by the thesis's Algorithm 1 (the
 /// global smoothing strategy makes the smoothed runs faster than the thesis's).
 std::vector<std::string> with(std::vector<std::string> overrides, const std::string& smoothing) {
@@ -52,19 +68,33 @@ std::vector<std::string> with(std::vector<std::string> overrides, const std::str
   return overrides;
 }
 
-TEST(ThesisTrendsTest, HighYawGainOnLake30TurnsInPlaceFasterButTracksWorse) {
-  // Tables 4.1 and 4.2: unsmoothed 1241 s against smoothed 1529 s, but 452 m against 293 m
-  // of cumulative error (35 % less when smoothed), and the 99th percentile of the error
-  // lower when smoothed. The robot: config/default.yaml (yaw_gain 5,
-  // rotation_sampling_angle 0.2).
-  const RobotRun smoothed = planAndSimulate("lake_30x30", with({}, "true"));
-  const RobotRun unsmoothed = planAndSimulate("lake_30x30", with({}, "false"));
-  const TrackingErrorStatistics& s = smoothed.simulation.tracking;
-  const TrackingErrorStatistics& u = unsmoothed.simulation.tracking;
+/// Table 4.2's percentiles (1st to 99th) of the error, metres.
+const std::vector<double> kThesisSmoothedPercentiles{0.01, 0.02, 0.03, 0.05, 0.08,
+                                                     0.13, 0.21, 0.28, 0.54};
+const std::vector<double> kThesisUnsmoothedPercentiles{0.01, 0.03, 0.04, 0.07, 0.13,
+                                                       0.23, 0.34, 0.47, 0.63};
+
+/// Expects the 50th to the 99th percentile of `run` within a factor of 3 of `thesis`'s.
+void expectPercentilesNear(const RobotRun& run, const std::vector<double>& thesis,
+                           const std::string& label) {
+  for (std::size_t i = 0; i < kTrackingErrorPercentiles.size(); ++i) {
+    if (kTrackingErrorPercentiles[i] < 50) continue;
+    const double ours = run.simulation.tracking.percentiles_m[i];
+    EXPECT_GE(ours, thesis[i] / 3.0) << label << " " << kTrackingErrorPercentiles[i];
+    EXPECT_LE(ours, thesis[i] * 3.0) << label << " " << kTrackingErrorPercentiles[i];
+  }
+}
+
+TEST(ThesisTrendsTest, HighYawGainOnLake30TurnsInPlaceFasterWithTheLakesErrors) {
+  // Tables 4.1 and 4.2, in the lake: unsmoothed 1241 s against smoothed 1529 s, and the
+  // error percentiles from the median up within a factor of 3 of Table 4.2's for both.
+  // Table 4.1's other half, the smoothed trajectory tracked 35 % better, does not appear
+  // with this vehicle in the lake or in calm water (docs/EXPERIMENTS.md).
+  const RobotRun smoothed = planAndSimulate("lake_30x30", with(kLake, "true"));
+  const RobotRun unsmoothed = planAndSimulate("lake_30x30", with(kLake, "false"));
   EXPECT_LT(unsmoothed.simulation.traversal_time_s, smoothed.simulation.traversal_time_s);
-  EXPECT_LE(s.sum_m, 0.75 * u.sum_m);
-  EXPECT_LT(s.mean_m, u.mean_m);
-  EXPECT_LT(s.percentiles_m.back(), u.percentiles_m.back());
+  expectPercentilesNear(smoothed, kThesisSmoothedPercentiles, "smoothed");
+  expectPercentilesNear(unsmoothed, kThesisUnsmoothedPercentiles, "unsmoothed");
   // As in Table 4.1, neither loses coverage worth speaking of.
   EXPECT_GT(smoothed.coverage_percent, 99.9);
   EXPECT_GT(unsmoothed.coverage_percent, 99.9);
@@ -72,38 +102,44 @@ TEST(ThesisTrendsTest, HighYawGainOnLake30TurnsInPlaceFasterButTracksWorse) {
 
 TEST(ThesisTrendsTest, LowYawGainAndFineRotationsOnLake7MakeSmoothingFaster) {
   // Table 4.3: with a lower yaw gain and more rotation poses, smoothed 531 s against
-  // unsmoothed 703 s.
-  const std::vector<std::string> robot{"yaw_gain=2", "rotation_sampling_angle=0.1"};
-  const RobotRun smoothed = planAndSimulate("lake_7_5", with(robot, "true"));
-  const RobotRun unsmoothed = planAndSimulate("lake_7_5", with(robot, "false"));
+  // unsmoothed 703 s, in the lake and in calm water with exact navigation.
+  const RobotRun smoothed = planAndSimulate("lake_7_5", with(kLowGain + kLake, "true"));
+  const RobotRun unsmoothed = planAndSimulate("lake_7_5", with(kLowGain + kLake, "false"));
   EXPECT_LT(smoothed.simulation.traversal_time_s, unsmoothed.simulation.traversal_time_s);
-  // Table 4.3's other half, smoothed tracking worse (284 m against 239 m), does not appear
-  // with this vehicle: the unsmoothed robot coasts past every corner and turns slowly
-  // there, off the path (docs/EXPERIMENTS.md).
   // The reversal comes from the robot, not from the map: with the first experiment's high
   // gain and coarse rotations, turning in place is faster on this map too.
-  const RobotRun smoothed_high_gain = planAndSimulate("lake_7_5", with({}, "true"));
-  const RobotRun unsmoothed_high_gain = planAndSimulate("lake_7_5", with({}, "false"));
+  const RobotRun smoothed_high_gain = planAndSimulate("lake_7_5", with(kLake, "true"));
+  const RobotRun unsmoothed_high_gain = planAndSimulate("lake_7_5", with(kLake, "false"));
   EXPECT_LT(unsmoothed_high_gain.simulation.traversal_time_s,
             smoothed_high_gain.simulation.traversal_time_s);
 }
 
-TEST(ThesisTrendsTest, ContinuousCurvatureTurnsTrackBetterInBothExperiments) {
-  // Beyond the thesis: with clothoid transitions (the default strategy), the smoothed
-  // trajectory tracks better than the unsmoothed one in both experiments, with no
-  // reversal, and stays the faster one in experiment 2.
-  const std::vector<std::string> clothoid{"smoothing=true", "turn_curve=clothoid"};
-  const RobotRun lake30 = planAndSimulate("lake_30x30", clothoid);
-  const RobotRun lake30_unsmoothed = planAndSimulate("lake_30x30", {"smoothing=false"});
-  EXPECT_LT(lake30.simulation.tracking.sum_m, lake30_unsmoothed.simulation.tracking.sum_m);
-  std::vector<std::string> low_gain{"yaw_gain=2", "rotation_sampling_angle=0.1"};
-  std::vector<std::string> lake7_clothoid = low_gain;
-  lake7_clothoid.insert(lake7_clothoid.end(), clothoid.begin(), clothoid.end());
-  low_gain.push_back("smoothing=false");
-  const RobotRun lake7 = planAndSimulate("lake_7_5", lake7_clothoid);
-  const RobotRun lake7_unsmoothed = planAndSimulate("lake_7_5", low_gain);
-  EXPECT_LT(lake7.simulation.tracking.sum_m, lake7_unsmoothed.simulation.tracking.sum_m);
-  EXPECT_LT(lake7.simulation.traversal_time_s, lake7_unsmoothed.simulation.traversal_time_s);
+TEST(ThesisTrendsTest, InCalmWaterLake7SmoothedIsFasterButTracksWorse) {
+  // Table 4.3 whole (smoothed 531 s and 284 m against unsmoothed 703 s and 239 m) appears
+  // in calm water with exact navigation: the unsmoothed robot stops and turns on the
+  // path, the smoothed one lags on the tight arcs with the low yaw gain. In the lake the
+  // current and navigation error push the slowly turning unsmoothed robot off its
+  // corners and the order of the errors turns (docs/EXPERIMENTS.md).
+  const RobotRun smoothed = planAndSimulate("lake_7_5", with(kLowGain, "true"));
+  const RobotRun unsmoothed = planAndSimulate("lake_7_5", with(kLowGain, "false"));
+  EXPECT_LT(smoothed.simulation.traversal_time_s, unsmoothed.simulation.traversal_time_s);
+  EXPECT_GT(smoothed.simulation.tracking.sum_m, unsmoothed.simulation.tracking.sum_m);
+}
+
+TEST(ThesisTrendsTest, ContinuousCurvatureTurnsTrackBetterThanArcsInCalmWater) {
+  // Beyond the thesis: in calm water with exact navigation, clothoid transitions track
+  // better than the same strategy's arcs in both experiments (no curvature jump to lag
+  // behind), and stay faster than turning in place in experiment 2. They do not track
+  // better than the unsmoothed trajectory, which stops on its corners.
+  const std::vector<std::string> arcs{"smoothing=true"};
+  const std::vector<std::string> clothoids{"smoothing=true", "turn_curve=clothoid"};
+  EXPECT_LT(planAndSimulate("lake_30x30", clothoids).simulation.tracking.sum_m,
+            planAndSimulate("lake_30x30", arcs).simulation.tracking.sum_m);
+  const RobotRun lake7 = planAndSimulate("lake_7_5", kLowGain + clothoids);
+  EXPECT_LT(lake7.simulation.tracking.sum_m,
+            planAndSimulate("lake_7_5", kLowGain + arcs).simulation.tracking.sum_m);
+  EXPECT_LT(lake7.simulation.traversal_time_s,
+            planAndSimulate("lake_7_5", with(kLowGain, "false")).simulation.traversal_time_s);
 }
 
 TEST(ThesisTrendsTest, ACurrentGrowsTheTrackingErrorAndCostsCoverage) {

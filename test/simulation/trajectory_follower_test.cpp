@@ -91,7 +91,8 @@ TEST(TrajectoryFollowerTest, SlowsTowardsEveryPoseItIsHanded) {
 }
 
 TEST(TrajectoryFollowerTest, TheDynamicVehicleCruisesAtVMaxOnALongLine) {
-  // The surge loop's damping feedforward holds the reference exactly once it settles.
+  // The surge loop's feedforwards hold the reference once it settles: within 1 %, as the
+  // force is held over a step while the damping changes with the speed.
   const PlannerParameters parameters = withVehicle("dynamic");
   const SimulationResult result =
       RobotSimulator(robotModelOf(parameters)).simulate(straightLine(40.0, 40.0));
@@ -102,7 +103,7 @@ TEST(TrajectoryFollowerTest, TheDynamicVehicleCruisesAtVMaxOnALongLine) {
         parameters.sim_dt;
     fastest = std::max(fastest, speed);
   }
-  EXPECT_NEAR(fastest, parameters.v_max, 1e-6);
+  EXPECT_NEAR(fastest, parameters.v_max, 0.01 * parameters.v_max);
   EXPECT_LT(result.tracking.sum_m, 1e-9);
 }
 
@@ -142,28 +143,96 @@ TEST(TrajectoryFollowerTest, FinerRotationSamplingSlowsALowGainRobot) {
   }
 }
 
-TEST(TrajectoryFollowerTest, TheDynamicVehicleCoastsPastACornerWhereTheKinematicOneStops) {
-  // An unsmoothed corner: 5 m along x, a turn in place to +y, 5 m along y. The kinematic
-  // vehicle stops within the tolerance of the corner; the dynamic one coasts past it and
-  // drifts while it turns, which the nearest-point error (mostly along x) and the target
-  // error (to the corner) both show.
+/// An unsmoothed corner: 5 m along x, a turn in place to +y, 5 m along y.
+std::vector<Pose2> unsmoothedCorner() {
   std::vector<Pose2> corner = straightLine(5.0, 0.5);
   for (const Pose2& turn : rotation(M_PI / 2, 0.2)) corner.push_back({5.0, 0.0, turn.yaw});
   for (int i = 1; i <= 10; ++i) corner.push_back({5.0, 0.5 * i, M_PI / 2});
-  const SimulationResult kinematic =
-      RobotSimulator(robotModelOf(withVehicle("kinematic"))).simulate(corner);
-  const SimulationResult dynamic =
-      RobotSimulator(robotModelOf(withVehicle("dynamic"))).simulate(corner);
-  EXPECT_GT(dynamic.tracking.sum_m, 2.0 * kinematic.tracking.sum_m);
-  EXPECT_GT(dynamic.target_tracking.sum_m, kinematic.target_tracking.sum_m);
-  EXPECT_GT(dynamic.tracking_axes.x_max_m, dynamic.tracking_axes.y_max_m);
-  EXPECT_GT(dynamic.tracking_axes.x_max_m, 0.01);
-  // Every step's errors are consistent: the axis parts make up the nearest-point error,
-  // and the target piece is never nearer than the nearest point of the whole path.
-  for (const SimulationStep& step : dynamic.steps) {
+  return corner;
+}
+
+TEST(TrajectoryFollowerTest, BrakesInTimeToTurnInPlaceAtACorner) {
+  // The speed is held to what a_max can stop before the corner, so neither vehicle runs
+  // past it (towards a wall, in a planned path) by more than the tolerance; the dynamic
+  // vehicle then slides a few centimetres more in sway while it turns, which it cannot
+  // resist (sway is not actuated).
+  for (const std::string& vehicle : kVehicles) {
+    const PlannerParameters parameters = withVehicle(vehicle);
+    const SimulationResult result =
+        RobotSimulator(robotModelOf(parameters)).simulate(unsmoothedCorner());
+    double furthest = 0.0;
+    for (const SimulationStep& step : result.steps) furthest = std::max(furthest, step.pose.x);
+    const double slide = vehicle == "dynamic" ? parameters.position_tolerance : 0.0;
+    EXPECT_LE(furthest, 5.0 + parameters.position_tolerance + slide) << vehicle;
+    EXPECT_LT(result.tracking_axes.x_max_m, parameters.position_tolerance + slide) << vehicle;
+    // And it still runs near v_max between the corners (the set-point controller slows a
+    // little towards each pose): braking starts v_max^2 / (2 a_max) before the stop.
+    double fastest = 0.0;
+    for (std::size_t i = 1; i < result.steps.size(); ++i) {
+      fastest = std::max(
+          fastest, (result.steps[i].pose.position() - result.steps[i - 1].pose.position()).norm() /
+                       parameters.sim_dt);
+    }
+    EXPECT_GT(fastest, 0.85 * parameters.v_max) << vehicle;
+  }
+}
+
+TEST(TrajectoryFollowerTest, TheErrorsOfAStepAreConsistent) {
+  // The axis parts make up the nearest-point error, and the target piece is never nearer
+  // than the nearest point of the whole path.
+  PlannerParameters parameters = withVehicle("dynamic");
+  parameters.navigation_sigma = 0.1;
+  const SimulationResult result =
+      RobotSimulator(robotModelOf(parameters)).simulate(unsmoothedCorner());
+  EXPECT_GT(result.tracking_axes.x_max_m, 0.01);
+  EXPECT_GT(result.tracking_axes.y_max_m, 0.01);
+  for (const SimulationStep& step : result.steps) {
     EXPECT_NEAR(std::hypot(step.tracking_error_x_m, step.tracking_error_y_m), step.tracking_error_m,
                 1e-12);
     EXPECT_GE(step.target_error_m, step.tracking_error_m - 1e-12);
+  }
+}
+
+TEST(TrajectoryFollowerTest, SteersByItsNavigationSolution) {
+  // With a navigation error of standard deviation sigma per axis, the robot holds its
+  // estimate on the line, so its true position strays from it by about that error: the
+  // median cross-track error of a Gaussian is 0.67 sigma. It still arrives (by its
+  // estimate), and the draw repeats for a seed.
+  for (const std::string& vehicle : kVehicles) {
+    PlannerParameters parameters = withVehicle(vehicle);
+    parameters.navigation_sigma = 0.1;
+    parameters.navigation_time_constant = 2.0;
+    const std::vector<Pose2> line = straightLine(30.0, 0.5);
+    const SimulationResult result = RobotSimulator(robotModelOf(parameters)).simulate(line);
+    const double median = result.tracking.percentiles_m[4];
+    EXPECT_GT(median, 0.3 * 0.67 * parameters.navigation_sigma) << vehicle;
+    EXPECT_LT(median, 2.0 * 0.67 * parameters.navigation_sigma) << vehicle;
+    EXPECT_LT(std::abs(result.steps.back().pose.x - 30.0), 5.0 * parameters.navigation_sigma)
+        << vehicle;
+    const SimulationResult again = RobotSimulator(robotModelOf(parameters)).simulate(line);
+    EXPECT_EQ(again.traversal_time_s, result.traversal_time_s) << vehicle;
+    EXPECT_EQ(again.tracking.sum_m, result.tracking.sum_m) << vehicle;
+    parameters.disturbance_seed = 2.0;
+    const SimulationResult other = RobotSimulator(robotModelOf(parameters)).simulate(line);
+    EXPECT_NE(other.tracking.sum_m, result.tracking.sum_m) << vehicle;
+  }
+}
+
+TEST(TrajectoryFollowerTest, AFluctuatingCurrentPushesTheRobotOffItsLine) {
+  // The controller knows the mean current (0 here), not its fluctuation: the robot is
+  // pushed off the line until its position controller steers back, and still arrives.
+  for (const std::string& vehicle : kVehicles) {
+    PlannerParameters calm = withVehicle(vehicle);
+    const std::vector<Pose2> line = straightLine(30.0, 0.5);
+    const SimulationResult still = RobotSimulator(robotModelOf(calm)).simulate(line);
+    PlannerParameters gusty = calm;
+    gusty.current_sigma = 0.05;
+    gusty.current_time_constant = 20.0;
+    const SimulationResult pushed = RobotSimulator(robotModelOf(gusty)).simulate(line);
+    EXPECT_LT(still.tracking.sum_m, 1e-9) << vehicle;
+    EXPECT_GT(pushed.tracking.mean_m, 1e-3) << vehicle;
+    EXPECT_LT(pushed.tracking.percentiles_m.back(), 0.5) << vehicle;
+    EXPECT_NEAR(pushed.steps.back().pose.x, 30.0, calm.position_tolerance + 0.5) << vehicle;
   }
 }
 

@@ -18,6 +18,11 @@ PlanarRigidBody::PlanarRigidBody(const RigidBodyParameters& parameters, double c
                                  double current_y)
     : parameters_(parameters), current_x_(current_x), current_y_(current_y) {}
 
+void PlanarRigidBody::setCurrent(double current_x, double current_y) {
+  current_x_ = current_x;
+  current_y_ = current_y;
+}
+
 BodyForces PlanarRigidBody::limited(const BodyForces& forces) const {
   return {std::clamp(forces.surge, -parameters_.thrust_max, parameters_.thrust_max),
           std::clamp(forces.yaw_torque, -parameters_.yaw_torque_max, parameters_.yaw_torque_max)};

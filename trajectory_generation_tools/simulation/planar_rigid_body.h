@@ -37,6 +37,9 @@ class PlanarRigidBody {
   /// A body with `parameters` in a current of (current_x, current_y) m/s.
   PlanarRigidBody(const RigidBodyParameters& parameters, double current_x, double current_y);
 
+  /// Sets the current (m/s) that later advances see, for a current that varies in time.
+  void setCurrent(double current_x, double current_y);
+
   /// The state after `duration` s under constant `forces` (each clamped to the thrust and
   /// torque limits first), starting from `state`; the heading wrapped into (-pi, pi].
   RigidBodyState advance(const RigidBodyState& state, const BodyForces& forces,

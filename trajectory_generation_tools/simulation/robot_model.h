@@ -1,6 +1,7 @@
 #pragma once
 
 #include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
+#include "trajectory_generation_tools/simulation/disturbance_parameters.h"
 #include "trajectory_generation_tools/simulation/rigid_body_parameters.h"
 
 namespace kinematic_coverage::core {
@@ -13,21 +14,23 @@ enum class VehicleModel {
 
 /// The simulated robot of `coverage_tool simulate` and auv_simulator (TrajectoryFollower,
 /// docs/REFERENCE.md, Parameters): its vehicle, limits, controllers' gains and tolerances,
-/// the water current and the simulation step. Its ranges are ParameterValidator's.
+/// the water current, its disturbances and the simulation step. Its ranges are
+/// ParameterValidator's.
 struct RobotModel {
   VehicleModel vehicle_model = VehicleModel::kDynamic;
-  VehicleLimits vehicle;             ///< v_max, a_max and yaw_rate_max bound the commands
-  RigidBodyParameters body;          ///< the dynamic vehicle's mass, damping and thrusters
-  double yaw_gain = 5.0;             ///< 1/s: yaw-rate command per rad of heading error
-  double position_gain = 1.5;        ///< 1/s: surge-speed command per m to the target
-  double surge_loop_gain = 5.0;      ///< 1/s: dynamic vehicle's surge-speed loop bandwidth
-  double yaw_rate_loop_gain = 10.0;  ///< 1/s: dynamic vehicle's yaw-rate loop bandwidth
-  double position_tolerance = 0.05;  ///< m: a position target counts as reached within it
-  double yaw_tolerance = 0.05;       ///< rad: a turn-in-place target is reached within it
-  double current_x = 0.0;            ///< m/s: constant water current along x
-  double current_y = 0.0;            ///< m/s: constant water current along y
-  double sim_dt = 0.1;               ///< s: simulation time step
-  double sim_time_limit = 36000.0;   ///< s: simulated time after which a run gives up
+  VehicleLimits vehicle;              ///< v_max, a_max and yaw_rate_max bound the commands
+  RigidBodyParameters body;           ///< the dynamic vehicle's mass, damping and thrusters
+  double yaw_gain = 5.0;              ///< 1/s: yaw-rate command per rad of heading error
+  double position_gain = 1.5;         ///< 1/s: surge-speed command per m to the target
+  double surge_loop_gain = 5.0;       ///< 1/s: dynamic vehicle's surge-speed loop bandwidth
+  double yaw_rate_loop_gain = 10.0;   ///< 1/s: dynamic vehicle's yaw-rate loop bandwidth
+  double position_tolerance = 0.05;   ///< m: a position target counts as reached within it
+  double yaw_tolerance = 0.05;        ///< rad: a turn-in-place target is reached within it
+  double current_x = 0.0;             ///< m/s: constant water current along x
+  double current_y = 0.0;             ///< m/s: constant water current along y
+  DisturbanceParameters disturbance;  ///< the current's fluctuation and the navigation error
+  double sim_dt = 0.1;                ///< s: simulation time step
+  double sim_time_limit = 36000.0;    ///< s: simulated time after which a run gives up
 };
 
 }  // namespace kinematic_coverage::core

@@ -25,7 +25,8 @@ TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose
     : model_(model),
       targets_(std::move(targets)),
       state_(start),
-      body_(model.body, model.current_x, model.current_y) {
+      body_(model.body, model.current_x, model.current_y),
+      disturbance_(model.disturbance, model.current_x, model.current_y) {
   if (targets_.empty()) throw InvalidInputError("trajectory follower: no poses to follow");
   heading_target_.resize(targets_.size(), false);
   for (std::size_t i = 0; i < targets_.size(); ++i) {
@@ -34,6 +35,13 @@ TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose
     }
     heading_target_[i] = i > 0 && (targets_[i].position() - targets_[i - 1].position()).norm() <=
                                       kSamePositionTolerance;
+  }
+  // A stop: the last target, and a position target followed by a heading target.
+  distance_to_stop_.assign(targets_.size(), 0.0);
+  for (std::size_t i = targets_.size() - 1; i-- > 0;) {
+    if (heading_target_[i + 1]) continue;
+    distance_to_stop_[i] =
+        (targets_[i + 1].position() - targets_[i].position()).norm() + distance_to_stop_[i + 1];
   }
   if (!isFinite(state_.pose) || !std::isfinite(state_.t) || !std::isfinite(state_.speed) ||
       !std::isfinite(state_.sway) || !std::isfinite(state_.yaw_rate)) {
@@ -49,12 +57,17 @@ TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose
   skipReachedTargets();
 }
 
+Pose2 TrajectoryFollower::estimatedPose() const {
+  const Point2 error = disturbance_.navigationError();
+  return {state_.pose.x + error.x(), state_.pose.y + error.y(), state_.pose.yaw};
+}
+
 bool TrajectoryFollower::reached(std::size_t index) const {
   const Pose2& target = targets_[index];
   if (heading_target_[index]) {
     return std::abs(wrapAngle(target.yaw - state_.pose.yaw)) <= model_.yaw_tolerance;
   }
-  const Point2 offset = state_.pose.position() - target.position();
+  const Point2 offset = estimatedPose().position() - target.position();
   const Point2 along(std::cos(target.yaw), std::sin(target.yaw));
   return offset.norm() <= model_.position_tolerance || offset.dot(along) >= 0.0;
 }
@@ -74,9 +87,12 @@ TrajectoryFollower::Command TrajectoryFollower::command() const {
   } else {
     // The velocity over ground the position controller asks for, and the velocity through
     // the water that gives it in the current.
-    const Point2 to_target = target.position() - state_.pose.position();
+    const Point2 to_target = target.position() - estimatedPose().position();
+    const double braking_speed =
+        std::sqrt(2.0 * limits.a_max * (to_target.norm() + distance_to_stop_[next_target_]));
     const Point2 over_ground =
-        std::min(limits.v_max, p.position_gain * to_target.norm()) * to_target.normalized();
+        std::min({limits.v_max, p.position_gain * to_target.norm(), braking_speed}) *
+        to_target.normalized();
     const Point2 through_water = over_ground - Point2(p.current_x, p.current_y);
     heading_error = wrapAngle(std::atan2(through_water.y(), through_water.x()) - state_.pose.yaw);
     command.speed = std::min(limits.v_max, through_water.norm());
@@ -95,19 +111,25 @@ void TrajectoryFollower::advanceKinematic(const Command& command) {
   state_.pose.yaw = wrapAngle(state_.pose.yaw + command.yaw_rate * dt);
   const Point2 velocity =
       state_.speed * Point2(std::cos(state_.pose.yaw), std::sin(state_.pose.yaw)) +
-      Point2(model_.current_x, model_.current_y);
+      disturbance_.current();
   state_.pose.x += velocity.x() * dt;
   state_.pose.y += velocity.y() * dt;
 }
 
-void TrajectoryFollower::advanceDynamic(const Command& command) {
+void TrajectoryFollower::advanceDynamic(const Command& command, double previous_reference) {
   const RigidBodyParameters& b = model_.body;
   BodyForces forces;
-  forces.surge = b.surgeInertia() * model_.surge_loop_gain * (speed_reference_ - state_.speed) +
+  // The reference's change over the step, fed forward, and the error at the step's start:
+  // a body on its reference stays on it.
+  const double reference_acceleration = (speed_reference_ - previous_reference) / model_.sim_dt;
+  forces.surge = b.surgeInertia() * (reference_acceleration +
+                                     model_.surge_loop_gain * (previous_reference - state_.speed)) +
                  b.surgeDamping(speed_reference_);
   forces.yaw_torque =
       b.yawInertia() * model_.yaw_rate_loop_gain * (command.yaw_rate - state_.yaw_rate) +
       b.yawDamping(command.yaw_rate);
+  const Point2 current = disturbance_.current();
+  body_.setCurrent(current.x(), current.y());
   const RigidBodyState next = body_.advance(
       {state_.pose, state_.speed, state_.sway, state_.yaw_rate}, forces, model_.sim_dt);
   state_.pose = next.pose;
@@ -120,13 +142,15 @@ void TrajectoryFollower::step() {
   if (finished()) return;
   const Command command = this->command();
   const double speed_change = model_.vehicle.a_max * model_.sim_dt;
+  const double previous_reference = speed_reference_;
   speed_reference_ = std::max(0.0, speed_reference_ + std::clamp(command.speed - speed_reference_,
                                                                  -speed_change, speed_change));
   if (model_.vehicle_model == VehicleModel::kKinematic) {
     advanceKinematic(command);
   } else {
-    advanceDynamic(command);
+    advanceDynamic(command, previous_reference);
   }
+  disturbance_.advance(model_.sim_dt);
   ++steps_;
   state_.t = start_time_ + static_cast<double>(steps_) * model_.sim_dt;
   skipReachedTargets();

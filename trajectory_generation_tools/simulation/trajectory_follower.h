@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "trajectory_generation_tools/simulation/environment_disturbance.h"
 #include "trajectory_generation_tools/simulation/planar_rigid_body.h"
 #include "trajectory_generation_tools/simulation/robot_model.h"
 
@@ -23,6 +24,10 @@ struct RobotState {
 /// a timetable, so its traversal time comes out of its dynamics and controllers.
 ///
 /// Every step of `sim_dt`:
+/// - Navigation. The robot knows its position only through its navigation solution: the
+///   true position plus the navigation error of `disturbance` (0 by default). Targets and
+///   controllers below see that estimate; the water moves the true body, with the current
+///   (current_x, current_y) plus its fluctuation, of which the controller knows the mean.
 /// - Targets. A pose at the same position as the pose before it (an in-place rotation of
 ///   the trajectory) is a heading target: reached when the heading is within
 ///   `yaw_tolerance` of its yaw. Any other pose is a position target: reached within
@@ -36,6 +41,10 @@ struct RobotState {
 ///   through the water that gives it in the current (crabbing); that velocity's direction
 ///   is the desired heading and its length the speed command. For a heading target the
 ///   desired heading is the target's yaw and the speed command 0 (turn in place).
+/// - Braking. The velocity over ground is also at most sqrt(2 * a_max * d), with d the distance
+///   along the poses to the next stop (the position target before an in-place rotation, or
+///   the last target): the fastest speed from which a_max still stops the robot there, so
+///   that it turns in place on the path and not past a corner, towards a wall.
 /// - Yaw controller. With e the error to the desired heading, the yaw-rate command is
 ///   yaw_gain * e, limited to +-yaw_rate_max.
 /// - Shared thrust. Turning takes thrust from surge: the speed command is at most
@@ -47,16 +56,17 @@ struct RobotState {
 ///   the command, at once (explicit Euler, heading before position); the robot moves with
 ///   speed * (cos yaw, sin yaw) + current.
 /// - Vehicle, `vehicle_model: dynamic`: a PlanarRigidBody driven by two velocity loops,
-///   each a proportional term on its inertia plus a feedforward of its damping:
-///   X = m11 * surge_loop_gain * (u_ref - u) + D_u(u_ref) and
+///   each a proportional term on its inertia plus feedforwards of its damping (and, in
+///   surge, of the reference's acceleration, so that braking is not late):
+///   X = m11 * (u_ref' + surge_loop_gain * (u_ref(t0) - u)) + D_u(u_ref) and
 ///   N = m33 * yaw_rate_loop_gain * (r_cmd - r) + D_r(r_cmd), clamped to thrust_max and
 ///   yaw_torque_max and held over the step. Sway is not actuated: in a turn the body slips
-///   outwards, and it coasts past a pose it brakes for.
+///   outwards.
 /// The thesis's time trends come out of it (docs/EXPERIMENTS.md): with a high yaw_gain the
 /// turns in place are fast (the yaw rate saturates) while densely sampled arcs cost a slow
 /// down at every pose; with a low yaw_gain each rotation pose is approached exponentially,
 /// so finely sampled rotations (small rotation_sampling_angle) are slow. Its tracking
-/// errors come from the dynamic vehicle: the coast past a stopping corner, the slip on arcs.
+/// errors come from the slip and lag on arcs, the current and the navigation error.
 class TrajectoryFollower {
  public:
   /// Follows `targets` from `start` with the robot `model` (its ranges checked where it
@@ -70,7 +80,11 @@ class TrajectoryFollower {
   /// True when the last target has been reached.
   bool finished() const { return next_target_ == targets_.size(); }
 
+  /// The true state; its pose is what the tracking error measures.
   const RobotState& state() const { return state_; }
+
+  /// The pose the robot believes it has: the true one plus the navigation error.
+  Pose2 estimatedPose() const;
 
   /// Index of the target the robot drives to; targets().size() once finished.
   std::size_t nextTarget() const { return next_target_; }
@@ -88,14 +102,18 @@ class TrajectoryFollower {
   void skipReachedTargets();
   Command command() const;
   void advanceKinematic(const Command& command);
-  void advanceDynamic(const Command& command);
+  /// `previous_reference`: m/s, the surge-speed reference at the start of the step.
+  void advanceDynamic(const Command& command, double previous_reference);
 
   RobotModel model_;
   std::vector<Pose2> targets_;
   /// Per target: true for a heading target (same position as the target before it).
   std::vector<bool> heading_target_;
+  /// Per target: m along the targets from it to the next stop (0 at a stop), for braking.
+  std::vector<double> distance_to_stop_;
   RobotState state_;
   PlanarRigidBody body_;
+  EnvironmentDisturbance disturbance_;
   /// m/s: the surge-speed reference, the speed command limited by a_max.
   double speed_reference_ = 0.0;
   double start_time_ = 0.0;  ///< state_.t at the start: t = start + steps * sim_dt
