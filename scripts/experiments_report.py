@@ -77,6 +77,8 @@ class Report:
              ['0 %', '0 %']),
             ('coverage loss (planned trajectory)',
              [percent(p['coverage_loss_percent']) for p in plans], ['0 %', '0 %']),
+            ('closest approach to a wall or obstacle (driven)',
+             [metres(r['driven_min_clearance_m'], 3) for r in runs], ['-', '-']),
             ('trajectory error (sum)', [metres(r['tracking_error_sum_m']) for r in runs],
              thesis['error']),
             ('trajectory error (mean)', [metres(r['tracking_error_mean_m'], 4) for r in runs],
@@ -286,6 +288,13 @@ The thesis's two findings, turning in place is faster (the thesis: the unsmoothe
   water with exact navigation the clothoid turns' error sum is {change(calm_clothoid1[1], calm_default1[1])} than the
   arcs' ({metres(calm_clothoid1[1])} against {metres(calm_default1[1])}; tracked better than arcs: {holds(calm_clothoid1[1] < calm_default1[1])}), still not better
   than unsmoothed ({metres(calm_unsmoothed1[1])}).
+
+Clearance, which the thesis does not measure: the smoothed trajectories' arcs may run
+in the wall band (the planned trajectories come within
+{metres(plan['lake_30x30_local']['min_obstacle_clearance_m'], 3)} (Algorithm 1) and {metres(plan['lake_30x30_default']['min_obstacle_clearance_m'], 3)} (default) of a wall or obstacle), and with the
+lake's navigation error the robot drove within {metres(sim['lake_30x30_local']['driven_min_clearance_m'], 3)} and {metres(sim['lake_30x30_default']['driven_min_clearance_m'], 3)} of one; the unsmoothed
+trajectory keeps {metres(plan['lake_30x30_unsmoothed']['min_obstacle_clearance_m'], 3)} planned and {metres(sim['lake_30x30_unsmoothed']['driven_min_clearance_m'], 3)} driven. A vehicle with 0.1 m of navigation
+error needs a `wall_distance` that leaves the arcs more room than that.
 
 Where the numbers differ from the thesis, and why:
 

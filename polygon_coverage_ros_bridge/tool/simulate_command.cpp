@@ -21,6 +21,7 @@
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
 #include "trajectory_generation_tools/plot/tracking_error_plot.h"
+#include "trajectory_generation_tools/simulation/driven_path_clearance.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 
 namespace kinematic_coverage::core {
@@ -60,8 +61,8 @@ std::vector<Pose2> actualPoses(const SimulationResult& simulation) {
 }
 
 /// metrics.json of `simulate` (docs/REFERENCE.md, Metrics).
-JsonObject simulationMetrics(const SimulationResult& simulation,
-                             const TrajectoryCoverage& coverage) {
+JsonObject simulationMetrics(const SimulationResult& simulation, const TrajectoryCoverage& coverage,
+                             const DrivenPathClearance& clearance) {
   const TrackingErrorStatistics& tracking = simulation.tracking;
   const AxisErrorStatistics& axes = simulation.tracking_axes;
   const TrackingErrorStatistics& target = simulation.target_tracking;
@@ -77,8 +78,28 @@ JsonObject simulationMetrics(const SimulationResult& simulation,
       .set("tracking_error_target_sum_m", target.sum_m)
       .set("tracking_error_target_mean_m", target.mean_m)
       .set("tracking_error_target_percentiles_m", percentileObject(target));
+  if (std::isfinite(clearance.min_clearance_m)) {
+    metrics.set("driven_min_clearance_m", clearance.min_clearance_m);
+  }
+  metrics.set("driven_obstacle_time_s", clearance.obstacle_time_s)
+      .set("driven_outside_hull_time_s", clearance.outside_hull_time_s);
   setCoverageMetrics(coverage.report, metrics);
   return metrics;
+}
+
+/// The `clearance:` line of `simulate`.
+std::string clearanceSummary(const DrivenPathClearance& clearance) {
+  std::ostringstream text;
+  if (clearance.contact()) {
+    text << "CONTACT: the driven path entered an obstacle or left the hull (first at t = "
+         << clearance.first_contact_t << " s)";
+  } else if (std::isfinite(clearance.min_clearance_m)) {
+    text << "the driven path came within " << clearance.min_clearance_m
+         << " m of a wall or an obstacle";
+  } else {
+    text << "no driven pose lies inside the free area";
+  }
+  return text.str();
 }
 
 /// plot.png of `simulate` without its areas and first title line: the heatmap of the
@@ -180,7 +201,8 @@ std::string SimulateCommand::usage() {
          "  navigation_time_constant and disturbance_seed, sim_dt, sim_time_limit), and writes "
          "DIR/actual.csv (t,x,y,yaw and the tracking errors\n"
          "  error_m,error_x_m,error_y_m,target_error_m per step), DIR/metrics.json\n"
-         "  (traversal time, tracking errors, coverage of the actual poses),\n"
+         "  (traversal time, tracking errors, the driven path's clearance from walls\n"
+         "  and obstacles, coverage of the actual poses),\n"
          "  DIR/plot.png (the driven path over the heatmap), DIR/poses.png (desired\n"
          "  trajectory and actual poses) and DIR/errors.png (error histograms, normal fits\n"
          "  and errors over time). --set overrides a parameter of config/default.yaml (the value\n"
@@ -231,6 +253,10 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
       << " m; target error sum " << simulation.target_tracking.sum_m << " m ("
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
+  const DrivenPathClearance clearance =
+      measureDrivenPathClearance(simulation.steps, cleaned.free_area, mission.parameters.sim_dt);
+  out << "clearance: " << clearanceSummary(clearance) << std::endl;
+
   const std::vector<Pose2> actual = actualPoses(simulation);
   const TrajectoryCoverage coverage =
       measureTrajectoryCoverage(cleaned.free_area, offset.parts, mission.parameters, actual);
@@ -242,7 +268,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const std::string actual_path = (dir / "actual.csv").string();
   const std::string metrics_path = (dir / "metrics.json").string();
   writeTextFile(actual_path, actualCsv(simulation.steps));
-  simulationMetrics(simulation, coverage).write(metrics_path);
+  simulationMetrics(simulation, coverage, clearance).write(metrics_path);
   writeSimulationFigures(
       dir,
       "Simulated robot on " + std::filesystem::path(trajectory_path).filename().string() + " (" +
@@ -251,6 +277,13 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
 
   std::ostringstream notes;
   for (const std::string& warning : cleaned.warnings) notes << "warning: " << warning << "\n";
+  if (clearance.contact()) {
+    notes << "warning: the robot drove into an obstacle or out through the hull, first at t = "
+          << clearance.first_contact_t << " s at (" << clearance.first_contact.x() << ", "
+          << clearance.first_contact.y() << "): " << clearance.obstacle_time_s
+          << " s inside obstacles, " << clearance.outside_hull_time_s
+          << " s outside the hull; a larger wall_distance or a calmer lake is needed\n";
+  }
   err << notes.str();
   out << "wrote " << actual_path << " " << metrics_path << " " << (dir / "plot.png").string() << " "
       << (dir / "poses.png").string() << " " << (dir / "errors.png").string() << "\n";

@@ -1,4 +1,5 @@
 kc_add_gtest(test_simulation
+  test/simulation/driven_path_clearance_test.cpp
   test/simulation/environment_disturbance_test.cpp
   test/simulation/gauss_markov_process_test.cpp
   test/simulation/path_distance_test.cpp

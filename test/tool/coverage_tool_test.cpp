@@ -525,6 +525,10 @@ TEST(CoverageTool, SimulatesPlansTrajectoryAndWritesItsFiles) {
     keys.push_back(key);
   }
   keys.insert(keys.end(), percentiles.begin(), percentiles.end());
+  for (const char* key :
+       {"driven_min_clearance_m", "driven_obstacle_time_s", "driven_outside_hull_time_s"}) {
+    keys.push_back(key);
+  }
   for (const char* key : {"coverage_percent", "coverage_loss_percent", "reachable_coverage_percent",
                           "unseen_reachable_area_m2", "unreachable_area_m2"}) {
     keys.push_back(key);
@@ -536,6 +540,11 @@ TEST(CoverageTool, SimulatesPlansTrajectoryAndWritesItsFiles) {
   EXPECT_LE(metric(json, "tracking_error_y_mean_m"), metric(json, "tracking_error_mean_m"));
   EXPECT_GE(metric(json, "tracking_error_target_sum_m"), metric(json, "tracking_error_sum_m"));
   EXPECT_GT(metric(json, "reachable_coverage_percent"), 99.0);
+  // The driven path keeps off the walls and obstacles (the smoothed arcs may enter the wall
+  // band: the planned trajectory comes within 0.1 m of an obstacle here).
+  EXPECT_GT(metric(json, "driven_min_clearance_m"), 0.0);
+  EXPECT_EQ(metric(json, "driven_obstacle_time_s"), 0.0);
+  EXPECT_EQ(metric(json, "driven_outside_hull_time_s"), 0.0);
   double previous = 0.0;
   for (const char* percentile : {"1", "5", "10", "25", "50", "75", "90", "95", "99"}) {
     const double value = metric(json, percentile);
@@ -569,6 +578,31 @@ TEST(CoverageTool, SimulatesPlansTrajectoryAndWritesItsFiles) {
   ASSERT_EQ(drift.exit_status, 0);
   EXPECT_GT(metric(readText(out_dir + "/metrics.json"), "tracking_error_mean_m"),
             5.0 * metric(json, "tracking_error_mean_m"));
+}
+
+TEST(CoverageTool, SimulateWarnsLoudlyWhenTheRobotHitsAnObstacle) {
+  // A trajectory straight through the obstacle (8..12, 8..12): the run is valid, but the
+  // contact is the first thing the output says about it.
+  const std::string path = writeMission("simulate_contact", mission(kSquareWithHole));
+  const std::string through = writeTrajectory("simulate_through", "x,y,yaw\n5,10,0\n15,10,0\n");
+  const std::string out_dir = scratchDir() + "/simulate_contact_out";
+  std::filesystem::remove_all(out_dir);
+  const ToolRun run =
+      runTool("simulate '" + path + "' --trajectory '" + through + "' --out '" + out_dir + "'");
+  ASSERT_EQ(run.exit_status, 0);
+  ASSERT_EQ(run.err_lines.size(), 1u);
+  EXPECT_EQ(run.err_lines[0].rfind("warning: the robot drove into an obstacle or out through the "
+                                   "hull, first at t = ",
+                                   0),
+            0u)
+      << run.err_lines[0];
+  EXPECT_NE(run.out.find("clearance: CONTACT: the driven path entered an obstacle"),
+            std::string::npos)
+      << run.out;
+  const std::string json = readText(out_dir + "/metrics.json");
+  EXPECT_EQ(metric(json, "driven_min_clearance_m"), 0.0);
+  // 4 m of obstacle at v_max = 0.5 m/s.
+  EXPECT_GE(metric(json, "driven_obstacle_time_s"), 7.5);
 }
 
 TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {

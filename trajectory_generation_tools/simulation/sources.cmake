@@ -1,5 +1,6 @@
 kc_add_stage_library(kc_simulation
   SOURCES
+    trajectory_generation_tools/simulation/driven_path_clearance.cpp
     trajectory_generation_tools/simulation/environment_disturbance.cpp
     trajectory_generation_tools/simulation/gauss_markov_process.cpp
     trajectory_generation_tools/simulation/path_distance.cpp
