@@ -107,6 +107,15 @@ calm() {
 }
 for strategy in local default clothoid unsmoothed; do calm "$strategy" dynamic; done
 for strategy in local unsmoothed; do calm "$strategy" kinematic; done
+# How the hunting near the poses depends on position_tolerance against the navigation
+# error: experiment 1's robot in the lake with larger tolerances (a sensitivity study; the
+# tables above keep the default 0.05 m).
+for tolerance in 0.1 0.2 0.3; do
+  for strategy in local unsmoothed; do
+    resimulate "lake_30x30_${strategy}_tolerance_$tolerance" "lake_30x30_$strategy" lake_30x30 \
+      "${robot_high_gain[@]}" "${lake[@]}" --set position_tolerance=$tolerance
+  done
+done
 
 if $print_only; then
   /usr/bin/python3 "$root/scripts/experiments_report.py" "$out"

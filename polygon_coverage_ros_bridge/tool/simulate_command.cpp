@@ -22,6 +22,7 @@
 #include "trajectory_generation_tools/plot/coverage_plot.h"
 #include "trajectory_generation_tools/plot/tracking_error_plot.h"
 #include "trajectory_generation_tools/simulation/driven_path_clearance.h"
+#include "trajectory_generation_tools/simulation/robot_model_warnings.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 
 namespace kinematic_coverage::core {
@@ -243,8 +244,8 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
       << std::endl;
 
   stage_start = std::chrono::steady_clock::now();
-  const SimulationResult simulation =
-      RobotSimulator(robotModelOf(mission.parameters)).simulate(desired);
+  const RobotModel robot = robotModelOf(mission.parameters);
+  const SimulationResult simulation = RobotSimulator(robot).simulate(desired);
   const TrackingErrorStatistics& tracking = simulation.tracking;
   out << "simulate: the " << mission.parameters.vehicle_model << " vehicle reached the last of "
       << desired.size() << " poses after " << simulation.traversal_time_s << " s in "
@@ -277,6 +278,9 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
 
   std::ostringstream notes;
   for (const std::string& warning : cleaned.warnings) notes << "warning: " << warning << "\n";
+  for (const std::string& warning : robotModelWarnings(robot)) {
+    notes << "warning: " << warning << "\n";
+  }
   if (clearance.contact()) {
     notes << "warning: the robot drove into an obstacle or out through the hull, first at t = "
           << clearance.first_contact_t << " s at (" << clearance.first_contact.x() << ", "

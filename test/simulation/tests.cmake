@@ -4,6 +4,7 @@ kc_add_gtest(test_simulation
   test/simulation/gauss_markov_process_test.cpp
   test/simulation/path_distance_test.cpp
   test/simulation/planar_rigid_body_test.cpp
+  test/simulation/robot_model_warnings_test.cpp
   test/simulation/standard_normal_source_test.cpp
   test/simulation/tracking_error_statistics_test.cpp
   test/simulation/trajectory_follower_test.cpp

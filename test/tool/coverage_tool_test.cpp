@@ -603,6 +603,18 @@ TEST(CoverageTool, SimulateWarnsLoudlyWhenTheRobotHitsAnObstacle) {
   EXPECT_EQ(metric(json, "driven_min_clearance_m"), 0.0);
   // 4 m of obstacle at v_max = 0.5 m/s.
   EXPECT_GE(metric(json, "driven_obstacle_time_s"), 7.5);
+
+  // A navigation error larger than the position tolerance: the robot will hunt.
+  const std::string beside = writeTrajectory("simulate_beside", "x,y,yaw\n5,4,0\n15,4,0\n");
+  const ToolRun noisy = runTool("simulate '" + path + "' --trajectory '" + beside + "' --out '" +
+                                out_dir + "' --set navigation_sigma=0.1");
+  ASSERT_EQ(noisy.exit_status, 0);
+  ASSERT_EQ(noisy.err_lines.size(), 1u);
+  EXPECT_EQ(
+      noisy.err_lines[0].rfind(
+          "warning: position_tolerance = 0.05 m is less than 3 x navigation_sigma = 0.3 m", 0),
+      0u)
+      << noisy.err_lines[0];
 }
 
 TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "kinematic_coverage/PlanStatus.h"
@@ -11,6 +12,7 @@
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
+#include "trajectory_generation_tools/simulation/robot_model_warnings.h"
 
 namespace kinematic_coverage::nodes {
 namespace {
@@ -71,7 +73,11 @@ void AuvSimulatorNode::onTrajectory(const geometry_msgs::PoseArray::ConstPtr& me
     } else {
       start.pose = poses.front();
     }
-    follower_.emplace(core::robotModelOf(parameters), poses, start);
+    const core::RobotModel robot = core::robotModelOf(parameters);
+    for (const std::string& warning : core::robotModelWarnings(robot)) {
+      ROS_WARN("auv_simulator: %s", warning.c_str());
+    }
+    follower_.emplace(robot, poses, start);
     trajectory_stamp_ = message->header.stamp;
     trajectory_start_s_ = start.t;
     time_limit_s_ = parameters.sim_time_limit;
