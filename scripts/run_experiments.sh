@@ -96,6 +96,9 @@ for strategy in local default clothoid unsmoothed; do
     "${lake[@]}"
 done
 run lake_30x30_current lake_30x30 "${default_smoothing[@]}" "${current[@]}" "${lake[@]}"
+# The default strategy keeping its turns three navigation errors off the walls and obstacles.
+run lake_30x30_clearance lake_30x30 "${default_smoothing[@]}" --set smoothing_clearance=0.3 \
+  "${robot_high_gain[@]}" "${lake[@]}"
 # The same trajectories in calm water with exact navigation, with the dynamic vehicle and
 # with the first, kinematic one, for comparison.
 calm() {

@@ -18,6 +18,13 @@ void requirePositive(const char* name, double value, const char* unit) {
   }
 }
 
+void requireNonNegative(const char* name, double value, const char* unit) {
+  if (!(std::isfinite(value) && value >= 0.0)) {
+    throw InvalidInputError(std::string(name) + " = " + formatNumber(value) +
+                            " is out of range: it must be a finite number >= 0 (" + unit + ")");
+  }
+}
+
 /// A share: 0 <= value < upper, or value <= upper where `upper_included`; `note` ends the
 /// message.
 void requireShare(const char* name, double value, double upper, bool upper_included,
@@ -39,14 +46,8 @@ void requireOpenAngle(const char* name, double value) {
 
 /// The current's fluctuation, the navigation error and their seed.
 void validateDisturbance(const PlannerParameters& p) {
-  for (const auto& [name, value, unit] :
-       {std::tuple<const char*, double, const char*>{"current_sigma", p.current_sigma, "m/s"},
-        {"navigation_sigma", p.navigation_sigma, "m"}}) {
-    if (!(std::isfinite(value) && value >= 0.0)) {
-      throw InvalidInputError(std::string(name) + " = " + formatNumber(value) +
-                              " is out of range: it must be a finite number >= 0 (" + unit + ")");
-    }
-  }
+  requireNonNegative("current_sigma", p.current_sigma, "m/s");
+  requireNonNegative("navigation_sigma", p.navigation_sigma, "m");
   requirePositive("current_time_constant", p.current_time_constant, "s");
   requirePositive("navigation_time_constant", p.navigation_time_constant, "s");
   const double seed = p.disturbance_seed;
@@ -92,10 +93,7 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   requirePositive("v_max", p.v_max, "m/s");
   requirePositive("a_max", p.a_max, "m/s^2");
   requirePositive("yaw_rate_max", p.yaw_rate_max, "rad/s");
-  if (!(std::isfinite(p.wall_distance) && p.wall_distance >= 0.0)) {
-    throw InvalidInputError("wall_distance = " + formatNumber(p.wall_distance) +
-                            " is out of range: it must be a finite number >= 0 (m)");
-  }
+  requireNonNegative("wall_distance", p.wall_distance, "m");
   choiceOf("sensor_model", p.sensor_model, kSensorModels);
   requireOpenAngle("lateral_fov", p.lateral_fov);
   requireOpenAngle("onward_fov", p.onward_fov);
@@ -107,6 +105,7 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies);
   choiceOf("turn_curve", p.turn_curve, kTurnCurves);
   requirePositive("curvature_rate_max", p.curvature_rate_max, "1/m^2");
+  requireNonNegative("smoothing_clearance", p.smoothing_clearance, "m");
   if (!(std::isfinite(p.min_turning_radius) && p.min_turning_radius >= 0.0 &&
         p.min_turning_radius <= p.turning_radius)) {
     throw InvalidInputError(
@@ -128,15 +127,8 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   requireShare("boundary_simplification", p.boundary_simplification, 0.5, true,
                " (a share of the sweep distance)");
   requireShare("replanning_sliver_fraction", p.replanning_sliver_fraction, 1.0, false);
-  for (const auto& [name, value, unit] :
-       {std::tuple<const char*, double, const char*>{"replanning_min_area", p.replanning_min_area,
-                                                     "m^2"},
-        {"replanning_simplify_tolerance", p.replanning_simplify_tolerance, "m"}}) {
-    if (!(std::isfinite(value) && value >= 0.0)) {
-      throw InvalidInputError(std::string(name) + " = " + formatNumber(value) +
-                              " is out of range: it must be a finite number >= 0 (" + unit + ")");
-    }
-  }
+  requireNonNegative("replanning_min_area", p.replanning_min_area, "m^2");
+  requireNonNegative("replanning_simplify_tolerance", p.replanning_simplify_tolerance, "m");
   requirePositive("alpha", p.alpha, "m");
   choiceOf("vehicle_model", p.vehicle_model, kVehicleModels);
   validateRigidBody(p);

@@ -46,6 +46,7 @@ struct PlannerParameters {
   double arc_sampling_distance = 0.1;      ///< m
   double rotation_sampling_angle = 0.2;    ///< rad
   std::string turn_curve = "arc";          ///< "arc" or "clothoid"
+  double smoothing_clearance = 0.0;        ///< m: arcs' least distance to walls and obstacles
   double curvature_rate_max = 2.0;         ///< 1/m^2, clothoid turns only
   std::string replanning_method = "footprint";  ///< "convex_hull", "concave_hull", "footprint"
   double replanning_sliver_fraction =

@@ -31,6 +31,7 @@ GlobalSmoothingOptions globalSmoothingOptions(const PlannerParameters& p) {
   GlobalSmoothingOptions options;
   options.vehicle = vehicleLimits(p);
   options.min_turning_radius = p.min_turning_radius > 0.0 ? p.min_turning_radius : p.turning_radius;
+  options.clearance = p.smoothing_clearance;
   const FrustumSensor sensor = FrustumSensor::fromOptions(sensorOptions(p));
   if (p.coverage_preserving) options.preserved_sensor = sensor;
   if (choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies) ==

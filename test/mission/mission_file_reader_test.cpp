@@ -120,6 +120,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"yaw_tolerance", "0.1"},
       {"current_x", "-0.05"},
       {"current_y", "0.15"},
+      {"smoothing_clearance", "0.25"},
       {"current_sigma", "0.02"},
       {"current_time_constant", "30"},
       {"navigation_sigma", "0.1"},
@@ -185,6 +186,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.yaw_tolerance, 0.1);
   EXPECT_EQ(p.current_x, -0.05);
   EXPECT_EQ(p.current_y, 0.15);
+  EXPECT_EQ(p.smoothing_clearance, 0.25);
   EXPECT_EQ(p.current_sigma, 0.02);
   EXPECT_EQ(p.current_time_constant, 30.0);
   EXPECT_EQ(p.navigation_sigma, 0.1);

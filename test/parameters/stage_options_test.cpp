@@ -63,6 +63,11 @@ TEST(StageOptions, TheDefaultsMapToTheDocumentedStageOptions) {
   EXPECT_EQ(trajectory.global.max_turning_radius,
             std::max(p.turning_radius, p.v_max / p.yaw_rate_max));
 
+  EXPECT_EQ(trajectory.global.clearance, 0.0);
+  PlannerParameters kept = p;
+  kept.smoothing_clearance = 0.4;
+  EXPECT_EQ(trajectoryOptionsOf(kept).global.clearance, 0.4);
+
   const RobotModel robot = robotModelOf(p);
   EXPECT_EQ(robot.vehicle_model, VehicleModel::kDynamic);
   EXPECT_EQ(robot.body.mass, p.mass);

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "test/smoothing/smoothing_oracle.h"
 #include "test/support/random_polygons.h"
 
@@ -27,6 +29,23 @@ TEST(BoundaryEdgeIndex, TouchingIsACollision) {
   EXPECT_TRUE(index.arcClear(PathPrimitive::arc({5, 5}, 4.999, -M_PI, 0.5)));
   EXPECT_FALSE(index.inside({11, 5}));
   EXPECT_FALSE(index.inside({-1e12, 5}));
+}
+
+TEST(BoundaryEdgeIndex, AClearanceKeepsPrimitivesThatFarFromTheEdges) {
+  PolygonWithHoles area;
+  area.hull = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  area.holes = {{{4, 4}, {4, 6}, {6, 6}, {6, 4}}};
+  const BoundaryEdgeIndex index(area, 0.5);
+  EXPECT_EQ(index.clearance(), 0.5);
+  EXPECT_TRUE(index.segmentClear({1, 0.6}, {3, 0.6}));   // 0.6 m from the hull
+  EXPECT_FALSE(index.segmentClear({1, 0.4}, {3, 0.4}));  // 0.4 m
+  EXPECT_FALSE(index.segmentClear({3.6, 1}, {3.6, 9}));  // 0.4 m from the obstacle
+  // Around the obstacle, whose corners lie sqrt(2) m from its centre: 0.6 m and 0.4 m off.
+  EXPECT_TRUE(index.arcClear(PathPrimitive::arc({5, 5}, std::sqrt(2.0) + 0.6, 0.0, M_PI)));
+  EXPECT_FALSE(index.arcClear(PathPrimitive::arc({5, 5}, std::sqrt(2.0) + 0.4, 0.0, M_PI)));
+  EXPECT_EQ(BoundaryEdgeIndex(area).clearance(), kContactTolerance);
+  EXPECT_THROW(BoundaryEdgeIndex(area, -0.1), InvalidInputError);
+  EXPECT_THROW(BoundaryEdgeIndex(area, std::nan("")), InvalidInputError);
 }
 
 TEST(BoundaryEdgeIndex, AgreesWithBruteForceOnRandomMaps) {

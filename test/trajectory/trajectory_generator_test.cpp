@@ -32,7 +32,8 @@ std::vector<Pose2> randomLawnmower(std::mt19937& rng, int lanes) {
   return waypoints;
 }
 
-PolygonWithHoles boundingHull(const std::vector<Pose2>& waypoints) {
+/// The waypoints' bounding box grown by `margin` m.
+PolygonWithHoles boundingHull(const std::vector<Pose2>& waypoints, double margin = 5.0) {
   double x0 = waypoints.front().x, x1 = x0, y0 = waypoints.front().y, y1 = y0;
   for (const Pose2& p : waypoints) {
     x0 = std::min(x0, p.x);
@@ -41,7 +42,10 @@ PolygonWithHoles boundingHull(const std::vector<Pose2>& waypoints) {
     y1 = std::max(y1, p.y);
   }
   PolygonWithHoles area;
-  area.hull = {{x0 - 5, y0 - 5}, {x1 + 5, y0 - 5}, {x1 + 5, y1 + 5}, {x0 - 5, y1 + 5}};
+  area.hull = {{x0 - margin, y0 - margin},
+               {x1 + margin, y0 - margin},
+               {x1 + margin, y1 + margin},
+               {x0 - margin, y1 + margin}};
   return area;
 }
 
@@ -160,6 +164,45 @@ TEST(TrajectoryGenerator, ClothoidTurnsKeepTheArcsGuaranteesOnRandomLawnmowers) 
     if (::testing::Test::HasFailure()) return;
   }
   EXPECT_GT(clothoids, 100);
+}
+
+TEST(TrajectoryGenerator, SmoothingClearanceKeepsEveryTurnOffTheWalls) {
+  // Lanes ending 1.5 m from the hull, turning radii up to 2.5 m: with smoothing_clearance
+  // c < 1.5 m no primitive comes within c of the hull under any strategy or turn curve
+  // (the legs keep 1.5 m), corners that cannot keep it stay sharp, and a larger clearance
+  // never smooths more corners than none.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> radius(0.5, 2.5);
+  int blocked = 0;
+  for (int trial = 0; trial < 15; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const std::vector<Pose2> waypoints = randomLawnmower(rng, 5);
+    const PolygonWithHoles area = boundingHull(waypoints, 1.5);
+    const double turning_radius = radius(rng);
+    for (const char* strategy : {"local", "global", "coverage_safe"}) {
+      for (const char* curve : {"arc", "clothoid"}) {
+        PlannerParameters parameters;
+        parameters.turning_radius = turning_radius;
+        parameters.smoothing_strategy = strategy;
+        parameters.turn_curve = curve;
+        const GeneratedTrajectory free =
+            TrajectoryGenerator(trajectoryOptionsOf(parameters)).generate(waypoints, area);
+        for (const double clearance : {0.5, 1.0}) {
+          parameters.smoothing_clearance = clearance;
+          const GeneratedTrajectory kept =
+              TrajectoryGenerator(trajectoryOptionsOf(parameters)).generate(waypoints, area);
+          EXPECT_NO_THROW(validatePrimitivePath(kept.path)) << strategy << " " << curve;
+          EXPECT_GT(kept.min_obstacle_clearance_m, clearance - 2.0 * kClothoidDistanceTolerance)
+              << strategy << " " << curve << " " << clearance;
+          EXPECT_LE(kept.statistics.turns_smoothed, free.statistics.turns_smoothed)
+              << strategy << " " << curve << " " << clearance;
+          if (kept.statistics.turns_smoothed < free.statistics.turns_smoothed) ++blocked;
+        }
+      }
+    }
+    if (::testing::Test::HasFailure()) return;
+  }
+  EXPECT_GT(blocked, 20);
 }
 
 }  // namespace

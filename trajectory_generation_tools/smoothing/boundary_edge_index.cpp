@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
@@ -92,7 +93,12 @@ double arcSegmentDistance(const PathPrimitive& arc, const Point2& p, const Point
 
 }  // namespace
 
-BoundaryEdgeIndex::BoundaryEdgeIndex(const PolygonWithHoles& free_area) {
+BoundaryEdgeIndex::BoundaryEdgeIndex(const PolygonWithHoles& free_area, double clearance) {
+  if (!std::isfinite(clearance) || clearance < 0.0) {
+    throw InvalidInputError("smoothing clearance must be a finite number >= 0, got " +
+                            std::to_string(clearance));
+  }
+  clearance_ = std::max(kContactTolerance, clearance);
   auto add_ring = [this](const Ring& ring) {
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
       const Point2& from = ring[i];
@@ -116,7 +122,7 @@ BoundaryEdgeIndex::BoundaryEdgeIndex(const PolygonWithHoles& free_area) {
 
 void BoundaryEdgeIndex::edgesNear(const Point2& low, const Point2& high,
                                   std::vector<int>* ids) const {
-  const Point2 margin = Point2::Constant(kContactTolerance);
+  const Point2 margin = Point2::Constant(clearance_);
   grid_.collect(grid_.cellsOf(low - margin, high + margin), ids);
 }
 
@@ -124,7 +130,7 @@ bool BoundaryEdgeIndex::segmentClear(const Point2& a, const Point2& b) const {
   std::vector<int> ids;
   edgesNear(a.cwiseMin(b), a.cwiseMax(b), &ids);
   for (const int id : ids) {
-    if (segmentSegmentDistance(a, b, from_[id], to_[id]) <= kContactTolerance) {
+    if (segmentSegmentDistance(a, b, from_[id], to_[id]) <= clearance_) {
       return false;
     }
   }
@@ -136,7 +142,7 @@ bool BoundaryEdgeIndex::arcClear(const PathPrimitive& arc) const {
   std::vector<int> ids;
   edgesNear(arc.centre() - reach, arc.centre() + reach, &ids);
   for (const int id : ids) {
-    if (arcSegmentDistance(arc, from_[id], to_[id]) <= kContactTolerance) {
+    if (arcSegmentDistance(arc, from_[id], to_[id]) <= clearance_) {
       return false;
     }
   }

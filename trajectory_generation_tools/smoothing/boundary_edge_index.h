@@ -22,13 +22,15 @@ constexpr double kContactTolerance = 1e-9;
 class BoundaryEdgeIndex {
  public:
   /// Indexes every edge of the hull and holes. An empty hull stands for the unbounded plane
-  /// (only the holes are obstacles). Rings need not be closed explicitly. Throws
-  /// InvalidInputError for a non-finite coordinate.
-  explicit BoundaryEdgeIndex(const PolygonWithHoles& free_area);
+  /// (only the holes are obstacles). Rings need not be closed explicitly. `clearance` (m,
+  /// parameter smoothing_clearance) is the distance a clear primitive keeps from every
+  /// edge; below kContactTolerance the contact tolerance applies. Throws InvalidInputError
+  /// for a non-finite coordinate or a negative or non-finite clearance.
+  explicit BoundaryEdgeIndex(const PolygonWithHoles& free_area, double clearance = 0.0);
 
-  /// True when the closed segment [a, b] keeps more than kContactTolerance from every edge.
+  /// True when the closed segment [a, b] keeps more than clearance() from every edge.
   bool segmentClear(const Point2& a, const Point2& b) const;
-  /// True when the arc keeps more than kContactTolerance from every edge.
+  /// True when the arc keeps more than clearance() from every edge.
   bool arcClear(const PathPrimitive& arc) const;
   /// Metres a clothoid's chords, which primitiveClear tests, may stray from it.
   static constexpr double kClothoidChordTolerance = 1e-5;
@@ -42,14 +44,18 @@ class BoundaryEdgeIndex {
   /// Number of indexed edges.
   std::size_t edgeCount() const { return from_.size(); }
 
+  /// m: the distance a clear primitive keeps from every edge (at least kContactTolerance).
+  double clearance() const { return clearance_; }
+
  private:
-  /// The edges registered in the cells of the box [low, high] grown by kContactTolerance,
+  /// The edges registered in the cells of the box [low, high] grown by clearance(),
   /// so that edges just outside the box still count: sorted, distinct.
   void edgesNear(const Point2& low, const Point2& high, std::vector<int>* ids) const;
 
   std::vector<Point2> from_;  ///< edge i runs from from_[i] to to_[i]
   std::vector<Point2> to_;
   bool has_hull_ = false;
+  double clearance_ = kContactTolerance;
   EdgeGrid grid_;
 };
 

@@ -68,7 +68,7 @@ void requirePositive(const char* name, double value) {
 
 GlobalPathSmoother::GlobalPathSmoother(const PolygonWithHoles& free_area,
                                        const GlobalSmoothingOptions& options)
-    : free_area_(free_area), index_(free_area), options_(options) {
+    : free_area_(free_area), index_(free_area, options.clearance), options_(options) {
   requirePositive("turning_radius", options.vehicle.turning_radius);
   requirePositive("min_turning_radius", options.min_turning_radius);
   requirePositive("v_max", options.vehicle.v_max);

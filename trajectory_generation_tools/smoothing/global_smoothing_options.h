@@ -43,6 +43,9 @@ struct GlobalSmoothingOptions {
   /// end at and sees the strip beyond their ends, which inner arcs cut. The `global` and
   /// `local` strategies keep the candidates they were measured with (docs/BENCHMARKS.md).
   bool bulb_turns = false;
+  /// m (>= 0): the distance every arc and leg piece keeps from the hull and holes
+  /// (smoothing_clearance); 0: only no contact, as the thesis.
+  double clearance = 0.0;
 
   /// Coverage-safe smoothing (`smoothing_strategy: coverage_safe`) for `sensor` and the
   /// planner's `wall_distance`: the safe sensor and its candidates, bulb turns included.

@@ -9,8 +9,9 @@
 
 namespace kinematic_coverage::core {
 
-PathSmoother::PathSmoother(const PolygonWithHoles& free_area, double turning_radius)
-    : index_(free_area), radius_(turning_radius) {
+PathSmoother::PathSmoother(const PolygonWithHoles& free_area, double turning_radius,
+                           double clearance)
+    : index_(free_area, clearance), radius_(turning_radius) {
   if (!std::isfinite(turning_radius) || turning_radius <= 0.0) {
     throw InvalidInputError("turning_radius must be a positive finite number, got " +
                             std::to_string(turning_radius));

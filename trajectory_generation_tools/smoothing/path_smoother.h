@@ -42,9 +42,10 @@ struct SmoothedPath {
 class PathSmoother {
  public:
   /// Collisions are checked against the raw hull and holes of `free_area` (an empty hull:
-  /// the unbounded plane). Throws InvalidInputError for a turning radius that is not a
-  /// positive finite number or a non-finite coordinate.
-  PathSmoother(const PolygonWithHoles& free_area, double turning_radius);
+  /// the unbounded plane), keeping `clearance` m from them (smoothing_clearance; 0: only
+  /// no contact). Throws InvalidInputError for a turning radius that is not a positive
+  /// finite number, a negative clearance or a non-finite coordinate.
+  PathSmoother(const PolygonWithHoles& free_area, double turning_radius, double clearance = 0.0);
 
   /// The smoothed path through `waypoints`. Duplicate waypoints are dropped and straight
   /// ones (heading change <= kStraightTurnTolerance) merged into their legs

@@ -39,7 +39,9 @@ SmoothedPath TrajectoryGenerator::smoothedPath(const std::vector<Pose2>& waypoin
     // may lose coverage, is no alternative.
     return GlobalPathSmoother(free_area, options_.global).smooth(waypoints);
   }
-  SmoothedPath local = PathSmoother(free_area, options_.vehicle.turning_radius).smooth(waypoints);
+  SmoothedPath local =
+      PathSmoother(free_area, options_.vehicle.turning_radius, options_.global.clearance)
+          .smooth(waypoints);
   if (options_.strategy == SmoothingStrategy::kLocal) return local;
   SmoothedPath global = GlobalPathSmoother(free_area, options_.global).smooth(waypoints);
   if (options_.global.preserved_sensor) return global;
