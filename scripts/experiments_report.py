@@ -179,7 +179,9 @@ simulation step: its sum, mean and percentiles; the error to the targeted trajec
 piece; the mean x and y parts) and the coverage loss of the poses the robot actually
 drove. The robot meets the lake's disturbances (below); the same trajectories in calm
 water with exact navigation are compared at the end of each experiment. The trend
-assertions of `test/simulation/thesis_trends_test.cpp` are made under Algorithm 1.
+assertions of `test/simulation/thesis_trends_test.cpp` are made under Algorithm 1 (the
+clothoid turns' under the default strategy), in the lake or in calm water as each
+statement below says.
 
 ## The robot model
 
