@@ -134,15 +134,10 @@ class Report:
                 for run in runs) + ' |\n'
         return text
 
-    def calm(self, mission):
-        """Traversal time and error sum of the runs of STRATEGIES in calm water with exact
-        navigation (dynamic vehicle), in order."""
-        runs = [self.sim[f'{mission}_{strategy}_calm_dynamic'] for strategy, _ in STRATEGIES]
-        return [(r['traversal_time_s'], r['tracking_error_sum_m']) for r in runs]
-
-    def trends(self, mission):
-        """Traversal time and error sum of the runs of STRATEGIES, in order."""
-        runs = [self.sim[f'{mission}_{strategy}'] for strategy, _ in STRATEGIES]
+    def trends(self, mission, suffix=''):
+        """Traversal time and error sum of the runs of STRATEGIES, in order; `suffix`
+        '_calm_dynamic' for the runs in calm water with exact navigation."""
+        runs = [self.sim[f'{mission}_{strategy}{suffix}'] for strategy, _ in STRATEGIES]
         return [(r['traversal_time_s'], r['tracking_error_sum_m']) for r in runs]
 
     def text(self):
@@ -150,8 +145,8 @@ class Report:
         local1, default1, clothoid1, unsmoothed1 = self.trends('lake_30x30')
         local2, default2, clothoid2, unsmoothed2 = self.trends('lake_7_5')
         local3, default3, clothoid3, unsmoothed3 = self.trends('lake_7_5_high_gain')
-        calm_local1, calm_default1, calm_clothoid1, calm_unsmoothed1 = self.calm('lake_30x30')
-        calm_local2, calm_default2, calm_clothoid2, calm_unsmoothed2 = self.calm('lake_7_5')
+        calm_local1, calm_default1, calm_clothoid1, calm_unsmoothed1 = self.trends('lake_30x30', '_calm_dynamic')
+        calm_local2, calm_default2, calm_clothoid2, calm_unsmoothed2 = self.trends('lake_7_5', '_calm_dynamic')
         calm, drift = sim['lake_30x30_default'], sim['lake_30x30_current']
 
         def holds(condition):
