@@ -82,6 +82,8 @@ class Report:
              ['0 %', '0 %']),
             ('coverage loss (planned trajectory)',
              [percent(p['coverage_loss_percent']) for p in plans], ['0 %', '0 %']),
+            ('unseen reachable area (planned trajectory)',
+             [f"{p['unseen_reachable_area_m2']:.3f} m^2" for p in plans], ['-', '-']),
             ('closest approach to a wall or obstacle (driven)',
              [metres(r['driven_min_clearance_m'], 3) for r in runs], ['-', '-']),
             ('trajectory error (sum)', [metres(r['tracking_error_sum_m']) for r in runs],
@@ -163,7 +165,7 @@ Lake Zurich (Chapter 4, Tables 4.1 to 4.3). Here the vehicle is the robot model 
 times with `coverage_tool plan`: smoothed by the thesis's Algorithm 1
 (`smoothing_strategy: local`), smoothed with the default strategy (`coverage_safe`: every
 corner's smoothing chosen jointly to minimise the traversal time while the path as a whole
-still sees what the unsmoothed path sees), the same with continuous-curvature turns
+still sees the reachable area the unsmoothed path sees), the same with continuous-curvature turns
 (`turn_curve: clothoid`: clothoid-arc-clothoid instead of an arc between two legs, where
 the legs leave room and the turn comes no nearer an obstacle and sees no less), and
 unsmoothed (`smoothing: false`), all four from the same waypoints (with the default
@@ -400,6 +402,14 @@ lake.
             ('turns smoothed', lambda run, p: f"{p['turns_smoothed']} / {p['turns_total']}"),
         ])
         text += f'''
+The smoothed trajectories see less of the lake bottom as planned than the unsmoothed one
+({percent(plan['lake_7_5_default']['coverage_loss_percent'])} unseen with the default strategy against {percent(plan['lake_7_5_unsmoothed']['coverage_loss_percent'])}), almost all of it outside the
+reachable area ({plan['lake_7_5_default']['unseen_reachable_area_m2']:.3f} m^2 of the reachable area unseen, of {plan['lake_7_5_default']['unreachable_area_m2']:.2f} m^2 outside it): here the
+footprint is 1.72 m wide and 0.21 m long, so the reachable area reaches only 0.11 m
+beyond the 0.4 m wall distance, while the unsmoothed path, running along the walls
+between lanes and turning in place at the corners, sees more of the wall band. No stage
+guards the area beyond the reachable area (docs/REFERENCE.md, Reachable area).
+
 The thesis's reversal, the smoothed trajectory now the faster one (the thesis: 0.76 of the
 unsmoothed run's time):
 
