@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Simulated-robot rostest: auv_simulator follows the lake trajectory. `pose` stays near the
-trajectory, `visited` grows oldest first from the trajectory's first pose, the robot
-arrives at the end; a newer trajectory restarts it from where it is with the history
+trajectory, `visited` grows oldest first from the trajectory's first pose,
+`estimated_pose` strays from `pose` by the navigation error, the robot arrives at the end; a newer trajectory restarts it from where it is with the history
 kept, and an empty or older trajectory is refused without stopping the node."""
 
 import math
@@ -46,6 +46,7 @@ class AuvSimulatorTest(unittest.TestCase):
         rospy.init_node('auv_simulator_test')
         trajectory = Collector('trajectory', PoseArray)
         pose = Collector('pose', PoseStamped)
+        estimated = Collector('estimated_pose', PoseStamped)
         visited = Collector('visited', PoseArray)
         status = Collector('auv_simulator/status', PlanStatus)
         self.assertTrue(trajectory.wait_for(1, TIMEOUT_S), 'no trajectory')
@@ -59,6 +60,7 @@ class AuvSimulatorTest(unittest.TestCase):
         for message in pose.messages:
             self.assertEqual(message.header.frame_id, 'map')
             self.assertLess(distance_to_path(position(message.pose), planned), 0.5)
+        self.check_estimated_poses(pose.messages, estimated.messages)
         end = pose.messages[-1].pose.position
         goal = planned[-1].position
         self.assertLess(math.hypot(end.x - goal.x, end.y - goal.y), 0.5)
@@ -116,6 +118,17 @@ class AuvSimulatorTest(unittest.TestCase):
         self.assertGreater(len(pose.messages), poses_before, 'the node stopped publishing')
         latest = pose.messages[-1].pose.position
         self.assertLess(math.hypot(latest.x - final.x, latest.y - final.y), 1e-6)
+
+    def check_estimated_poses(self, poses, estimates):
+        # Published with the pose at every tick: the true pose plus a navigation error of
+        # 0.015 m per axis, which is nowhere 0 and hardly ever beyond 5 sigma.
+        true_at = {message.header.stamp: position(message.pose) for message in poses}
+        offsets = [math.dist(position(message.pose), true_at[message.header.stamp])
+                   for message in estimates if message.header.stamp in true_at]
+        self.assertGreater(len(offsets), 20)
+        self.assertTrue(all(message.header.frame_id == 'map' for message in estimates))
+        self.assertGreater(min(offsets), 0.0)
+        self.assertLess(max(offsets), 0.1)
 
 
 if __name__ == '__main__':

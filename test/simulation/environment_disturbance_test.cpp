@@ -43,5 +43,26 @@ TEST(EnvironmentDisturbanceTest, FluctuatesAboutTheMeanCurrent) {
   EXPECT_NEAR(meanAndDeviation(error_x).second, 0.2, 0.01);
 }
 
+TEST(EnvironmentDisturbanceTest, KnowsWhichLakeItIs) {
+  DisturbanceParameters parameters;
+  parameters.current_sigma = 0.02;
+  parameters.navigation_sigma = 0.1;
+  EnvironmentDisturbance lake(parameters, 0.2, -0.1);
+  lake.advance(30.0);
+  EXPECT_TRUE(lake.isLakeOf(parameters, 0.2, -0.1));
+  EXPECT_FALSE(lake.isLakeOf(parameters, 0.2, 0.0));
+  for (int change = 0; change < 5; ++change) {
+    DisturbanceParameters other = parameters;
+    double* values[] = {&other.current_sigma, &other.current_time_constant, &other.navigation_sigma,
+                        &other.navigation_time_constant};
+    if (change < 4) {
+      *values[change] += 0.5;
+    } else {
+      other.seed = 2;
+    }
+    EXPECT_FALSE(lake.isLakeOf(other, 0.2, -0.1)) << change;
+  }
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core

@@ -218,6 +218,36 @@ TEST(TrajectoryFollowerTest, SteersByItsNavigationSolution) {
   }
 }
 
+TEST(TrajectoryFollowerTest, AHandedOnLakeRunsOnAcrossTrajectories) {
+  // A robot handed a new trajectory mid-mission meets the lake's disturbances where they
+  // had got to, as one uninterrupted lake would give them, not the seed's first draws.
+  PlannerParameters parameters = withVehicle("dynamic");
+  parameters.current_sigma = 0.02;
+  parameters.navigation_sigma = 0.1;
+  const RobotModel model = robotModelOf(parameters);
+  const std::vector<Pose2> line = straightLine(30.0, 0.5);
+  RobotState start;
+  start.pose = line.front();
+  TrajectoryFollower first(model, line, start);
+  constexpr int kSteps = 200;
+  for (int i = 0; i < kSteps; ++i) first.step();
+  const std::vector<Pose2> rest(line.begin() + 10, line.end());
+  TrajectoryFollower second(model, rest, first.state(), first.disturbance());
+  TrajectoryFollower restarted(model, rest, first.state());
+  EnvironmentDisturbance uninterrupted(model.disturbance, model.current_x, model.current_y);
+  for (int i = 0; i < kSteps; ++i) uninterrupted.advance(model.sim_dt);
+  for (int i = 0; i < 50; ++i) {
+    EXPECT_EQ(second.disturbance().navigationError(), uninterrupted.navigationError()) << i;
+    EXPECT_EQ(second.disturbance().current(), uninterrupted.current()) << i;
+    const Point2 error = second.estimatedPose().position() - second.state().pose.position();
+    EXPECT_NEAR((error - uninterrupted.navigationError()).norm(), 0.0, 1e-12) << i;
+    second.step();
+    restarted.step();
+    uninterrupted.advance(model.sim_dt);
+  }
+  EXPECT_NE(restarted.disturbance().navigationError(), second.disturbance().navigationError());
+}
+
 TEST(TrajectoryFollowerTest, AFluctuatingCurrentPushesTheRobotOffItsLine) {
   // The controller knows the mean current (0 here), not its fluctuation: the robot is
   // pushed off the line until its position controller steers back, and still arrives.

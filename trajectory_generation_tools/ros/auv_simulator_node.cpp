@@ -38,6 +38,7 @@ AuvSimulatorNode::AuvSimulatorNode(const ros::NodeHandle& node, const ros::NodeH
   real_time_factor_ = positiveParameter(private_node_, "real_time_factor", 10.0);
   const double publish_rate = positiveParameter(private_node_, "publish_rate", 10.0);
   pose_publisher_ = node_.advertise<geometry_msgs::PoseStamped>("pose", 10);
+  estimated_pose_publisher_ = node_.advertise<geometry_msgs::PoseStamped>("estimated_pose", 10);
   visited_publisher_ = node_.advertise<geometry_msgs::PoseArray>("visited", 1, true);
   status_publisher_ = private_node_.advertise<kinematic_coverage::PlanStatus>("status", 10, true);
   trajectory_subscriber_ = node_.subscribe("trajectory", 1, &AuvSimulatorNode::onTrajectory, this);
@@ -77,7 +78,18 @@ void AuvSimulatorNode::onTrajectory(const geometry_msgs::PoseArray::ConstPtr& me
     for (const std::string& warning : core::robotModelWarnings(robot)) {
       ROS_WARN("auv_simulator: %s", warning.c_str());
     }
-    follower_.emplace(robot, poses, start);
+    if (follower_ &&
+        follower_->disturbance().isLakeOf(robot.disturbance, robot.current_x, robot.current_y)) {
+      follower_.emplace(robot, poses, start,
+                        core::EnvironmentDisturbance(follower_->disturbance()));
+    } else {
+      if (follower_) {
+        ROS_INFO(
+            "auv_simulator: the current or disturbance parameters changed: the lake's "
+            "disturbances start again from disturbance_seed");
+      }
+      follower_.emplace(robot, poses, start);
+    }
     trajectory_stamp_ = message->header.stamp;
     trajectory_start_s_ = start.t;
     time_limit_s_ = parameters.sim_time_limit;
@@ -138,11 +150,16 @@ void AuvSimulatorNode::publishPose(bool moved) {
   std_msgs::Header header;
   header.frame_id = visited_.header.frame_id;
   header.stamp = ros::Time::now();
-  const geometry_msgs::PoseArray current = toPoseArray({follower_->state().pose}, header);
+  const geometry_msgs::PoseArray current =
+      toPoseArray({follower_->state().pose, follower_->estimatedPose()}, header);
   geometry_msgs::PoseStamped pose;
   pose.header = header;
   pose.pose = current.poses.front();
   pose_publisher_.publish(pose);
+  geometry_msgs::PoseStamped estimated;
+  estimated.header = header;
+  estimated.pose = current.poses.back();
+  estimated_pose_publisher_.publish(estimated);
   if (moved) {
     visited_.header.stamp = header.stamp;
     visited_.poses.push_back(pose.pose);

@@ -17,9 +17,12 @@ namespace kinematic_coverage::nodes {
 /// runs `~real_time_factor` times faster than ROS time, and publishes at `~publish_rate`
 /// (Hz of ROS time) its `pose` (geometry_msgs/PoseStamped) and `visited`
 /// (geometry_msgs/PoseArray, latched: its start and its pose at every tick it moved,
-/// oldest first). The first trajectory starts the robot at rest at its first pose
-/// and fixes the frame; a newer one restarts the model from the robot's current pose and
-/// velocities, keeping the visited history; one with an older header stamp is ignored. `~status`
+/// oldest first), and `estimated_pose` (PoseStamped: what its navigation believes, the
+/// true pose plus the navigation error of navigation_sigma). The first trajectory starts
+/// the robot at rest at its first pose and fixes the frame; a newer one restarts the model
+/// from the robot's current pose and velocities in the same lake (its current's fluctuation
+/// and navigation error run on, unless their parameters changed), keeping the visited
+/// history; one with an older header stamp is ignored. `~status`
 /// (PlanStatus, stage "simulate") reports each start, the arrival at the last pose and every
 /// failure. Bad input (no poses, a non-finite pose or orientation, another frame, a parameter out
 /// of range, the last pose not reached within sim_time_limit) gives one ROS_ERROR and a failed
@@ -35,7 +38,8 @@ class AuvSimulatorNode {
   void onTrajectory(const geometry_msgs::PoseArray::ConstPtr& message);
   /// Advances the model by the simulated time owed since the last tick and publishes.
   void onTick(const ros::TimerEvent& event);
-  /// Publishes the robot's pose and, if `moved`, appends it to `visited` and publishes that.
+  /// Publishes the robot's true and estimated poses and, if `moved`, appends the true one to
+  /// `visited` and publishes that.
   void publishPose(bool moved);
   void publishStatus(bool success, const std::string& message);
 
@@ -43,6 +47,7 @@ class AuvSimulatorNode {
   ros::NodeHandle private_node_;
   ros::Subscriber trajectory_subscriber_;
   ros::Publisher pose_publisher_;
+  ros::Publisher estimated_pose_publisher_;
   ros::Publisher visited_publisher_;
   ros::Publisher status_publisher_;
   ros::Timer timer_;

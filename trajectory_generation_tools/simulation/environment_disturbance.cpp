@@ -4,7 +4,8 @@ namespace kinematic_coverage::core {
 
 EnvironmentDisturbance::EnvironmentDisturbance(const DisturbanceParameters& parameters,
                                                double mean_x, double mean_y)
-    : normal_(parameters.seed),
+    : parameters_(parameters),
+      normal_(parameters.seed),
       mean_current_(mean_x, mean_y),
       current_x_(parameters.current_sigma, parameters.current_time_constant, normal_),
       current_y_(parameters.current_sigma, parameters.current_time_constant, normal_),
@@ -24,6 +25,16 @@ Point2 EnvironmentDisturbance::current() const {
 
 Point2 EnvironmentDisturbance::navigationError() const {
   return {navigation_x_.value(), navigation_y_.value()};
+}
+
+bool EnvironmentDisturbance::isLakeOf(const DisturbanceParameters& parameters, double mean_x,
+                                      double mean_y) const {
+  return parameters.current_sigma == parameters_.current_sigma &&
+         parameters.current_time_constant == parameters_.current_time_constant &&
+         parameters.navigation_sigma == parameters_.navigation_sigma &&
+         parameters.navigation_time_constant == parameters_.navigation_time_constant &&
+         parameters.seed == parameters_.seed && mean_x == mean_current_.x() &&
+         mean_y == mean_current_.y();
 }
 
 }  // namespace kinematic_coverage::core

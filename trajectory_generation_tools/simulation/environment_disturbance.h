@@ -25,7 +25,13 @@ class EnvironmentDisturbance {
   /// m: what the navigation solution adds to the true position now.
   Point2 navigationError() const;
 
+  /// Whether this is the lake of `parameters` about the mean current (mean_x, mean_y):
+  /// a robot handed a new trajectory in the same lake meets these disturbances on, not
+  /// the seed's first draws again.
+  bool isLakeOf(const DisturbanceParameters& parameters, double mean_x, double mean_y) const;
+
  private:
+  DisturbanceParameters parameters_;
   StandardNormalSource normal_;
   Point2 mean_current_;
   GaussMarkovProcess current_x_;

@@ -22,11 +22,17 @@ bool isFinite(const Pose2& pose) {
 
 TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets,
                                        const RobotState& start)
+    : TrajectoryFollower(
+          model, std::move(targets), start,
+          EnvironmentDisturbance(model.disturbance, model.current_x, model.current_y)) {}
+
+TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets,
+                                       const RobotState& start, const EnvironmentDisturbance& lake)
     : model_(model),
       targets_(std::move(targets)),
       state_(start),
       body_(model.body, model.current_x, model.current_y),
-      disturbance_(model.disturbance, model.current_x, model.current_y) {
+      disturbance_(lake) {
   if (targets_.empty()) throw InvalidInputError("trajectory follower: no poses to follow");
   heading_target_.resize(targets_.size(), false);
   for (std::size_t i = 0; i < targets_.size(); ++i) {

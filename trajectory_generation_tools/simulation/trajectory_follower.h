@@ -74,6 +74,12 @@ class TrajectoryFollower {
   /// InvalidInputError for no targets, or a non-finite target or start.
   TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets, const RobotState& start);
 
+  /// As above, in a lake whose disturbances have already run on (`lake`, e.g. the
+  /// disturbance() of the follower of the trajectory before, for a robot handed a new
+  /// trajectory mid-mission) instead of the model's disturbances from their first draws.
+  TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets, const RobotState& start,
+                     const EnvironmentDisturbance& lake);
+
   /// Advances the robot by sim_dt; does nothing once finished().
   void step();
 
@@ -85,6 +91,9 @@ class TrajectoryFollower {
 
   /// The pose the robot believes it has: the true one plus the navigation error.
   Pose2 estimatedPose() const;
+
+  /// The lake's disturbances as they are now.
+  const EnvironmentDisturbance& disturbance() const { return disturbance_; }
 
   /// Index of the target the robot drives to; targets().size() once finished.
   std::size_t nextTarget() const { return next_target_; }
