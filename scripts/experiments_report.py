@@ -84,6 +84,8 @@ class Report:
              [percent(p['coverage_loss_percent']) for p in plans], ['0 %', '0 %']),
             ('unseen reachable area (planned trajectory)',
              [f"{p['unseen_reachable_area_m2']:.3f} m^2" for p in plans], ['-', '-']),
+            ('seen by the unsmoothed trajectory, unseen (planned)',
+             [f"{p.get('smoothing_lost_area_m2', 0.0):.3f} m^2" for p in plans], ['-', '-']),
             ('closest approach to a wall or obstacle (driven)',
              [metres(r['driven_min_clearance_m'], 3) for r in runs], ['-', '-']),
             ('trajectory error (sum)', [metres(r['tracking_error_sum_m']) for r in runs],
@@ -403,8 +405,9 @@ lake.
         ])
         text += f'''
 The smoothed trajectories see less of the lake bottom as planned than the unsmoothed one
-({percent(plan['lake_7_5_default']['coverage_loss_percent'])} unseen with the default strategy against {percent(plan['lake_7_5_unsmoothed']['coverage_loss_percent'])}), almost all of it outside the
-reachable area ({plan['lake_7_5_default']['unseen_reachable_area_m2']:.3f} m^2 of the reachable area unseen, of {plan['lake_7_5_default']['unreachable_area_m2']:.2f} m^2 outside it): here the
+({percent(plan['lake_7_5_default']['coverage_loss_percent'])} unseen with the default strategy against {percent(plan['lake_7_5_unsmoothed']['coverage_loss_percent'])}; of what the unsmoothed trajectory sees, the default
+one misses {plan['lake_7_5_default']['smoothing_lost_area_m2']:.3f} m^2, and `plan` warns of it), almost all of it outside the reachable area
+({plan['lake_7_5_default']['smoothing_lost_reachable_area_m2']:.3f} m^2 of it reachable, of {plan['lake_7_5_default']['unreachable_area_m2']:.2f} m^2 outside the reachable area): here the
 footprint is 1.72 m wide and 0.21 m long, so the reachable area reaches only 0.11 m
 beyond the 0.4 m wall distance, while the unsmoothed path, running along the walls
 between lanes and turning in place at the corners, sees more of the wall band. No stage

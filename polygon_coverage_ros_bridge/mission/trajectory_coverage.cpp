@@ -12,7 +12,8 @@ namespace kinematic_coverage::core {
 TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
                                              const std::vector<PolygonWithHoles>& offset_parts,
                                              const PlannerParameters& parameters,
-                                             const std::vector<Pose2>& poses) {
+                                             const std::vector<Pose2>& poses,
+                                             const std::optional<std::vector<Pose2>>& reference) {
   const auto start = std::chrono::steady_clock::now();
   const FrustumSensor sensor = sensorOf(parameters);
   const CoverageEvaluator evaluator(free_area, offset_parts, sensor, reportingResolution(),
@@ -21,6 +22,10 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
   const SeenArea seen_reported = evaluator.seeTrajectory(poses);
   coverage.report = evaluator.report(seen_reported);
   coverage.largest_unseen_region = evaluator.largestUnseenRegion(seen_reported);
+  if (reference) {
+    coverage.lost_to_reference =
+        evaluator.lostArea(evaluator.seeTrajectory(*reference), seen_reported);
+  }
   coverage.cell_size_m = evaluator.raster().cellSize();
   // The heatmap on a grid along the map's axes, as plots draw it, read off the turned one.
   RasterResolution drawing;
@@ -44,6 +49,18 @@ std::optional<std::string> reachableCoverageWarning(const TrajectoryCoverage& co
     out << ", the largest unseen region " << region->area_m2 << " m^2 around ("
         << region->centroid.x() << ", " << region->centroid.y() << ")";
   }
+  return out.str();
+}
+
+std::optional<std::string> smoothingLossWarning(const TrajectoryCoverage& coverage) {
+  const std::optional<LostArea>& lost = coverage.lost_to_reference;
+  if (!lost || lost->percent_of_free_area <= kSmoothingLossWarningPercent) return std::nullopt;
+  std::ostringstream out;
+  out.precision(4);
+  out << "smoothing loses " << lost->area_m2 << " m^2 (" << lost->percent_of_free_area
+      << " % of the free area) that the unsmoothed trajectory sees, " << lost->reachable_area_m2
+      << " m^2 of it in the reachable area and the rest beyond it, where no stage guards what "
+         "the sensor sees; smoothing: false sees it";
   return out.str();
 }
 

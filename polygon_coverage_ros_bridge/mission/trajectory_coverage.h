@@ -18,6 +18,9 @@ struct TrajectoryCoverage {
   Heatmap heatmap;           ///< separate visits per cell, for plot.png
   /// The largest piece of the reachable area never seen; none when all of it was seen.
   std::optional<UnseenRegion> largest_unseen_region;
+  /// What the trajectory fails to see of what a reference trajectory sees (its unsmoothed
+  /// one); none without a reference.
+  std::optional<LostArea> lost_to_reference;
 };
 
 /// The share of the reachable area (percent) below which a trajectory leaves area it
@@ -30,18 +33,30 @@ constexpr double kReachableCoverageBarPercent = 99.9;
 /// `plan`'s figures for its own trajectory and `evaluate`'s for any trajectory file, so
 /// that both agree on the same poses. `offset_parts` (every part of the offset free area)
 /// only shape the reachable area. The heatmap is the turned raster's visits read at the
-/// cell centres of a grid along the map's axes (cells of 5 cm or coarser), as plots draw it. Throws
-/// InvalidInputError for a non-finite pose, an invalid sensor or an offset free area that covers no
-/// cell.
-TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
-                                             const std::vector<PolygonWithHoles>& offset_parts,
-                                             const PlannerParameters& parameters,
-                                             const std::vector<Pose2>& poses);
+/// cell centres of a grid along the map's axes (cells of 5 cm or coarser), as plots draw it.
+/// With `reference` poses (the unsmoothed trajectory of the same waypoints), also what
+/// `poses` fail to see of what they see, on the same raster. Throws InvalidInputError for a
+/// non-finite pose, an invalid sensor or an offset free area that covers no cell.
+TrajectoryCoverage measureTrajectoryCoverage(
+    const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& offset_parts,
+    const PlannerParameters& parameters, const std::vector<Pose2>& poses,
+    const std::optional<std::vector<Pose2>>& reference = std::nullopt);
 
 /// A warning when the trajectory sees less than kReachableCoverageBarPercent of the
 /// reachable area, naming the unseen area and the largest unseen region (its area and
 /// centroid); none otherwise.
 std::optional<std::string> reachableCoverageWarning(const TrajectoryCoverage& coverage);
+
+/// Smoothing lets the sensor see less than the unsmoothed trajectory where no stage guards
+/// the area (beyond the reachable area) or within the coverage-safe tolerance: a warning
+/// when the trajectory fails to see more than this share of the free area (percent) that
+/// its unsmoothed trajectory sees.
+constexpr double kSmoothingLossWarningPercent = 0.1;
+
+/// A warning when `coverage.lost_to_reference` (the smoothed trajectory against its
+/// unsmoothed one) exceeds kSmoothingLossWarningPercent of the free area, naming the area
+/// and its reachable part; none otherwise.
+std::optional<std::string> smoothingLossWarning(const TrajectoryCoverage& coverage);
 
 /// The summary of a coverage stage's progress line, e.g. "99.977 % of the free area seen
 /// (coverage loss 0.023 %), 100 % of the reachable area, 5 cm cells".

@@ -54,13 +54,45 @@ GeneratedTrajectory generateTrajectory(const PlanOutputRequest& request, std::os
   return trajectory;
 }
 
-/// The coverage of `poses`, with its progress line; a failure is the package's.
+/// The poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so that
+/// `coverage_tool evaluate` of that file reports the figures measured on them.
+std::vector<Pose2> writtenPoses(const std::vector<TrajectoryPose>& trajectory) {
+  std::vector<Pose2> poses;
+  poses.reserve(trajectory.size());
+  for (const TrajectoryPose& pose : trajectory) {
+    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
+  }
+  return poses;
+}
+
+/// The plan's unsmoothed trajectory, the reference of what smoothing may lose; none when
+/// the trajectory is unsmoothed itself. A failure is the package's.
+std::optional<std::vector<Pose2>> unsmoothedPoses(const PlanOutputRequest& request) {
+  if (!request.parameters->smoothing) return std::nullopt;
+  PlannerParameters unsmoothed = *request.parameters;
+  unsmoothed.smoothing = false;
+  try {
+    return writtenPoses(
+        TrajectoryGenerator(trajectoryOptionsOf(unsmoothed, request.plan->offset_parts))
+            .generate(request.plan->waypoints, *request.free_area)
+            .poses);
+  } catch (const SizeLimitError&) {
+    throw;
+  } catch (const InvalidInputError& error) {
+    throw InternalError("coverage", error.what());
+  }
+}
+
+/// The coverage of `poses` (with what they fail to see of `reference`'s), with its progress
+/// line; a failure is the package's.
 TrajectoryCoverage measureCoverage(const PlanOutputRequest& request,
-                                   const std::vector<Pose2>& poses, std::ostream& out) {
+                                   const std::vector<Pose2>& poses,
+                                   const std::optional<std::vector<Pose2>>& reference,
+                                   std::ostream& out) {
   TrajectoryCoverage coverage;
   try {
     coverage = measureTrajectoryCoverage(*request.free_area, request.plan->offset_parts,
-                                         *request.parameters, poses);
+                                         *request.parameters, poses, reference);
   } catch (const SizeLimitError&) {
     throw;
   } catch (const InvalidInputError& error) {
@@ -97,6 +129,12 @@ JsonObject planMetrics(const PlanOutputRequest& request, const GeneratedTrajecto
       .set("turns_sharp", static_cast<double>(turns.turns_total - turns.turns_smoothed));
   setCoverageMetrics(coverage.report, metrics);
   if (combined) metrics.set("combined_coverage_percent", combined->report.coverage_percent);
+  // Replanning: what the visited poses and the new trajectory fail to see together.
+  const TrajectoryCoverage& searched = combined ? *combined : coverage;
+  if (const std::optional<LostArea>& lost = searched.lost_to_reference) {
+    metrics.set("smoothing_lost_area_m2", lost->area_m2)
+        .set("smoothing_lost_reachable_area_m2", lost->reachable_area_m2);
+  }
   if (std::isfinite(trajectory.min_obstacle_clearance_m)) {
     metrics.set("min_obstacle_clearance_m", trajectory.min_obstacle_clearance_m);
   }
@@ -166,20 +204,21 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
                              std::ostream& out) {
   const GeneratedTrajectory trajectory = generateTrajectory(request, out);
 
-  // Coverage of the poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so
-  // that `coverage_tool evaluate` of that file reports the same figures.
-  std::vector<Pose2> poses;
-  poses.reserve(trajectory.poses.size());
-  for (const TrajectoryPose& pose : trajectory.poses) {
-    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
-  }
-  const TrajectoryCoverage coverage = measureCoverage(request, poses, out);
+  const std::vector<Pose2> poses = writtenPoses(trajectory.poses);
+  const std::optional<std::vector<Pose2>> unsmoothed = unsmoothedPoses(request);
+  const TrajectoryCoverage coverage =
+      measureCoverage(request, poses, request.visited ? std::nullopt : unsmoothed, out);
   std::optional<TrajectoryCoverage> combined;
   if (request.visited) {
     std::vector<Pose2> all = *request.visited;
     all.insert(all.end(), poses.begin(), poses.end());
+    std::optional<std::vector<Pose2>> all_unsmoothed;
+    if (unsmoothed) {
+      all_unsmoothed = *request.visited;
+      all_unsmoothed->insert(all_unsmoothed->end(), unsmoothed->begin(), unsmoothed->end());
+    }
     combined = measureTrajectoryCoverage(*request.free_area, request.plan->offset_parts,
-                                         *request.parameters, all);
+                                         *request.parameters, all, all_unsmoothed);
     out << "combined coverage: visited and new trajectory: " << coverageSummary(*combined) << " ("
         << formatSeconds(combined->duration_s) << ")" << std::endl;
   }
@@ -202,6 +241,9 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
     outputs.warnings.push_back(*warning);
     if (searched.largest_unseen_region)
       plot.unseen_region = searched.largest_unseen_region->outline;
+  }
+  if (const std::optional<std::string> warning = smoothingLossWarning(searched)) {
+    outputs.warnings.push_back(*warning);
   }
   CoveragePlot().writePng(plot, plot_path);
   outputs.files = {waypoints_path, trajectory_path, metrics_path, plot_path};

@@ -50,7 +50,9 @@ struct PlanOutputs {
 /// for a geo-referenced mission also DIR/waypoints.geojson (times: the planner's rest-to-rest
 /// time cost up to each waypoint) and DIR/trajectory.geojson (times: the poses' t).
 /// A trajectory that sees less than kReachableCoverageBarPercent of the reachable area
-/// gives a warning, and the plot outlines the largest unseen region. Throws
+/// gives a warning, and the plot outlines the largest unseen region; a smoothed one is
+/// measured against its unsmoothed trajectory too (metrics.json's smoothing_lost_area_m2
+/// and smoothing_lost_reachable_area_m2), with smoothingLossWarning's warning. Throws
 /// InvalidInputError when a file cannot be written.
 PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string& out_dir,
                              std::ostream& out);

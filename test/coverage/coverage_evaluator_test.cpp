@@ -277,6 +277,35 @@ TEST(CoverageEvaluator, RejectsInvalidInput) {
   const CoverageEvaluator evaluator(free_area, {offset_area}, sensor);
   const CoverageEvaluator other(free_area, {offset_area}, sensor, {0.5, 1e-3, 4'000'000});
   EXPECT_THROW(evaluator.report(other.seeTrajectory({{5, 5, 0}})), InvalidInputError);
+  EXPECT_THROW(evaluator.lostArea(other.seeTrajectory({{5, 5, 0}}), evaluator.seeTrajectory({})),
+               InvalidInputError);
+}
+
+// What one path fails to see of what another sees: a lane along y = 2 of a 40 m x 10 m
+// area, 4 m wide and 2 m long, against the same lane stopped at x = 20. The second misses
+// x 21 to 40, y 0 to 4 (76 m^2, 19 % of the area); with the offset free area y >= 3 the
+// reachable area is y >= 2, so 38 m^2 of it are reachable. Nothing is lost to itself or to a
+// path that sees more.
+TEST(CoverageEvaluator, MeasuresWhatOnePathLosesOfAnothersView) {
+  const PolygonWithHoles area{rectangle(0, 0, 40, 10), {}};
+  const PolygonWithHoles offset{rectangle(0, 3, 40, 10), {}};
+  const FrustumSensor sensor(4.0, 2.0, 0.0);
+  for (const double angle : {0.0, 0.2}) {
+    SCOPED_TRACE("grid angle " + std::to_string(angle));
+    const CoverageEvaluator evaluator(area, {offset}, sensor, {0.05}, angle);
+    const SeenArea whole = evaluator.seeWaypointPath({{0, 2, 0}, {40, 2, 0}});
+    const SeenArea half = evaluator.seeWaypointPath({{0, 2, 0}, {20, 2, 0}});
+    const LostArea lost = evaluator.lostArea(whole, half);
+    EXPECT_NEAR(lost.area_m2, 76.0, 1.0);
+    EXPECT_NEAR(lost.reachable_area_m2, 38.0, 1.0);
+    EXPECT_NEAR(lost.percent_of_free_area, 19.0, 0.25);
+    for (const LostArea none :
+         {evaluator.lostArea(whole, whole), evaluator.lostArea(half, whole)}) {
+      EXPECT_EQ(none.area_m2, 0.0);
+      EXPECT_EQ(none.reachable_area_m2, 0.0);
+      EXPECT_EQ(none.percent_of_free_area, 0.0);
+    }
+  }
 }
 
 TEST(CoverageEvaluator, RandomMapsSweptOverTheirBoxAreFullyCovered) {

@@ -94,6 +94,36 @@ TEST(CoverageFinding, AcuteCornersSmoothedLoseCoverage) {
   RecordProperty("unsmoothed_coverage_loss_percent", std::to_string(unsmoothed_loss));
 }
 
+TEST(CoverageFinding, MeasuresAndWarnsOfWhatSmoothingLosesOfTheUnsmoothedView) {
+  // Against its unsmoothed trajectory, Algorithm 1's trajectory of the acute corners loses
+  // at least the difference of their coverage losses, part of it reachable: a warning. The
+  // unsmoothed trajectory loses nothing to itself, and no reference means no figure.
+  const MissionTrajectory smoothed =
+      planTrajectory("parallelogram_60.yaml", true, {"smoothing_strategy=local"});
+  const MissionTrajectory unsmoothed = planTrajectory("parallelogram_60.yaml", false);
+  const TrajectoryCoverage against =
+      measureTrajectoryCoverage(smoothed.planned.free_area, smoothed.planned.plan.offset_parts,
+                                smoothed.mission.parameters, smoothed.poses, unsmoothed.poses);
+  ASSERT_TRUE(against.lost_to_reference.has_value());
+  const LostArea& lost = *against.lost_to_reference;
+  EXPECT_GE(lost.percent_of_free_area, against.report.coverage_loss_percent -
+                                           coverageOf(unsmoothed).report.coverage_loss_percent);
+  EXPECT_GT(lost.reachable_area_m2, 0.0);
+  EXPECT_LT(lost.reachable_area_m2, lost.area_m2);
+  const std::optional<std::string> warning = smoothingLossWarning(against);
+  ASSERT_TRUE(warning.has_value());
+  EXPECT_EQ(warning->rfind("smoothing loses ", 0), 0u) << *warning;
+
+  const TrajectoryCoverage itself =
+      measureTrajectoryCoverage(unsmoothed.planned.free_area, unsmoothed.planned.plan.offset_parts,
+                                unsmoothed.mission.parameters, unsmoothed.poses, unsmoothed.poses);
+  ASSERT_TRUE(itself.lost_to_reference.has_value());
+  EXPECT_EQ(itself.lost_to_reference->area_m2, 0.0);
+  EXPECT_FALSE(smoothingLossWarning(itself).has_value());
+  EXPECT_FALSE(coverageOf(smoothed).lost_to_reference.has_value());
+  EXPECT_FALSE(smoothingLossWarning(coverageOf(smoothed)).has_value());
+}
+
 TEST(CoverageFinding, CoveragePreservingSmoothingLosesNoCoverageAndIsFaster) {
   // On the acute-corner mission: at most 0.05 points more loss than the sharp
   // path, in less time.

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Unseen-area rostest: smooth_trajectory_generator measures what its trajectory sees of the
 reachable area and, below 99.9 %, says so with a ROS_WARN and in its ~status, which
-still reports success (the trajectory is published; docs/REFERENCE.md, Nodes and topics)."""
+still reports success (the trajectory is published; docs/REFERENCE.md, Nodes and topics);
+and what the smoothing loses of what the unsmoothed trajectory sees, with a second warning."""
 
 import sys
 import unittest
@@ -43,8 +44,9 @@ class UnseenAreaTest(unittest.TestCase):
         self.assertIn('of the reachable area', last.message)
         self.assertIn('warning: the trajectory sees', last.message)
         self.assertIn('largest unseen region', last.message)
+        self.assertIn('warning: smoothing loses', last.message)
 
-    def test_a_ros_warn_per_trajectory_names_the_unseen_area(self):
+    def test_ros_warns_per_trajectory_name_the_unseen_and_the_lost_area(self):
         # The first trajectory may have been smoothed before /rosout was listened to: the
         # planner's waypoints again make a second one, and its warning.
         self.assertTrue(self.waypoints.messages, 'no waypoint_list')
@@ -55,12 +57,15 @@ class UnseenAreaTest(unittest.TestCase):
         rospy.sleep(0.5)  # a message published as the connection opens may be dropped
         publisher.publish(self.waypoints.messages[-1])
         self.assertTrue(self.status.wait_for(statuses + 1, TIMEOUT_S), 'no second status')
-        # The node's ROS_WARN reaches /rosout a moment after its status.
-        wait_until(lambda: len(self.warnings()) > warnings, 10.0)
+        # The node's ROS_WARNs reach /rosout a moment after its status: the unseen reachable
+        # area, then what smoothing loses of the unsmoothed trajectory's view.
+        wait_until(lambda: len(self.warnings()) >= warnings + 2, 10.0)
         new = self.warnings()[warnings:]
-        self.assertEqual(len(new), 1, new)
+        self.assertEqual(len(new), 2, new)
         self.assertIn('less than 99.9 %', new[0])
         self.assertIn('largest unseen region', new[0])
+        self.assertIn('smoothing loses', new[1])
+        self.assertIn('in the reachable area', new[1])
 
 
 if __name__ == '__main__':

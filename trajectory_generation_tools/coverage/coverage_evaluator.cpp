@@ -258,6 +258,25 @@ CoverageReport CoverageEvaluator::report(const SeenArea& seen) const {
   return result;
 }
 
+LostArea CoverageEvaluator::lostArea(const SeenArea& reference, const SeenArea& seen) const {
+  requireOwnRaster(reference);
+  requireOwnRaster(seen);
+  double free_cells = 0.0;
+  double lost_cells = 0.0;
+  std::size_t lost_reachable = 0;
+  for (std::size_t i = 0; i < free_fractions_.size(); ++i) {
+    free_cells += free_fractions_[i];
+    if (!reference.seen(i) || seen.seen(i)) continue;
+    lost_cells += free_fractions_[i];
+    if (reachable_area_[i] != 0) ++lost_reachable;
+  }
+  if (!(free_cells > 0.0)) {
+    throw InvalidInputError("coverage: the free area covers no cell of the raster");
+  }
+  return {lost_cells * raster_.cellArea(), static_cast<double>(lost_reachable) * raster_.cellArea(),
+          100.0 * lost_cells / free_cells};
+}
+
 double waypointPathReachableCoveragePercent(const PolygonWithHoles& free_area,
                                             const std::vector<PolygonWithHoles>& offset_parts,
                                             const FrustumSensor& sensor,

@@ -26,6 +26,17 @@ struct CoverageReport {
   double unreachable_area_m2 = 0.0;
 };
 
+/// What one trajectory fails to see of what another sees, e.g. a smoothed trajectory of
+/// its unsmoothed one: the price of smoothing in search area, reachable or not.
+struct LostArea {
+  /// Square metres of the free area the other sees and this one does not.
+  double area_m2 = 0.0;
+  /// The part of it in the reachable area, square metres.
+  double reachable_area_m2 = 0.0;
+  /// area_m2 as a share of the free area, percent.
+  double percent_of_free_area = 0.0;
+};
+
 /// Cell edge (metres) of the rasters on which coverage_tool measures coverage: cells of
 /// at most 5 cm, accurate to 0.1 % of the free area.
 constexpr double kReportingCellSize = 0.05;
@@ -96,6 +107,11 @@ class CoverageEvaluator {
   /// weighs every seen cell by its share inside the free area (areaFractions), the
   /// reachable figures count the cells whose centres lie in the reachable area.
   CoverageReport report(const SeenArea& seen) const;
+
+  /// The area `reference` sees and `seen` does not, both made on this evaluator's raster:
+  /// every such cell weighed by its share inside the free area, the reachable part counted
+  /// by the cells whose centres lie in the reachable area (as report() counts them).
+  LostArea lostArea(const SeenArea& reference, const SeenArea& seen) const;
 
   /// Keeps of the reachable area only the cells whose centres lie in `region` (map frame):
   /// where a replanned path must see, the remaining area of a mission, not what the robot

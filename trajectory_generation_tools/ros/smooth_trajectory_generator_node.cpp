@@ -28,6 +28,26 @@ namespace {
 
 using core::secondsSince;
 
+std::vector<core::Pose2> posesOf(const std::vector<core::TrajectoryPose>& trajectory) {
+  std::vector<core::Pose2> poses;
+  poses.reserve(trajectory.size());
+  for (const core::TrajectoryPose& pose : trajectory) poses.push_back({pose.x, pose.y, pose.yaw});
+  return poses;
+}
+
+/// The unsmoothed trajectory of `waypoints`, the reference of what smoothing may lose;
+/// none when `parameters` do not smooth.
+std::optional<std::vector<core::Pose2>> unsmoothedPoses(const core::PlannerParameters& parameters,
+                                                        const std::vector<core::Pose2>& waypoints,
+                                                        const core::PolygonWithHoles& free_area) {
+  if (!parameters.smoothing) return std::nullopt;
+  core::PlannerParameters unsmoothed = parameters;
+  unsmoothed.smoothing = false;
+  return posesOf(core::TrajectoryGenerator(core::trajectoryOptionsOf(unsmoothed))
+                     .generate(waypoints, free_area)
+                     .poses);
+}
+
 }  // namespace
 
 SmoothTrajectoryGeneratorNode::SmoothTrajectoryGeneratorNode(const ros::NodeHandle& node,
@@ -121,11 +141,7 @@ void SmoothTrajectoryGeneratorNode::generate() {
     trajectory_publisher_.publish(toPoseArray(trajectory.poses, header));
     path_publisher_.publish(toPath(trajectory.poses, header));
     visualization_msgs::MarkerArray markers = trajectoryMarkers(trajectory.path, header);
-    std::vector<core::Pose2> poses;
-    poses.reserve(trajectory.poses.size());
-    for (const core::TrajectoryPose& pose : trajectory.poses) {
-      poses.push_back({pose.x, pose.y, pose.yaw});
-    }
+    const std::vector<core::Pose2> poses = posesOf(trajectory.poses);
     marker_publisher_.publish(markers);
     heatmap_publisher_.publish(heatmapGrid(*free_area_, poses, parameters, header));
     const core::SmoothingStatistics& turns = trajectory.statistics;
@@ -141,10 +157,12 @@ void SmoothTrajectoryGeneratorNode::generate() {
     const core::OffsetFreeArea offset =
         core::computeOffsetFreeArea(*free_area_, parameters.wall_distance);
     const core::TrajectoryCoverage coverage =
-        core::measureTrajectoryCoverage(*free_area_, offset.parts, parameters, poses);
+        core::measureTrajectoryCoverage(*free_area_, offset.parts, parameters, poses,
+                                        unsmoothedPoses(parameters, waypoints, *free_area_));
     summary << "; " << core::coverageSummary(coverage);
-    const std::optional<std::string> warning = core::reachableCoverageWarning(coverage);
-    if (warning) {
+    for (const std::optional<std::string>& warning :
+         {core::reachableCoverageWarning(coverage), core::smoothingLossWarning(coverage)}) {
+      if (!warning) continue;
       ROS_WARN("smooth_trajectory_generator: %s", warning->c_str());
       summary << "; warning: " << *warning;
     }
