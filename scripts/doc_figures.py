@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Keeps the tables of docs/ARCHITECTURE.md, BENCHMARKS.md, EXPERIMENTS.md and RELIABILITY.md
-true.
+"""Keeps the tables of README.md and of docs/ARCHITECTURE.md, BENCHMARKS.md, EXPERIMENTS.md
+and RELIABILITY.md true.
 
 Every figure table in those documents is preceded by a marker naming the one command that
 prints it (the same command stands in the text above the table, for the reader):
@@ -46,7 +46,7 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DOCUMENTS = ['docs/ARCHITECTURE.md', 'docs/BENCHMARKS.md', 'docs/EXPERIMENTS.md',
+DOCUMENTS = ['README.md', 'docs/ARCHITECTURE.md', 'docs/BENCHMARKS.md', 'docs/EXPERIMENTS.md',
              'docs/RELIABILITY.md']
 MARKER = re.compile(r'^<!-- figures: (.*) -->\s*$')
 REFERENCE_TABLE = re.compile(r'^<!-- reference table: .+ -->\s*$')

@@ -6,6 +6,8 @@
 #   docs/images/parallelogram_60_unsmoothed.png the same, smoothing false
 #   docs/images/lake_30x30_replan.png          replan the lake after 40 % of its trajectory,
 #                                              both obstacles moved by (2, 1) m
+# With --print it writes no picture and prints the README's table of the parallelogram's
+# three trajectories instead (the doc_figures test compares it with the README).
 # coverage_tool must be built (scripts/build.sh --target kinematic_coverage_coverage_tool);
 # BUILD_DIR as there.
 set -euo pipefail
@@ -18,6 +20,33 @@ missions=$root/config/missions
 images=$root/docs/images
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
+
+if [ "${1:-}" = --print ]; then
+  for strategy in local coverage_safe; do
+    "$tool" plan "$missions/parallelogram_60.yaml" --out "$out/$strategy" \
+      --set smoothing_strategy=$strategy >/dev/null 2>&1
+  done
+  "$tool" plan "$missions/parallelogram_60.yaml" --out "$out/sharp" --set smoothing=false \
+    >/dev/null 2>&1
+  /usr/bin/python3 - "$out" <<'EOF'
+import json
+import sys
+
+print('| parallelogram_60.yaml | free area unseen | reachable area seen '
+      '| seen by the unsmoothed trajectory, unseen | traversal time | turns smoothed |')
+print('|---|---|---|---|---|---|')
+for label, run in (('smoothed, Algorithm 1 (`local`)', 'local'),
+                   ('smoothed, default (`coverage_safe`)', 'coverage_safe'),
+                   ('unsmoothed', 'sharp')):
+    metrics = json.load(open(f'{sys.argv[1]}/{run}/metrics.json'))
+    lost = metrics.get('smoothing_lost_area_m2', 0.0)
+    print(f"| {label} | {metrics['coverage_loss_percent']:.2f} % "
+          f"| {metrics['reachable_coverage_percent']:.3f} % | {lost:.3f} m^2 "
+          f"| {metrics['traversal_time_s']:.1f} s "
+          f"| {metrics['turns_smoothed']:.0f} of {metrics['turns_total']:.0f} |")
+EOF
+  exit 0
+fi
 
 "$tool" plan "$missions/lake_30x30.yaml" --out "$out/lake" >/dev/null
 cp "$out/lake/plot.png" "$images/lake_30x30_plan.png"
