@@ -21,6 +21,10 @@
 // Table 3, turns smoothed per strategy on lake_30x30 and on LakeMapGenerator's lakes
 // (test/support/lake_map_generator.h): 30 m squares with two obstacles of other shapes and
 // places.
+// Table 4, per family, batch and smoothing strategy: what the smoothed trajectory fails to
+// see of what the unsmoothed trajectory sees (metrics.json's smoothing_lost_area_m2, as a
+// share of the free area): median, worst, the maps over plan's warning threshold, and the
+// largest reachable part.
 //
 // Usage: strategy_benchmark [--maps N[,N...]] [--families comb,spiral,...] [--lakes 10]
 //                           [--per-map]
@@ -47,6 +51,7 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/tool/plan_output_writer.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/lake_map_generator.h"
@@ -183,6 +188,8 @@ struct Run {
   double wall_s = 0.0;  ///< planning + trajectory + coverage + writing the files
   int turns_smoothed = 0;
   int turns_total = 0;
+  /// What the trajectory fails to see of what the unsmoothed one sees (zero unsmoothed).
+  LostArea lost;
 };
 
 /// Every strategy's run on one mission, planned once.
@@ -225,8 +232,59 @@ MapRuns runMap(const Mission& mission, const std::string& out_dir) {
     run.traversal_time_s = outputs.traversal_time_s;
     run.turns_smoothed = outputs.turns.turns_smoothed;
     run.turns_total = outputs.turns.turns_total;
+    if (outputs.smoothing_loss) run.lost = *outputs.smoothing_loss;
   }
   return result;
+}
+
+/// A labelled set of maps of table 1 ("comb, maps 1-5"), for the tables after it.
+struct MapSet {
+  std::string label;
+  std::vector<MapRuns> maps;
+};
+
+/// Table 2: the unsmoothed plan's median time cost and traversal time per set.
+void printBaselineTable(const std::vector<MapSet>& sets) {
+  std::printf(
+      "\n| family, maps | maps | unsmoothed plan: time cost s, median | unsmoothed trajectory: "
+      "traversal time s, median |\n|---|---:|---:|---:|\n");
+  for (const MapSet& set : sets) {
+    std::vector<double> costs;
+    std::vector<double> times;
+    for (const MapRuns& map : set.maps) {
+      costs.push_back(map.time_cost_s);
+      times.push_back(map.runs[kUnsmoothed].traversal_time_s);
+    }
+    std::printf("| %s | %zu | %.2f | %.2f |\n", set.label.c_str(), set.maps.size(), median(costs),
+                median(times));
+  }
+}
+
+/// Table 4: per set and smoothing strategy, what the trajectory fails to see of what the
+/// unsmoothed trajectory sees.
+void printLossTable(const std::vector<MapSet>& sets) {
+  std::printf(
+      "\n| family, maps | strategy | seen unsmoothed, unseen smoothed, %% of the free area: "
+      "median | worst | maps over %.1f %% (plan warns) | largest reachable part, m^2 |\n"
+      "|---|---|---:|---:|---:|---:|\n",
+      kSmoothingLossWarningPercent);
+  for (const MapSet& set : sets) {
+    for (int s = 0; s < kStrategies; ++s) {
+      if (s == kUnsmoothed) continue;
+      std::vector<double> lost;
+      double reachable = 0.0;
+      int warned = 0;
+      for (const MapRuns& map : set.maps) {
+        const LostArea& run = map.runs[s].lost;
+        lost.push_back(run.percent_of_free_area);
+        reachable = std::max(reachable, run.reachable_area_m2);
+        warned += run.percent_of_free_area > kSmoothingLossWarningPercent ? 1 : 0;
+      }
+      std::printf("| %s | %s | %.3f | %.3f | %d | %.3f |\n", set.label.c_str(),
+                  strategyName(Strategy(s)).c_str(), median(lost),
+                  *std::max_element(lost.begin(), lost.end()), warned, reachable);
+    }
+  }
 }
 
 /// One map's figures per strategy, on stderr: reachable coverage, traversal time ratio to
@@ -297,14 +355,8 @@ int run(const Options& options) {
     return 2;
   }
   const ScratchDirectory out_dir{scratch};
-  // Table 1 and the figures of table 2, family by family.
-  struct BaselineRow {
-    std::string label;
-    std::size_t maps;
-    double time_cost_s;
-    double traversal_time_s;
-  };
-  std::vector<BaselineRow> baseline;
+  // Table 1, family by family; the sets of maps for tables 2 and 4.
+  std::vector<MapSet> sets;
   std::printf(
       "| family, maps | strategy | maps | reachable coverage %%, median | reachable coverage %%, "
       "worst | maps under 99.9 %% | largest drop below unsmoothed, points | traversal time "
@@ -318,16 +370,10 @@ int run(const Options& options) {
     std::uint64_t seed = 0;
     int done = 0;
     std::vector<MapRuns> all;
-    // The rows of a set of maps: one per strategy, and the unsmoothed plan's figures.
+    // The rows of a set of maps: one per strategy.
     const auto report = [&](const std::string& label, const std::vector<MapRuns>& maps) {
       for (int s = 0; s < kStrategies; ++s) printStrategyRow(label, Strategy(s), maps);
-      std::vector<double> costs;
-      std::vector<double> times;
-      for (const MapRuns& map : maps) {
-        costs.push_back(map.time_cost_s);
-        times.push_back(map.runs[kUnsmoothed].traversal_time_s);
-      }
-      baseline.push_back({label, maps.size(), median(costs), median(times)});
+      sets.push_back({label, maps});
     };
     for (const int batch : options.batches) {
       std::vector<MapRuns> maps;
@@ -357,13 +403,7 @@ int run(const Options& options) {
     }
   }
 
-  std::printf(
-      "\n| family, maps | maps | unsmoothed plan: time cost s, median | unsmoothed trajectory: "
-      "traversal time s, median |\n|---|---:|---:|---:|\n");
-  for (const BaselineRow& row : baseline) {
-    std::printf("| %s | %zu | %.2f | %.2f |\n", row.label.c_str(), row.maps, row.time_cost_s,
-                row.traversal_time_s);
-  }
+  printBaselineTable(sets);
 
   std::printf(
       "\n| maps | strategy | turns smoothed | turns | turns smoothed %% | reachable coverage %%, "
@@ -378,6 +418,7 @@ int run(const Options& options) {
     }
     printLakeRows("lakes 1-" + std::to_string(options.lakes), lakes);
   }
+  printLossTable(sets);
   return failed == 0 ? 0 : 1;
 }
 

@@ -255,6 +255,7 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   outputs.coverage = coverage.report;
   outputs.turns = trajectory.statistics;
   outputs.traversal_time_s = trajectory.traversal_time_s;
+  outputs.smoothing_loss = searched.lost_to_reference;
   return outputs;
 }
 

@@ -42,6 +42,9 @@ struct PlanOutputs {
   CoverageReport coverage;
   SmoothingStatistics turns;
   double traversal_time_s = 0.0;
+  /// What a smoothed trajectory fails to see of what its unsmoothed one sees (with the
+  /// visited poses when replanning); none when unsmoothed.
+  std::optional<LostArea> smoothing_loss;
 };
 
 /// Smooths, samples and times the plan's trajectory (TrajectoryGenerator), measures its
