@@ -10,6 +10,8 @@
 //  - global+coverage: global with `coverage_preserving: true`;
 //  - coverage_safe: the global programme keeping the sharp path's coverage
 //    (`smoothing_strategy: coverage_safe`);
+//  - coverage_safe (free): the same keeping all of the free area the sharp path sees, the
+//    wall band beyond the reachable area included (`coverage_safe_area: free`);
 //  - default: the parameters' defaults, named after the strategy they select;
 //  - unsmoothed: `smoothing: false`, the reference for coverage and traversal time.
 // Table 1, per family, batch and strategy: the median and worst share of the reachable area
@@ -75,6 +77,7 @@ enum Strategy {
   kGlobal,
   kGlobalCoverage,
   kCoverageSafe,
+  kCoverageSafeFree,
   kDefault,
   kUnsmoothed,
   kStrategies
@@ -139,8 +142,10 @@ PlannerParameters withStrategy(PlannerParameters parameters, Strategy strategy) 
       parameters.coverage_preserving = strategy == kGlobalCoverage;
       break;
     case kCoverageSafe:
+    case kCoverageSafeFree:
       parameters.smoothing_strategy = "coverage_safe";
       parameters.coverage_preserving = false;
+      parameters.coverage_safe_area = strategy == kCoverageSafeFree ? "free" : "reachable";
       break;
     case kUnsmoothed:
       parameters.smoothing = false;
@@ -162,6 +167,8 @@ std::string strategyName(Strategy strategy) {
       return "global+coverage";
     case kCoverageSafe:
       return "coverage_safe";
+    case kCoverageSafeFree:
+      return "coverage_safe (free)";
     case kDefault: {
       const PlannerParameters defaults;
       return "default (" + defaults.smoothing_strategy +
@@ -208,10 +215,12 @@ MapRuns runMap(const Mission& mission, const std::string& out_dir) {
     const PlannerParameters parameters = withStrategy(mission.parameters, Strategy(s));
     // The default selects one of the strategies before it: the same run.
     if (s == kDefault) {
-      const int same = parameters.smoothing_strategy == "local"           ? kLocal
-                       : parameters.smoothing_strategy == "coverage_safe" ? kCoverageSafe
-                       : parameters.coverage_preserving                   ? kGlobalCoverage
-                                                                          : kGlobal;
+      const bool free = parameters.coverage_safe_area == "free";
+      const int same = parameters.smoothing_strategy == "local" ? kLocal
+                       : parameters.smoothing_strategy == "coverage_safe"
+                           ? (free ? kCoverageSafeFree : kCoverageSafe)
+                       : parameters.coverage_preserving ? kGlobalCoverage
+                                                        : kGlobal;
       result.runs[s] = result.runs[same];
       continue;
     }

@@ -55,6 +55,7 @@ const std::vector<ParameterField>& parameterFields() {
       {"arc_sampling_distance", &P::arc_sampling_distance},
       {"rotation_sampling_angle", &P::rotation_sampling_angle},
       {"turn_curve", &P::turn_curve},
+      {"coverage_safe_area", &P::coverage_safe_area},
       {"smoothing_clearance", &P::smoothing_clearance},
       {"curvature_rate_max", &P::curvature_rate_max},
       {"replanning_method", &P::replanning_method},

@@ -59,8 +59,8 @@ std::optional<std::string> smoothingLossWarning(const TrajectoryCoverage& covera
   out.precision(4);
   out << "smoothing loses " << lost->area_m2 << " m^2 (" << lost->percent_of_free_area
       << " % of the free area) that the unsmoothed trajectory sees, " << lost->reachable_area_m2
-      << " m^2 of it in the reachable area and the rest beyond it, where no stage guards what "
-         "the sensor sees; smoothing: false sees it";
+      << " m^2 of it in the reachable area and the rest beyond it; coverage_safe_area: free "
+         "(with smoothing_strategy: coverage_safe) or smoothing: false keeps it";
   return out.str();
 }
 

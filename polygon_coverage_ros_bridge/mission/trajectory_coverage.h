@@ -47,8 +47,9 @@ TrajectoryCoverage measureTrajectoryCoverage(
 /// centroid); none otherwise.
 std::optional<std::string> reachableCoverageWarning(const TrajectoryCoverage& coverage);
 
-/// Smoothing lets the sensor see less than the unsmoothed trajectory where no stage guards
-/// the area (beyond the reachable area) or within the coverage-safe tolerance: a warning
+/// Smoothing lets the sensor see less than the unsmoothed trajectory where its strategy does
+/// not guard the area (beyond the reachable area, unless coverage_safe_area: free) or within
+/// the coverage-safe tolerance: a warning
 /// when the trajectory fails to see more than this share of the free area (percent) that
 /// its unsmoothed trajectory sees.
 constexpr double kSmoothingLossWarningPercent = 0.1;

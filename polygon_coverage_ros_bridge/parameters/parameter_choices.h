@@ -40,6 +40,8 @@ inline constexpr ParameterChoices<SmoothingStrategy, 3> kSmoothingStrategies{
     {{"coverage_safe", SmoothingStrategy::kCoverageSafe},
      {"global", SmoothingStrategy::kGlobal},
      {"local", SmoothingStrategy::kLocal}}};
+inline constexpr ParameterChoices<CoverageSafeArea, 2> kCoverageSafeAreas{
+    {{"free", CoverageSafeArea::kFree}, {"reachable", CoverageSafeArea::kReachable}}};
 inline constexpr ParameterChoices<TurnCurve, 2> kTurnCurves{
     {{"arc", TurnCurve::kArc}, {"clothoid", TurnCurve::kClothoid}}};
 inline constexpr ParameterChoices<VehicleModel, 2> kVehicleModels{

@@ -104,6 +104,7 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   choiceOf("offset_parts", p.offset_parts, kOffsetParts);
   choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies);
   choiceOf("turn_curve", p.turn_curve, kTurnCurves);
+  choiceOf("coverage_safe_area", p.coverage_safe_area, kCoverageSafeAreas);
   requirePositive("curvature_rate_max", p.curvature_rate_max, "1/m^2");
   requireNonNegative("smoothing_clearance", p.smoothing_clearance, "m");
   if (!(std::isfinite(p.min_turning_radius) && p.min_turning_radius >= 0.0 &&

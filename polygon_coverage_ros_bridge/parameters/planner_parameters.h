@@ -41,13 +41,15 @@ struct PlannerParameters {
   /// m, coverage_safe only: the largest radius a corner may use, so that an arc is driven
   /// at up to v_max; 0: max(turning_radius, v_max / yaw_rate_max).
   double max_turning_radius = 0.0;
-  bool coverage_preserving = false;        ///< global only: smooth only where nothing goes unseen
-  double segment_sampling_distance = 0.5;  ///< m
-  double arc_sampling_distance = 0.1;      ///< m
-  double rotation_sampling_angle = 0.2;    ///< rad
-  std::string turn_curve = "arc";          ///< "arc" or "clothoid"
-  double smoothing_clearance = 0.0;        ///< m: arcs' least distance to walls and obstacles
-  double curvature_rate_max = 2.0;         ///< 1/m^2, clothoid turns only
+  bool coverage_preserving = false;  ///< global only: smooth only where nothing goes unseen
+  /// coverage_safe only: "reachable" or "free", what is kept of what the unsmoothed path sees
+  std::string coverage_safe_area = "reachable";
+  double segment_sampling_distance = 0.5;       ///< m
+  double arc_sampling_distance = 0.1;           ///< m
+  double rotation_sampling_angle = 0.2;         ///< rad
+  std::string turn_curve = "arc";               ///< "arc" or "clothoid"
+  double smoothing_clearance = 0.0;             ///< m: arcs' least distance to walls and obstacles
+  double curvature_rate_max = 2.0;              ///< 1/m^2, clothoid turns only
   std::string replanning_method = "footprint";  ///< "convex_hull", "concave_hull", "footprint"
   double replanning_sliver_fraction =
       0.2;                           ///< remaining parts narrower than this x sweep spacing go

@@ -37,6 +37,8 @@ GlobalSmoothingOptions globalSmoothingOptions(const PlannerParameters& p) {
   if (choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies) ==
       SmoothingStrategy::kCoverageSafe) {
     options.makeCoverageSafe(sensor, p.wall_distance);
+    options.coverage_safe_area =
+        choiceOf("coverage_safe_area", p.coverage_safe_area, kCoverageSafeAreas);
     options.max_turning_radius = p.max_turning_radius > 0.0
                                      ? p.max_turning_radius
                                      : std::max(p.turning_radius, p.v_max / p.yaw_rate_max);

@@ -87,6 +87,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"min_turning_radius", "1.5"},
       {"max_turning_radius", "4"},
       {"coverage_preserving", "true"},
+      {"coverage_safe_area", "free"},
       {"segment_sampling_distance", "0.25"},
       {"arc_sampling_distance", "0.05"},
       {"rotation_sampling_angle", "0.1"},
@@ -157,6 +158,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.min_turning_radius, 1.5);
   EXPECT_EQ(p.max_turning_radius, 4.0);
   EXPECT_TRUE(p.coverage_preserving);
+  EXPECT_EQ(p.coverage_safe_area, "free");
   EXPECT_EQ(p.segment_sampling_distance, 0.25);
   EXPECT_EQ(p.arc_sampling_distance, 0.05);
   EXPECT_EQ(p.rotation_sampling_angle, 0.1);

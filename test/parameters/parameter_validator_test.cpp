@@ -124,6 +124,8 @@ TEST(ParameterValidator, RejectsUnknownNames) {
             "sensor_model = '' is not one of: frustum, line");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.replanning_method = "alpha"; }),
             "replanning_method = 'alpha' is not one of: convex_hull, concave_hull, footprint");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.coverage_safe_area = "all"; }),
+            "coverage_safe_area = 'all' is not one of: free, reachable");
 }
 
 TEST(ParameterValidator, ChecksTheRobotModelsRanges) {

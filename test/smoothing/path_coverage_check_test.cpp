@@ -80,6 +80,30 @@ TEST(PathCoverageCheck, ARightAngleAtTheWallsLosesNothingReachable) {
             kRoundingCells);
 }
 
+TEST(PathCoverageCheck, GuardingTheFreeAreaKeepsTheWallBandBeyondTheReachableArea) {
+  // A footprint 4 m wide and 0.5 m long, 1 m from the walls: the reachable area reaches
+  // only 0.25 m beyond the offset free area, while the sharp path's legs along the walls and
+  // its turn in place see the wall band beyond it. An acute corner cut by a 1 m inner arc
+  // loses its tip: of the reachable area, and more of the free area, whose check
+  // (coverage_safe_area: free) counts the band too. The sharp path loses nothing of either.
+  const FrustumSensor narrow(4.0, 0.5, 0.0);
+  PolygonWithHoles area;
+  area.hull = {{-1, -1}, {21, -1}, {21, 21}, {-1, 21}};
+  const std::vector<Point2> corner{{0, 0}, {20, 0}, {12, 6}};
+  ReplacedStretch stretch;
+  const std::vector<PathPrimitive> cut = withInnerArc(corner, 1, 1.0, &stretch);
+  PathCoverageCheck reachable(area, 1.0, {}, narrow, corner);
+  PathCoverageCheck free(area, 1.0, {}, narrow, corner, CoverageSafeArea::kFree);
+  const double reachable_lost = reachable.lostCells(cut, {stretch}).front() * reachable.cellArea();
+  const double free_lost = free.lostCells(cut, {stretch}).front() * free.cellArea();
+  EXPECT_GT(reachable_lost, 0.5);              // m^2
+  EXPECT_GT(free_lost, reachable_lost + 1.0);  // m^2
+  const std::vector<std::optional<CornerSmoothing>> sharp(1);
+  EXPECT_EQ(
+      free.lostCells(SmoothedPathAssembler::assemble(corner, sharp).primitives, {stretch}).front(),
+      0u);
+}
+
 TEST(PathCoverageCheck, LaterCallsCountAsAFreshCheckDoes) {
   // A lawnmower of five lanes; the rounds of coverage-safe smoothing ask about one choice
   // of corner arcs after another. Each answer, from the remembered stretches and the

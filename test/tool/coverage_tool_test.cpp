@@ -295,22 +295,26 @@ TEST(CoverageTool, PlansEveryPartOfASplitAreaAndNamesTheGap) {
   EXPECT_GE(metric(partial, "unseen_reachable_area_m2"), 144.0) << partial;
 }
 
+const std::string kLake75 = std::string(KC_SOURCE_DIR) + "/config/missions/lake_7_5.yaml";
+
+/// `coverage_tool plan` of lake_7_5.yaml into the scratch directory `name` with `options`,
+/// expecting success: the run and its metrics.json.
+std::pair<ToolRun, std::string> planLake75(const std::string& name, const std::string& options) {
+  const std::string out_dir = scratchDir() + "/" + name;
+  std::filesystem::remove_all(out_dir);
+  const ToolRun run = runTool("plan '" + kLake75 + "' --out '" + out_dir + "' " + options);
+  EXPECT_EQ(run.exit_status, 0) << name;
+  return {run, readText(out_dir + "/metrics.json")};
+}
+
 TEST(CoverageTool, WarnsWhenSmoothingLosesWhatTheUnsmoothedTrajectorySees) {
   // lake_7_5's footprint is 1.72 m wide and 0.21 m long: the reachable area reaches 0.11 m
   // beyond the 0.4 m wall distance, while the unsmoothed trajectory, along the walls between
   // lanes and turning in place, sees more of the wall band. The default smoothing keeps the
   // reachable area but not that: the loss is measured, at least the difference of the two
   // coverage losses (54.57 m^2 of free area), mostly beyond the reachable area, and warned of.
-  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_7_5.yaml";
-  const auto plan = [&](const std::string& name, const std::string& options) {
-    const std::string out_dir = scratchDir() + "/" + name;
-    std::filesystem::remove_all(out_dir);
-    const ToolRun run = runTool("plan '" + lake + "' --out '" + out_dir + "' " + options);
-    EXPECT_EQ(run.exit_status, 0) << name;
-    return std::make_pair(run, readText(out_dir + "/metrics.json"));
-  };
-  const auto [smoothed_run, smoothed] = plan("smoothing_loss", "");
-  const auto [sharp_run, sharp] = plan("smoothing_loss_sharp", "--set smoothing=false");
+  const auto [smoothed_run, smoothed] = planLake75("smoothing_loss", "");
+  const auto [sharp_run, sharp] = planLake75("smoothing_loss_sharp", "--set smoothing=false");
   constexpr double kFreeArea = 7.5 * 7.5 - 1.2 * 1.4;
   const double lost = metric(smoothed, "smoothing_lost_area_m2");
   EXPECT_GE(lost,
@@ -325,18 +329,22 @@ TEST(CoverageTool, WarnsWhenSmoothingLosesWhatTheUnsmoothedTrajectorySees) {
       << smoothed_run.err_lines[0];
   EXPECT_TRUE(std::isnan(metric(sharp, "smoothing_lost_area_m2"))) << sharp;
   EXPECT_TRUE(sharp_run.err_lines.empty());
+
+  // coverage_safe_area: free keeps the wall band too, still faster than unsmoothed.
+  const auto [kept_run, kept] = planLake75("smoothing_loss_free", "--set coverage_safe_area=free");
+  EXPECT_LT(metric(kept, "smoothing_lost_area_m2"), 0.1 / 100.0 * kFreeArea) << kept;
+  EXPECT_LE(metric(kept, "coverage_loss_percent"), metric(sharp, "coverage_loss_percent") + 0.1)
+      << kept;
+  EXPECT_GT(metric(kept, "turns_smoothed"), 0.0) << kept;
+  EXPECT_LT(metric(kept, "traversal_time_s"), metric(sharp, "traversal_time_s")) << kept;
+  EXPECT_TRUE(kept_run.err_lines.empty()) << kept_run.err_lines.front();
 }
 
 TEST(CoverageTool, TheThesisPresetIsOneSwitchAway) {
   // --config config/thesis.yaml plans as the thesis did: Choset's cells, Algorithm 1's
   // smoothing and no coverage repair, the same as setting the three, and unlike the defaults.
-  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_7_5.yaml";
-  const auto traversal_time = [&](const std::string& name, const std::string& options) {
-    const std::string out_dir = scratchDir() + "/" + name;
-    std::filesystem::remove_all(out_dir);
-    const ToolRun run = runTool("plan '" + lake + "' --out '" + out_dir + "' " + options);
-    EXPECT_EQ(run.exit_status, 0) << name;
-    return metric(readText(out_dir + "/metrics.json"), "traversal_time_s");
+  const auto traversal_time = [](const std::string& name, const std::string& options) {
+    return metric(planLake75(name, options).second, "traversal_time_s");
   };
   const double thesis =
       traversal_time("thesis", "--config '" + std::string(KC_SOURCE_DIR) + "/config/thesis.yaml'");
@@ -345,7 +353,7 @@ TEST(CoverageTool, TheThesisPresetIsOneSwitchAway) {
                            "--set cell_joining=critical_points --set smoothing_strategy=local "
                            "--set coverage_repair=false"));
   EXPECT_NE(thesis, traversal_time("default", ""));
-  expectInvalid("plan '" + lake + "' --out '" + scratchDir() + "/x' --config /nonexistent.yaml",
+  expectInvalid("plan '" + kLake75 + "' --out '" + scratchDir() + "/x' --config /nonexistent.yaml",
                 "/nonexistent.yaml");
 }
 

@@ -6,6 +6,7 @@
 #include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "trajectory_generation_tools/smoothing/smoothing_strategy.h"
 
 namespace kinematic_coverage::core {
 
@@ -34,6 +35,9 @@ struct GlobalSmoothingOptions {
   /// Coverage-safe only: the planner's wall distance (m, >= 0), which shapes the reachable
   /// area whose coverage is kept.
   double wall_distance = 0.0;
+  /// Coverage-safe only: what is kept of what the sharp path sees, the reachable area or
+  /// all of the free area (`coverage_safe_area`).
+  CoverageSafeArea coverage_safe_area = CoverageSafeArea::kReachable;
   /// Coverage-safe only: the offset free area of the free area and wall_distance
   /// (computeOffsetFreeArea's parts), whose rim bounds the reachable area, when the caller
   /// has it (a plan's `offset_parts`); empty: computed from the free area.

@@ -140,7 +140,7 @@ std::size_t lostCellsIn(const CoverageRaster& raster, const CellWindow& window,
 PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
                                      const std::vector<PolygonWithHoles>& offset_parts,
                                      const FrustumSensor& sensor,
-                                     const std::vector<Point2>& waypoints)
+                                     const std::vector<Point2>& waypoints, CoverageSafeArea guarded)
     : sensor_(sensor) {
   if (!(wall_distance >= 0.0) || !std::isfinite(wall_distance)) {
     throw InvalidInputError("coverage-safe smoothing: wall distance " +
@@ -169,6 +169,8 @@ PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double w
 
   if (free_area.hull.empty()) {
     reachable_.assign(raster_->cellCount(), 1);
+  } else if (guarded == CoverageSafeArea::kFree) {
+    reachable_ = raster_->rasterize(free_area);
   } else {
     const std::vector<PolygonWithHoles> parts =
         offset_parts.empty() ? computeOffsetFreeArea(free_area, wall_distance).parts : offset_parts;

@@ -9,6 +9,7 @@
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
 #include "trajectory_generation_tools/path/path_primitive.h"
+#include "trajectory_generation_tools/smoothing/smoothing_strategy.h"
 
 namespace kinematic_coverage::core {
 
@@ -40,12 +41,14 @@ class PathCoverageCheck {
   /// sees of the reachable area of `free_area` (an empty hull: the unbounded plane, all of
   /// it reachable) with walls kept `wall_distance` away: the free cells whose centres lie
   /// within half a footprint length of `offset_parts`, the offset free area's polygons
-  /// (empty: computeOffsetFreeArea's), measured as the coverage report measures them.
-  /// Throws InvalidInputError for a non-finite coordinate or a negative or non-finite wall
-  /// distance.
+  /// (empty: computeOffsetFreeArea's), measured as the coverage report measures them. With
+  /// `guarded` kFree every free cell counts as reachable does below: the check then keeps
+  /// all that the sharp path sees. Throws InvalidInputError for a non-finite coordinate or
+  /// a negative or non-finite wall distance.
   PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
                     const std::vector<PolygonWithHoles>& offset_parts, const FrustumSensor& sensor,
-                    const std::vector<Point2>& waypoints);
+                    const std::vector<Point2>& waypoints,
+                    CoverageSafeArea guarded = CoverageSafeArea::kReachable);
 
   /// Per stretch, the reachable cells within the sensor's reach of it (half the
   /// footprint's diagonal) that the sharp path sees and the path of `primitives`

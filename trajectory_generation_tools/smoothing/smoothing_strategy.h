@@ -13,4 +13,14 @@ enum class SmoothingStrategy {
   kLocal,
 };
 
+/// What coverage-safe smoothing keeps of what the sharp path sees (`coverage_safe_area`).
+enum class CoverageSafeArea {
+  /// The reachable area: what the robot sees whichever way it faces from the offset free
+  /// area's edge.
+  kReachable,
+  /// All of the free area, the wall band beyond the reachable area included, which lanes
+  /// along a wall and turns in place see.
+  kFree,
+};
+
 }  // namespace kinematic_coverage::core
