@@ -49,9 +49,8 @@ std::optional<std::string> reachableCoverageWarning(const TrajectoryCoverage& co
 
 /// Smoothing lets the sensor see less than the unsmoothed trajectory where its strategy does
 /// not guard the area (beyond the reachable area, unless coverage_safe_area: free) or within
-/// the coverage-safe tolerance: a warning
-/// when the trajectory fails to see more than this share of the free area (percent) that
-/// its unsmoothed trajectory sees.
+/// the coverage-safe tolerance: a warning when the trajectory fails to see more than this
+/// share of the free area (percent) that its unsmoothed trajectory sees.
 constexpr double kSmoothingLossWarningPercent = 0.1;
 
 /// A warning when `coverage.lost_to_reference` (the smoothed trajectory against its
