@@ -26,7 +26,7 @@ def main():
             return json.load(stream)
 
     names = [f'{mission}_{strategy}' for mission in ('lake_30x30', 'lake_7_5', 'lake_7_5_high_gain')
-             for strategy, _ in STRATEGIES] + ['lake_30x30_current', 'lake_30x30_clearance'] + [
+             for strategy, _ in STRATEGIES] + ['lake_30x30_current', 'lake_30x30_no_contact'] + [
                  f'{mission}_{strategy}_calm_{vehicle}' for mission in ('lake_30x30', 'lake_7_5')
                  for strategy, vehicle in [(strategy, 'dynamic') for strategy, _ in STRATEGIES] +
                  [('local', 'kinematic'), ('unsmoothed', 'kinematic')]] + [
@@ -164,8 +164,9 @@ with this document (all of them are machine-independent: the simulation runs at 
 step). The thesis compared smoothed and unsmoothed trajectories on the Proteus vehicle in
 Lake Zurich (Chapter 4, Tables 4.1 to 4.3). Here the vehicle is the robot model of
 `coverage_tool simulate` and of the `auv_simulator` node. Each mission is planned four
-times with `coverage_tool plan`: smoothed by the thesis's Algorithm 1
-(`smoothing_strategy: local`), smoothed with the default strategy (`coverage_safe`: every
+times with `coverage_tool plan`: smoothed by the thesis's Algorithm 1 with its
+no-contact check (`smoothing_strategy: local`, `smoothing_clearance: 0`), smoothed with the
+default strategy (`coverage_safe`, keeping its turns at the wall distance: every
 corner's smoothing chosen jointly to minimise the traversal time while the path as a whole
 still sees the reachable area the unsmoothed path sees), the same with continuous-curvature turns
 (`turn_curve: clothoid`: clothoid-arc-clothoid instead of an arc between two legs, where
@@ -252,8 +253,8 @@ the same for every trajectory: `config/default.yaml`, i.e. the dynamic vehicle, 
 `sim_dt` 0.1 s, in the lake.
 
     coverage_tool plan config/missions/lake_30x30.yaml --out DIR \\
-        --set smoothing=true --set smoothing_strategy=local     # or the default, with or
-                                   # without --set turn_curve=clothoid, or smoothing=false
+        --set smoothing=true --set smoothing_strategy=local --set smoothing_clearance=0
+        # or the default, with or without --set turn_curve=clothoid, or smoothing=false
     coverage_tool simulate config/missions/lake_30x30.yaml --trajectory DIR/trajectory.csv --out SIM \\
         --set current_sigma=0.02 --set navigation_sigma=0.1
 
@@ -310,15 +311,15 @@ The thesis's two findings, turning in place is faster (the thesis: the unsmoothe
   arcs' ({metres(calm_clothoid1[1])} against {metres(calm_default1[1])}; tracked better than arcs: {holds(calm_clothoid1[1] < calm_default1[1])}), still not better
   than unsmoothed ({metres(calm_unsmoothed1[1])}).
 
-Clearance, which the thesis does not measure: the smoothed trajectories' arcs may run
-in the wall band (the planned trajectories come within
-{metres(plan['lake_30x30_local']['min_obstacle_clearance_m'], 3)} (Algorithm 1) and {metres(plan['lake_30x30_default']['min_obstacle_clearance_m'], 3)} (default) of a wall or obstacle), and with the
-lake's navigation error the robot drove within {metres(sim['lake_30x30_local']['driven_min_clearance_m'], 3)} and {metres(sim['lake_30x30_default']['driven_min_clearance_m'], 3)} of one; the unsmoothed
-trajectory keeps {metres(plan['lake_30x30_unsmoothed']['min_obstacle_clearance_m'], 3)} planned and {metres(sim['lake_30x30_unsmoothed']['driven_min_clearance_m'], 3)} driven. A vehicle with 0.1 m of navigation
-error needs its turns kept farther off: with `--set smoothing_clearance=0.3` (three
-standard deviations of the navigation error) the default strategy smooths
-{plan['lake_30x30_clearance']['turns_smoothed']} of {plan['lake_30x30_clearance']['turns_total']} turns, keeps {metres(plan['lake_30x30_clearance']['min_obstacle_clearance_m'], 3)} planned and {metres(sim['lake_30x30_clearance']['driven_min_clearance_m'], 3)} driven, and loses
-{percent(plan['lake_30x30_clearance']['coverage_loss_percent'])} of coverage as planned ({seconds(plan['lake_30x30_clearance']['traversal_time_s'])} planned against {seconds(plan['lake_30x30_default']['traversal_time_s'])}).
+Clearance, which the thesis does not measure: Algorithm 1 with the thesis's no-contact
+check runs its arcs in the wall band (the planned trajectory comes within
+{metres(plan['lake_30x30_local']['min_obstacle_clearance_m'], 3)} of a wall or obstacle), and with the lake's navigation error the robot drove
+within {metres(sim['lake_30x30_local']['driven_min_clearance_m'], 3)} of one. The default strategy keeps its turns at the wall distance: it comes
+no nearer than {metres(plan['lake_30x30_default']['min_obstacle_clearance_m'], 3)} planned and {metres(sim['lake_30x30_default']['driven_min_clearance_m'], 3)} driven, as the unsmoothed trajectory
+({metres(plan['lake_30x30_unsmoothed']['min_obstacle_clearance_m'], 3)} planned, {metres(sim['lake_30x30_unsmoothed']['driven_min_clearance_m'], 3)} driven). With the thesis's check instead
+(`--set smoothing_clearance=0`) the default strategy smooths
+{plan['lake_30x30_no_contact']['turns_smoothed']} of {plan['lake_30x30_no_contact']['turns_total']} turns (against {plan['lake_30x30_default']['turns_smoothed']}), comes within {metres(plan['lake_30x30_no_contact']['min_obstacle_clearance_m'], 3)} planned and {metres(sim['lake_30x30_no_contact']['driven_min_clearance_m'], 3)}
+driven, and takes {seconds(plan['lake_30x30_no_contact']['traversal_time_s'])} planned against {seconds(plan['lake_30x30_default']['traversal_time_s'])}.
 
 Where the numbers differ from the thesis, and why:
 
@@ -391,7 +392,8 @@ as in experiment 1 but `yaw_gain` 2 1/s (from 5) and `rotation_sampling_angle` 0
 lake.
 
     coverage_tool plan config/missions/lake_7_5.yaml --out DIR --set smoothing=true \\
-        --set smoothing_strategy=local --set yaw_gain=2 --set rotation_sampling_angle=0.1
+        --set smoothing_strategy=local --set smoothing_clearance=0 --set yaw_gain=2 \\
+        --set rotation_sampling_angle=0.1
     coverage_tool simulate config/missions/lake_7_5.yaml --trajectory DIR/trajectory.csv --out SIM \\
         --set yaw_gain=2 --set rotation_sampling_angle=0.1 \\
         --set current_sigma=0.02 --set navigation_sigma=0.1

@@ -2,7 +2,8 @@
 # Regenerates the README's pictures with the default parameters, each from coverage_tool:
 #   docs/images/lake_30x30_plan.png            plan config/missions/lake_30x30.yaml
 #   docs/images/parallelogram_60_smoothed.png  plan config/missions/parallelogram_60.yaml,
-#                                              smoothing_strategy local (the thesis's)
+#                                              smoothing_strategy local with smoothing_clearance
+#                                              0 (the thesis's)
 #   docs/images/parallelogram_60_unsmoothed.png the same, smoothing false
 #   docs/images/lake_30x30_replan.png          replan the lake after 40 % of its trajectory,
 #                                              both obstacles moved by (2, 1) m
@@ -22,10 +23,9 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
 if [ "${1:-}" = --print ]; then
-  for strategy in local coverage_safe; do
-    "$tool" plan "$missions/parallelogram_60.yaml" --out "$out/$strategy" \
-      --set smoothing_strategy=$strategy >/dev/null 2>&1
-  done
+  "$tool" plan "$missions/parallelogram_60.yaml" --out "$out/local" \
+    --set smoothing_strategy=local --set smoothing_clearance=0 >/dev/null 2>&1
+  "$tool" plan "$missions/parallelogram_60.yaml" --out "$out/coverage_safe" >/dev/null 2>&1
   "$tool" plan "$missions/parallelogram_60.yaml" --out "$out/sharp" --set smoothing=false \
     >/dev/null 2>&1
   /usr/bin/python3 - "$out" <<'EOF'
@@ -52,7 +52,7 @@ fi
 cp "$out/lake/plot.png" "$images/lake_30x30_plan.png"
 
 "$tool" plan "$missions/parallelogram_60.yaml" --out "$out/local" \
-  --set smoothing_strategy=local >/dev/null
+  --set smoothing_strategy=local --set smoothing_clearance=0 >/dev/null
 cp "$out/local/plot.png" "$images/parallelogram_60_smoothed.png"
 "$tool" plan "$missions/parallelogram_60.yaml" --out "$out/sharp" --set smoothing=false >/dev/null
 cp "$out/sharp/plot.png" "$images/parallelogram_60_unsmoothed.png"

@@ -50,9 +50,10 @@ lake=(--set current_sigma=0.02 --set navigation_sigma=0.1)
 robot_high_gain=()
 robot_low_gain=(--set yaw_gain=2 --set rotation_sampling_angle=0.1)
 current=(--set current_x=0.2 --set current_y=0.1)
-# The four trajectories of each run: Algorithm 1, the default strategy, the default strategy
-# with continuous-curvature (clothoid) turns, unsmoothed.
-local_smoothing=(--set smoothing=true --set smoothing_strategy=local)
+# The four trajectories of each run: Algorithm 1 (with the thesis's no-contact check), the
+# default strategy, the default strategy with continuous-curvature (clothoid) turns,
+# unsmoothed.
+local_smoothing=(--set smoothing=true --set smoothing_strategy=local --set smoothing_clearance=0)
 default_smoothing=(--set smoothing=true)
 clothoid_smoothing=(--set smoothing=true --set turn_curve=clothoid)
 no_smoothing=(--set smoothing=false)
@@ -96,8 +97,8 @@ for strategy in local default clothoid unsmoothed; do
     "${lake[@]}"
 done
 run lake_30x30_current lake_30x30 "${default_smoothing[@]}" "${current[@]}" "${lake[@]}"
-# The default strategy keeping its turns three navigation errors off the walls and obstacles.
-run lake_30x30_clearance lake_30x30 "${default_smoothing[@]}" --set smoothing_clearance=0.3 \
+# The default strategy with the thesis's no-contact check instead of the wall distance.
+run lake_30x30_no_contact lake_30x30 "${default_smoothing[@]}" --set smoothing_clearance=0 \
   "${robot_high_gain[@]}" "${lake[@]}"
 # The same trajectories in calm water with exact navigation, with the dynamic vehicle and
 # with the first, kinematic one, for comparison.

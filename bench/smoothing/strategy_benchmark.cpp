@@ -27,6 +27,12 @@
 // see of what the unsmoothed trajectory sees (metrics.json's smoothing_lost_area_m2, as a
 // share of the free area): median, worst, the maps over plan's warning threshold, and the
 // largest reachable part.
+// Table 5, per family, batch and lake set, for the default and the unsmoothed trajectory:
+// whether the trajectory keeps the wall distance (metrics.json's min_obstacle_clearance_m,
+// which leaves out the way in from a start in the wall band and out to such a goal): the
+// least ratio of closest approach to wall_distance and the maps nearer than wall_distance
+// by more than kClearanceTolerance; the share of turns smoothed, the median traversal time
+// and its median ratio to the unsmoothed trajectory's.
 //
 // Usage: strategy_benchmark [--maps N[,N...]] [--families comb,spiral,...] [--lakes 10]
 //                           [--per-map]
@@ -44,6 +50,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -51,6 +58,7 @@
 
 #include "bench/support/median.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
@@ -195,6 +203,7 @@ struct Run {
   double wall_s = 0.0;  ///< planning + trajectory + coverage + writing the files
   int turns_smoothed = 0;
   int turns_total = 0;
+  double min_clearance_m = 0.0;  ///< metrics.json's min_obstacle_clearance_m
   /// What the trajectory fails to see of what the unsmoothed one sees (zero unsmoothed).
   LostArea lost;
 };
@@ -202,7 +211,8 @@ struct Run {
 /// Every strategy's run on one mission, planned once.
 struct MapRuns {
   Run runs[kStrategies];
-  double time_cost_s = 0.0;  ///< the plan's
+  double time_cost_s = 0.0;    ///< the plan's
+  double wall_distance = 0.0;  ///< m, the map's
 };
 
 MapRuns runMap(const Mission& mission, const std::string& out_dir) {
@@ -211,6 +221,7 @@ MapRuns runMap(const Mission& mission, const std::string& out_dir) {
   const PlannedMission planned = planMission(mission);
   const double planning_s = secondsSince(planning_started);
   result.time_cost_s = planned.plan.time_cost_s;
+  result.wall_distance = mission.parameters.wall_distance;
   for (int s = 0; s < kStrategies; ++s) {
     const PlannerParameters parameters = withStrategy(mission.parameters, Strategy(s));
     // The default selects one of the strategies before it: the same run.
@@ -241,6 +252,7 @@ MapRuns runMap(const Mission& mission, const std::string& out_dir) {
     run.traversal_time_s = outputs.traversal_time_s;
     run.turns_smoothed = outputs.turns.turns_smoothed;
     run.turns_total = outputs.turns.turns_total;
+    run.min_clearance_m = outputs.min_obstacle_clearance_m;
     if (outputs.smoothing_loss) run.lost = *outputs.smoothing_loss;
   }
   return result;
@@ -292,6 +304,39 @@ void printLossTable(const std::vector<MapSet>& sets) {
       std::printf("| %s | %s | %.3f | %.3f | %d | %.3f |\n", set.label.c_str(),
                   strategyName(Strategy(s)).c_str(), median(lost),
                   *std::max_element(lost.begin(), lost.end()), warned, reachable);
+    }
+  }
+}
+
+/// Table 5: per set, for the default and the unsmoothed trajectory, whether it keeps the
+/// wall distance, its turns smoothed and its traversal time.
+void printClearanceTable(const std::vector<MapSet>& sets) {
+  std::printf(
+      "\n| family, maps | strategy | maps | closest approach / wall_distance, least | maps "
+      "nearer than wall_distance | turns smoothed %% | traversal time s, median | traversal "
+      "time ratio to unsmoothed, median |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
+  for (const MapSet& set : sets) {
+    for (const Strategy strategy : {kDefault, kUnsmoothed}) {
+      double least = std::numeric_limits<double>::infinity();
+      int nearer = 0;
+      int smoothed = 0;
+      int total = 0;
+      std::vector<double> times;
+      std::vector<double> ratios;
+      for (const MapRuns& map : set.maps) {
+        const Run& run = map.runs[strategy];
+        if (map.wall_distance > 0.0 && std::isfinite(run.min_clearance_m)) {
+          least = std::min(least, run.min_clearance_m / map.wall_distance);
+          nearer += run.min_clearance_m < map.wall_distance - kClearanceTolerance ? 1 : 0;
+        }
+        smoothed += run.turns_smoothed;
+        total += run.turns_total;
+        times.push_back(run.traversal_time_s);
+        ratios.push_back(run.traversal_time_s / map.runs[kUnsmoothed].traversal_time_s);
+      }
+      std::printf("| %s | %s | %zu | %.3f | %d | %.1f | %.2f | %.3f |\n", set.label.c_str(),
+                  strategyName(strategy).c_str(), set.maps.size(), least, nearer,
+                  total > 0 ? 100.0 * smoothed / total : 100.0, median(times), median(ratios));
     }
   }
 }
@@ -419,15 +464,19 @@ int run(const Options& options) {
       "worst |\n|---|---|---:|---:|---:|---:|\n");
   const Mission lake =
       MissionFileReader().read(std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml");
-  printLakeRows("lake_30x30", {runMap(lake, out_dir.path)});
+  std::vector<MapSet> lake_sets = {{"lake_30x30", {runMap(lake, out_dir.path)}}};
+  printLakeRows(lake_sets.back().label, lake_sets.back().maps);
   if (options.lakes > 0) {
     std::vector<MapRuns> lakes;
     for (int seed = 1; seed <= options.lakes; ++seed) {
       lakes.push_back(runMap(testing::LakeMapGenerator().generate(seed), out_dir.path));
     }
-    printLakeRows("lakes 1-" + std::to_string(options.lakes), lakes);
+    lake_sets.push_back({"lakes 1-" + std::to_string(options.lakes), lakes});
+    printLakeRows(lake_sets.back().label, lakes);
   }
   printLossTable(sets);
+  sets.insert(sets.end(), lake_sets.begin(), lake_sets.end());
+  printClearanceTable(sets);
   return failed == 0 ? 0 : 1;
 }
 

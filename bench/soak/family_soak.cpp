@@ -6,7 +6,9 @@
 // an internal one), and for both trajectories:
 //  - every leg from first_inside to last_inside lies in the route area (the offset free
 //    area's parts joined through their gaps), the legs to the start and goal in the free area;
-//  - every pose lies in the free area and the trajectory keeps a clearance above 0;
+//  - every pose lies in the free area and the trajectory keeps a clearance above 0; the
+//    default one keeps the wall distance (within kClearanceTolerance) or comes no nearer
+//    than the unsmoothed one (which passes gaps narrower than two wall distances);
 //  - consecutive poses are at most the sampling distance apart (continuity), and the
 //    curvature is at most 1 / r;
 //  - on maps of at most --oracle-max-vertices vertices (cleaned), the coverage that
@@ -134,19 +136,27 @@ struct MapResult {
   double planning_time_s = 0.0;
 };
 
-/// The failures of one trajectory, one line each (none when it passes).
+/// The failures of one trajectory, one line each (none when it passes). A trajectory
+/// touches no wall, and comes no nearer than `least_clearance_m` (within
+/// kClearanceTolerance); its clearance goes to `clearance_m`.
 std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
                                          const CoveragePlan& plan,
                                          const PlannerParameters& parameters, bool with_oracle,
-                                         double tolerance, const std::string& label,
-                                         MapResult* result) {
+                                         double tolerance, double least_clearance_m,
+                                         const std::string& label, MapResult* result,
+                                         double* clearance_m) {
   std::vector<std::string> failures;
   const GeneratedTrajectory trajectory =
       TrajectoryGenerator(trajectoryOptionsOf(parameters, plan.offset_parts))
           .generate(plan.waypoints, free_area);
+  *clearance_m = trajectory.min_obstacle_clearance_m;
   if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
     failures.push_back("collision: min_obstacle_clearance_m " +
                        std::to_string(trajectory.min_obstacle_clearance_m));
+  } else if (trajectory.min_obstacle_clearance_m < least_clearance_m - kClearanceTolerance) {
+    failures.push_back("clearance: min_obstacle_clearance_m " +
+                       std::to_string(trajectory.min_obstacle_clearance_m) + ", less than " +
+                       std::to_string(least_clearance_m));
   }
   const double spacing =
       std::max(parameters.segment_sampling_distance, parameters.arc_sampling_distance);
@@ -236,16 +246,23 @@ MapResult runMap(const testing::HardMap& map, const Options& options) {
                 << vertexCount(planned.free_area) << " vertices, over the oracle's bound"
                 << std::endl;
     }
-    for (const bool smoothing : {true, false}) {
+    // The unsmoothed trajectory first: the default one keeps the wall distance, or comes
+    // no nearer than that one (which passes gaps narrower than two wall distances).
+    double unsmoothed_clearance = 0.0;
+    for (const bool smoothing : {false, true}) {
       PlannerParameters parameters = map.mission.parameters;
       parameters.smoothing = smoothing;
       const std::string label = family + " seed " + std::to_string(map.seed) +
                                 (smoothing ? ", default" : ", smoothing=false");
+      const double least =
+          smoothing ? std::min(parameters.wall_distance, unsmoothed_clearance) : 0.0;
+      double clearance = 0.0;
       for (const std::string& failure :
            checkTrajectory(planned.free_area, plan, parameters, result.oracle, 1e3 * tolerance,
-                           label, &result)) {
+                           least, label, &result, &clearance)) {
         fail(std::string(smoothing ? "default: " : "smoothing=false: ") + failure);
       }
+      if (!smoothing) unsmoothed_clearance = clearance;
     }
   } catch (const InvalidInputError& error) {
     fail(std::string("exit 2 on a valid map: ") + error.what());

@@ -1,8 +1,9 @@
 // Soak test: plans and smooths seeded random maps with 0 to 15 holes (hulls 50 to 200 m
 // across, footprints 2 to 12.9 m wide), and checks on every seed: no exception but a
 // precise InvalidInputError for a start or goal the map makes impossible, no collision of
-// the smoothed trajectory, and at least 99 % coverage of the reachable area by the waypoint
-// path. Prints a progress line every 100 seeds, each failure with its seed, and a table
+// the smoothed trajectory, which keeps the wall distance (within kClearanceTolerance) or
+// comes no nearer than the unsmoothed trajectory (which passes gaps narrower than two wall
+// distances), and at least 99 % coverage of the reachable area by the waypoint path. Prints a progress line every 100 seeds, each failure with its seed, and a table
 // with a row per seed range (and their total when there are several): the outcomes and the
 // planning-time distribution. Exit status 1 when any seed failed.
 // --trajectory-coverage also measures the smoothed trajectory's reachable coverage and
@@ -127,6 +128,20 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
     if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
       return fail("collision: min_obstacle_clearance_m " +
                   std::to_string(trajectory.min_obstacle_clearance_m));
+    }
+    // The smoothed trajectory keeps the wall distance, or comes no nearer than the
+    // unsmoothed one (which passes gaps narrower than two wall distances).
+    PlannerParameters unsmoothed = mission.parameters;
+    unsmoothed.smoothing = false;
+    const double sharp_clearance =
+        TrajectoryGenerator(trajectoryOptionsOf(unsmoothed, plan.offset_parts))
+            .generate(plan.waypoints, mission.polygon)
+            .min_obstacle_clearance_m;
+    const double least = std::min(mission.parameters.wall_distance, sharp_clearance);
+    if (trajectory.min_obstacle_clearance_m < least - kClearanceTolerance) {
+      return fail("clearance: min_obstacle_clearance_m " +
+                  std::to_string(trajectory.min_obstacle_clearance_m) + ", less than " +
+                  std::to_string(least));
     }
     const double covered = waypointPathReachableCoveragePercent(
         mission.polygon, plan.offset_parts, sensorOf(mission.parameters), plan.waypoints,

@@ -8,6 +8,10 @@ namespace kinematic_coverage::core {
 
 /// Named tolerances for double geometry (metres); topology-deciding predicates use CGAL.
 constexpr double kLengthTolerance = 1e-9;
+/// m: a path keeps a clearance c (wall_distance, smoothing_clearance) when no point of it is
+/// nearer than c minus this to the hull and holes, so that pieces lying on the offset free
+/// area's boundary keep it (docs/REFERENCE.md, Collisions and clearance).
+constexpr double kClearanceTolerance = 1e-3;
 
 /// Signed area of a ring: positive when counter-clockwise.
 double signedArea(const Ring& ring);

@@ -24,7 +24,12 @@ struct ParameterField {
   std::variant<double PlannerParameters::*, bool PlannerParameters::*,
                std::string PlannerParameters::*>
       member;
+  /// A clearance that may also be the word `wall_distance` (kClearanceOfWallDistance).
+  bool takes_wall_distance = false;
 };
+
+/// The word that stands for the wall distance as a clearance's value.
+constexpr const char* kWallDistanceWord = "wall_distance";
 
 const std::vector<ParameterField>& parameterFields() {
   using P = PlannerParameters;
@@ -56,7 +61,7 @@ const std::vector<ParameterField>& parameterFields() {
       {"rotation_sampling_angle", &P::rotation_sampling_angle},
       {"turn_curve", &P::turn_curve},
       {"coverage_safe_area", &P::coverage_safe_area},
-      {"smoothing_clearance", &P::smoothing_clearance},
+      {"smoothing_clearance", &P::smoothing_clearance, true},
       {"curvature_rate_max", &P::curvature_rate_max},
       {"replanning_method", &P::replanning_method},
       {"replanning_sliver_fraction", &P::replanning_sliver_fraction},
@@ -227,7 +232,20 @@ class NodeReader {
                     const YAML::Node& node) const {
     const std::string name = field.name;
     if (auto number_member = std::get_if<double PlannerParameters::*>(&field.member)) {
-      parameters.*(*number_member) = number(node, name, "the value");
+      const bool word =
+          field.takes_wall_distance && node.IsScalar() && node.Scalar() == kWallDistanceWord;
+      if (word) {
+        parameters.*(*number_member) = kClearanceOfWallDistance;
+        return;
+      }
+      const double value = number(node, name, "the value");
+      // A negative clearance would read as the word's stand-in.
+      if (field.takes_wall_distance && value < 0.0) {
+        fail(node, name,
+             "the value " + kindOf(node) + " is negative: it must be a distance >= 0 (m) or " +
+                 kWallDistanceWord);
+      }
+      parameters.*(*number_member) = value;
     } else if (auto flag_member = std::get_if<bool PlannerParameters::*>(&field.member)) {
       bool value = false;
       if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value)) {
@@ -391,10 +409,13 @@ std::string MissionFileReader::parameterText(const PlannerParameters& parameters
   const ParameterField* field = findParameter(name);
   if (field == nullptr) throw InvalidInputError("unknown parameter '" + name + "'");
   return std::visit(
-      [&parameters](auto member) -> std::string {
+      [&parameters, field](auto member) -> std::string {
         const auto& value = parameters.*member;
         using Value = std::decay_t<decltype(value)>;
         if constexpr (std::is_same_v<Value, double>) {
+          if (field->takes_wall_distance && value == kClearanceOfWallDistance) {
+            return kWallDistanceWord;
+          }
           return formatRoundTrip(value);
         } else if constexpr (std::is_same_v<Value, bool>) {
           return value ? "true" : "false";

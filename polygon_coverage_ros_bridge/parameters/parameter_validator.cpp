@@ -106,7 +106,13 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   choiceOf("turn_curve", p.turn_curve, kTurnCurves);
   choiceOf("coverage_safe_area", p.coverage_safe_area, kCoverageSafeAreas);
   requirePositive("curvature_rate_max", p.curvature_rate_max, "1/m^2");
-  requireNonNegative("smoothing_clearance", p.smoothing_clearance, "m");
+  if (p.smoothing_clearance != kClearanceOfWallDistance) {
+    if (!(std::isfinite(p.smoothing_clearance) && p.smoothing_clearance >= 0.0)) {
+      throw InvalidInputError("smoothing_clearance = " + formatNumber(p.smoothing_clearance) +
+                              " is out of range: it must be a finite number >= 0 (m), or "
+                              "wall_distance");
+    }
+  }
   if (!(std::isfinite(p.min_turning_radius) && p.min_turning_radius >= 0.0 &&
         p.min_turning_radius <= p.turning_radius)) {
     throw InvalidInputError(

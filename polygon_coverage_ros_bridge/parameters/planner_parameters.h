@@ -4,6 +4,10 @@
 
 namespace kinematic_coverage::core {
 
+/// The value of smoothing_clearance that stands for the wall distance, written
+/// `wall_distance` in mission files, `--set`, config/*.yaml and the nodes' parameters.
+constexpr double kClearanceOfWallDistance = -1.0;
+
 /// Every parameter (docs/REFERENCE.md, Parameters) with its default. The same names are the keys
 /// of mission files, `--set name=value`, config/default.yaml and the nodes' private
 /// parameters. Units: metres, radians, seconds.
@@ -44,11 +48,13 @@ struct PlannerParameters {
   bool coverage_preserving = false;  ///< global only: smooth only where nothing goes unseen
   /// coverage_safe only: "reachable" or "free", what is kept of what the unsmoothed path sees
   std::string coverage_safe_area = "reachable";
-  double segment_sampling_distance = 0.5;       ///< m
-  double arc_sampling_distance = 0.1;           ///< m
-  double rotation_sampling_angle = 0.2;         ///< rad
-  std::string turn_curve = "arc";               ///< "arc" or "clothoid"
-  double smoothing_clearance = 0.0;             ///< m: arcs' least distance to walls and obstacles
+  double segment_sampling_distance = 0.5;  ///< m
+  double arc_sampling_distance = 0.1;      ///< m
+  double rotation_sampling_angle = 0.2;    ///< rad
+  std::string turn_curve = "arc";          ///< "arc" or "clothoid"
+  /// m: the least distance of smoothed turns to walls and obstacles; by default the wall
+  /// distance (kClearanceOfWallDistance), 0: no contact (the thesis).
+  double smoothing_clearance = kClearanceOfWallDistance;
   double curvature_rate_max = 2.0;              ///< 1/m^2, clothoid turns only
   std::string replanning_method = "footprint";  ///< "convex_hull", "concave_hull", "footprint"
   double replanning_sliver_fraction =

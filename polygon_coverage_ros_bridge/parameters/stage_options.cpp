@@ -16,6 +16,11 @@ VehicleLimits vehicleLimits(const PlannerParameters& p) {
   return VehicleLimits{p.v_max, p.a_max, p.yaw_rate_max, p.turning_radius};
 }
 
+double smoothingClearance(const PlannerParameters& p) {
+  return p.smoothing_clearance == kClearanceOfWallDistance ? p.wall_distance
+                                                           : p.smoothing_clearance;
+}
+
 SensorOptions sensorOptions(const PlannerParameters& p) {
   SensorOptions options;
   options.model = choiceOf("sensor_model", p.sensor_model, kSensorModels);
@@ -31,7 +36,7 @@ GlobalSmoothingOptions globalSmoothingOptions(const PlannerParameters& p) {
   GlobalSmoothingOptions options;
   options.vehicle = vehicleLimits(p);
   options.min_turning_radius = p.min_turning_radius > 0.0 ? p.min_turning_radius : p.turning_radius;
-  options.clearance = p.smoothing_clearance;
+  options.clearance = smoothingClearance(p);
   const FrustumSensor sensor = FrustumSensor::fromOptions(sensorOptions(p));
   if (p.coverage_preserving) options.preserved_sensor = sensor;
   if (choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies) ==
@@ -63,6 +68,10 @@ SensorOptions sensorOptionsOf(const PlannerParameters& parameters) {
 
 FrustumSensor sensorOf(const PlannerParameters& parameters) {
   return FrustumSensor::fromOptions(sensorOptionsOf(parameters));
+}
+
+double smoothingClearanceOf(const PlannerParameters& parameters) {
+  return smoothingClearance(validated(parameters));
 }
 
 double boundarySimplificationOf(const PlannerParameters& parameters) {
@@ -103,6 +112,7 @@ TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters) {
   options.rotation_sampling_angle = p.rotation_sampling_angle;
   options.turn_curve = choiceOf("turn_curve", p.turn_curve, kTurnCurves);
   options.curvature_rate_max = p.curvature_rate_max;
+  options.wall_distance = p.wall_distance;
   return options;
 }
 

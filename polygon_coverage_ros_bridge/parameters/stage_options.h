@@ -30,6 +30,9 @@ SensorOptions sensorOptionsOf(const PlannerParameters& parameters);
 /// The sensor of sensorOptionsOf.
 FrustumSensor sensorOf(const PlannerParameters& parameters);
 
+/// smoothing_clearance in metres: the wall distance unless set otherwise.
+double smoothingClearanceOf(const PlannerParameters& parameters);
+
 /// boundary_simplification as a distance (m): that share of the sensor's sweep distance.
 double boundarySimplificationOf(const PlannerParameters& parameters);
 

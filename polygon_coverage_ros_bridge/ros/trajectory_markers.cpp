@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "polygon_coverage_ros_bridge/ros/plan_markers.h"
 
@@ -37,6 +38,9 @@ visualization_msgs::Marker lineList(const std::string& ns, const std_msgs::Heade
   marker.color.a = 1.0f;
   return marker;
 }
+
+/// m: the closest approach's sphere and the height of its text.
+constexpr double kClosestApproachMarkerSize = 0.6;
 
 }  // namespace
 
@@ -94,6 +98,29 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
        {&segments, &inner, &bisector, &tangent, &reverse, &bulb, &clothoids, &rotations}) {
     if (!marker->points.empty()) markers.markers.push_back(*marker);
   }
+  return markers;
+}
+
+visualization_msgs::MarkerArray closestApproachMarkers(const core::Point2& where,
+                                                       double clearance_m, double wall_distance,
+                                                       const std_msgs::Header& header) {
+  visualization_msgs::Marker sphere = lineList("closest_approach", header, 0.8f, 0.0f, 0.45f);
+  sphere.type = visualization_msgs::Marker::SPHERE;
+  sphere.pose.position = point(where);
+  sphere.scale.x = sphere.scale.y = sphere.scale.z = kClosestApproachMarkerSize;
+  sphere.color.a = 0.8f;
+  visualization_msgs::Marker text = sphere;
+  text.id = 1;
+  text.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+  text.pose.position.z += kClosestApproachMarkerSize;
+  text.scale.x = text.scale.y = 0.0;
+  text.color.a = 1.0f;
+  std::ostringstream label;
+  label.precision(3);
+  label << clearance_m << " m from a wall (wall_distance " << wall_distance << " m)";
+  text.text = label.str();
+  visualization_msgs::MarkerArray markers;
+  markers.markers = {sphere, text};
   return markers;
 }
 

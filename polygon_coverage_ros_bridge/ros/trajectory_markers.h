@@ -16,4 +16,11 @@ namespace kinematic_coverage::nodes {
 visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPrimitive>& path,
                                                   const std_msgs::Header& header);
 
+/// Where the trajectory comes nearer the walls than `wall_distance` (namespace
+/// `closest_approach`): a sphere there and a text naming the distance; to be added to
+/// trajectoryMarkers' array only then.
+visualization_msgs::MarkerArray closestApproachMarkers(const core::Point2& where,
+                                                       double clearance_m, double wall_distance,
+                                                       const std_msgs::Header& header);
+
 }  // namespace kinematic_coverage::nodes

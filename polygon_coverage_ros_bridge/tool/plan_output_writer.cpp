@@ -14,6 +14,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/mission/wall_clearance_warning.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/tool/command_line.h"
@@ -195,6 +196,10 @@ CoveragePlotData planPlot(const PlanOutputRequest& request, const std::vector<Po
           << " of " << turns.turns_total << " turns smoothed  |  " << trajectory.trajectory_length_m
           << " m  |  " << trajectory.traversal_time_s << " s";
   plot.title_lines = {request.title, figures.str()};
+  if (trajectory.min_obstacle_clearance_m <
+      request.parameters->wall_distance - kClearanceTolerance) {
+    plot.closest_approach = trajectory.closest_approach;
+  }
   return plot;
 }
 
@@ -245,6 +250,10 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   if (const std::optional<std::string> warning = smoothingLossWarning(searched)) {
     outputs.warnings.push_back(*warning);
   }
+  if (const std::optional<std::string> warning =
+          wallClearanceWarning(trajectory.min_obstacle_clearance_m, *request.parameters)) {
+    outputs.warnings.push_back(*warning);
+  }
   CoveragePlot().writePng(plot, plot_path);
   outputs.files = {waypoints_path, trajectory_path, metrics_path, plot_path};
   if (request.datum) {
@@ -255,6 +264,7 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   outputs.coverage = coverage.report;
   outputs.turns = trajectory.statistics;
   outputs.traversal_time_s = trajectory.traversal_time_s;
+  outputs.min_obstacle_clearance_m = trajectory.min_obstacle_clearance_m;
   outputs.smoothing_loss = searched.lost_to_reference;
   return outputs;
 }

@@ -42,6 +42,9 @@ struct PlanOutputs {
   CoverageReport coverage;
   SmoothingStatistics turns;
   double traversal_time_s = 0.0;
+  /// The trajectory's closest approach to the hull and holes (metrics.json's
+  /// min_obstacle_clearance_m; infinity where meaningless).
+  double min_obstacle_clearance_m = 0.0;
   /// What a smoothed trajectory fails to see of what its unsmoothed one sees (with the
   /// visited poses when replanning); none when unsmoothed.
   std::optional<LostArea> smoothing_loss;

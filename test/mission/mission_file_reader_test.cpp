@@ -9,6 +9,7 @@
 #include <string>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
@@ -302,6 +303,27 @@ TEST(MissionFileReader, RejectsParametersOutOfRange) {
             "m.yaml:9: turning_radius: the value 'fast' is not a number");
   EXPECT_EQ(errorOf(missionWith("turning_radius", "smoothing: 1.5")),
             "m.yaml:9: smoothing: the value '1.5' is not true or false");
+  EXPECT_EQ(errorOf(missionWith("turning_radius", "smoothing_clearance: -1")),
+            "m.yaml:9: smoothing_clearance: the value '-1' is negative: it must be a distance "
+            ">= 0 (m) or wall_distance");
+  EXPECT_EQ(errorOf(missionWith("turning_radius", "smoothing_clearance: wall")),
+            "m.yaml:9: smoothing_clearance: the value 'wall' is not a number");
+}
+
+TEST(MissionFileReader, ReadsTheWordWallDistanceAsAClearance) {
+  // smoothing_clearance defaults to the wall distance, written as that word; it reads back
+  // as itself, and a number replaces it.
+  const Mission word = MissionFileReader().parse(kMission, "m.yaml", {"wall_distance=2.5"});
+  EXPECT_EQ(word.parameters.smoothing_clearance, kClearanceOfWallDistance);
+  EXPECT_EQ(MissionFileReader::parameterText(word.parameters, "smoothing_clearance"),
+            "wall_distance");
+  EXPECT_EQ(smoothingClearanceOf(word.parameters), 2.5);
+  const Mission number = MissionFileReader().parse(kMission, "m.yaml", {"smoothing_clearance=0.3"});
+  EXPECT_EQ(smoothingClearanceOf(number.parameters), 0.3);
+  const Mission back =
+      MissionFileReader().parse(missionWith("turning_radius", "smoothing_clearance: wall_distance"),
+                                "m.yaml", {"wall_distance=0.7"});
+  EXPECT_EQ(smoothingClearanceOf(back.parameters), 0.7);
 }
 
 TEST(MissionFileReader, ReadsFilesAndReportsMissingOnes) {
@@ -351,7 +373,8 @@ TEST(ThesisYaml, DiffersFromTheDefaultsOnlyWhereTheDefaultsGoBeyondTheThesis) {
   const std::map<std::string, std::string> thesis_values = {{"cell_joining", "critical_points"},
                                                             {"smoothing_strategy", "local"},
                                                             {"coverage_repair", "false"},
-                                                            {"boundary_simplification", "0"}};
+                                                            {"boundary_simplification", "0"},
+                                                            {"smoothing_clearance", "0"}};
   const PlannerParameters thesis =
       MissionFileReader().readParameters(std::string(KC_SOURCE_DIR) + "/config/thesis.yaml");
   const PlannerParameters defaults;

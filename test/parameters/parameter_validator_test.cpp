@@ -152,7 +152,10 @@ TEST(ParameterValidator, ChecksTheRobotModelsRanges) {
             "current_y = nan is out of range: it must be a finite number (m/s)");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_x = -3.0; }), "");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.smoothing_clearance = -0.5; }),
-            "smoothing_clearance = -0.5 is out of range: it must be a finite number >= 0 (m)");
+            "smoothing_clearance = -0.5 is out of range: it must be a finite number >= 0 (m), or "
+            "wall_distance");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.smoothing_clearance = kClearanceOfWallDistance; }),
+            "");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.smoothing_clearance = 0.5; }), "");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_sigma = -0.01; }),
             "current_sigma = -0.01 is out of range: it must be a finite number >= 0 (m/s)");

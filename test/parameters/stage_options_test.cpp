@@ -63,7 +63,8 @@ TEST(StageOptions, TheDefaultsMapToTheDocumentedStageOptions) {
   EXPECT_EQ(trajectory.global.max_turning_radius,
             std::max(p.turning_radius, p.v_max / p.yaw_rate_max));
 
-  EXPECT_EQ(trajectory.global.clearance, 0.0);
+  EXPECT_EQ(trajectory.global.clearance, p.wall_distance);
+  EXPECT_EQ(trajectory.wall_distance, p.wall_distance);
   PlannerParameters kept = p;
   kept.smoothing_clearance = 0.4;
   EXPECT_EQ(trajectoryOptionsOf(kept).global.clearance, 0.4);

@@ -175,6 +175,30 @@ TEST(CoveragePlotTest, ActualPoseArrowsAreBlackOverARedTrajectory) {
   EXPECT_THROW(plot.writePng(data, tempPng("bad_arrows")), InvalidInputError);
 }
 
+TEST(CoveragePlotTest, TheClosestApproachIsCircledWithACross) {
+  // Where the trajectory comes nearer the walls than wall_distance: a circle with a cross
+  // whose arms meet there, in the unseen region's colour; nothing there when unset.
+  const CoveragePlot plot(CoveragePlotOptions{800, 600});
+  CoveragePlotData data = scene();
+  const Point2 approach(20.0, 4.0);
+  const CoveragePlotLayout layout = plot.layout(data);
+  const std::string without = tempPng("no_approach");
+  plot.writePng(data, without);
+  expectColour(CoveragePlot::visitColour(1), PngImage(without).colourAt(layout.toPixel(approach)),
+               "no mark");
+  data.closest_approach = approach;
+  const std::string path = tempPng("approach");
+  plot.writePng(data, path);
+  const PngImage image(path);
+  ASSERT_TRUE(image.valid());
+  const PlotColour centre = image.colourAt(layout.toPixel(approach));
+  EXPECT_GT(centre.red, 150);
+  EXPECT_LT(centre.green, 60);
+  EXPECT_GT(centre.blue, 60);
+  data.closest_approach = Point2(std::nan(""), 1.0);
+  EXPECT_THROW(plot.writePng(data, tempPng("bad_approach")), InvalidInputError);
+}
+
 TEST(CoveragePlotTest, FreeAreaWithoutHeatmapHasItsFill) {
   const CoveragePlot plot(CoveragePlotOptions{800, 600});
   CoveragePlotData data = scene();

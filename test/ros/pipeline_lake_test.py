@@ -15,7 +15,7 @@ from nav_msgs.msg import OccupancyGrid, Path
 from visualization_msgs.msg import MarkerArray
 
 sys.path.insert(0, __file__.rsplit('/', 1)[0])
-from ros_test_support import Collector, inside_ring, load_mission, strictly_inside_hole, yaw_of  # noqa: E402
+from ros_test_support import Collector, inside_ring, load_mission, strictly_inside_hole, wait_until, yaw_of  # noqa: E402
 
 TIMEOUT_S = 60.0
 
@@ -118,6 +118,32 @@ class PipelineLakeTest(unittest.TestCase):
         seen = sum(1 for value in grid.data if 0 < value < 100)
         unseen = sum(1 for value in grid.data if value == 100)
         self.assertGreater(seen, 100 * max(1, unseen))
+
+    def test_wall_band_turns_are_marked_where_allowed(self):
+        # By default the lake's turns keep wall_distance: no closest_approach marker and no
+        # warning. Let into the wall band (smoothing_clearance 0, the thesis's no-contact
+        # check), its arcs pass an obstacle nearer than that: marked and warned of.
+        markers = self.smoother_markers.messages[-1].markers
+        self.assertNotIn('closest_approach', {marker.ns for marker in markers})
+        self.assertNotIn('nearer than wall_distance', self.smoother_status.messages[-1].message)
+        rospy.set_param('smooth_trajectory_generator/smoothing_clearance', 0.0)
+        try:
+            marker_count = len(self.smoother_markers.messages)
+            status_count = len(self.smoother_status.messages)
+            publisher = rospy.Publisher('waypoint_list', PoseArray, queue_size=1, latch=True)
+            wait_until(lambda: publisher.get_num_connections() > 0, TIMEOUT_S)
+            publisher.publish(self.waypoints.messages[-1])
+            self.assertTrue(self.smoother_markers.wait_for(marker_count + 1, TIMEOUT_S))
+            self.assertTrue(self.smoother_status.wait_for(status_count + 1, TIMEOUT_S))
+            marked = [marker for marker in self.smoother_markers.messages[-1].markers
+                      if marker.ns == 'closest_approach']
+            self.assertEqual(len(marked), 2)
+            self.assertIn('m from a wall', marked[1].text)
+            last = self.smoother_status.messages[-1]
+            self.assertTrue(last.success, last.message)
+            self.assertIn('nearer than wall_distance', last.message)
+        finally:
+            rospy.delete_param('smooth_trajectory_generator/smoothing_clearance')
 
     def test_nodes_hold_only_the_paths_of_their_parameter_files(self):
         # pipeline.launch sets each node's config and mission paths, not 121 parameters and

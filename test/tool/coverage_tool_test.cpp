@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
 
 namespace {
@@ -233,6 +234,38 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
   EXPECT_GT(metric(json, "unreachable_area_m2"), 0.0) << json;
 }
 
+TEST(CoverageTool, KeepsTheWallDistanceOnTheLakeAndWarnsWhenAllowedLess) {
+  // lake_30x30 by default: every piece keeps wall_distance (1 m, within 1 mm) and at least
+  // 18 of its 20 turns are smoothed. The thesis's no-contact check passes an obstacle
+  // within 0.1 m, and plan says so.
+  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml";
+  const std::string kept_dir = scratchDir() + "/lake_kept";
+  const ToolRun kept = runTool("plan '" + lake + "' --out '" + kept_dir + "'");
+  ASSERT_EQ(kept.exit_status, 0);
+  const std::string kept_json = readText(kept_dir + "/metrics.json");
+  EXPECT_GE(metric(kept_json, "min_obstacle_clearance_m"),
+            1.0 - kinematic_coverage::core::kClearanceTolerance)
+      << kept_json;
+  EXPECT_GE(metric(kept_json, "turns_smoothed"), 18.0) << kept_json;
+  EXPECT_TRUE(kept.err_lines.empty()) << kept.err_lines.front();
+
+  const std::string thesis_dir = scratchDir() + "/lake_no_contact";
+  const ToolRun thesis =
+      runTool("plan '" + lake + "' --out '" + thesis_dir + "' --set smoothing_clearance=0");
+  ASSERT_EQ(thesis.exit_status, 0);
+  const double closest = metric(readText(thesis_dir + "/metrics.json"), "min_obstacle_clearance_m");
+  EXPECT_LT(closest, 0.5);
+  std::ostringstream expected;
+  expected.precision(4);
+  expected << "warning: the trajectory passes " << closest
+           << " m from a wall or obstacle, nearer than wall_distance 1 m: smoothing_clearance 0 "
+              "m lets its turns into the wall band (smoothing_clearance: wall_distance keeps "
+              "them out)";
+  EXPECT_NE(std::find(thesis.err_lines.begin(), thesis.err_lines.end(), expected.str()),
+            thesis.err_lines.end())
+      << expected.str();
+}
+
 /// Two squares, 20 m and 14 m, joined by a strait 1.5 m wide: with a 1 m wall distance the
 /// offset free area falls into two parts.
 std::string writeStraitMission() {
@@ -351,7 +384,8 @@ TEST(CoverageTool, TheThesisPresetIsOneSwitchAway) {
   EXPECT_EQ(thesis,
             traversal_time("local",
                            "--set cell_joining=critical_points --set smoothing_strategy=local "
-                           "--set coverage_repair=false"));
+                           "--set coverage_repair=false --set boundary_simplification=0 "
+                           "--set smoothing_clearance=0"));
   EXPECT_NE(thesis, traversal_time("default", ""));
   expectInvalid("plan '" + kLake75 + "' --out '" + scratchDir() + "/x' --config /nonexistent.yaml",
                 "/nonexistent.yaml");

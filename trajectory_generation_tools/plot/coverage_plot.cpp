@@ -32,6 +32,8 @@ constexpr PlotColour kUnseenRegionColour{200, 0, 110};
 /// than kUnseenRegionMinPixels across is circled as well.
 constexpr double kUnseenRegionMarginPixels = 4.0;
 constexpr double kUnseenRegionMinPixels = 16.0;
+/// The closest approach's cross: its arms' reach as a share of its circle's radius.
+constexpr double kClosestApproachCrossShare = 0.7;
 /// The "plasma" colour map at 0, 1/4, 1/2, 3/4 and 1, for the tracking error.
 constexpr std::array<PlotColour, 5> kErrorColours{
     {{13, 8, 135}, {126, 3, 168}, {204, 71, 120}, {248, 149, 64}, {240, 249, 33}}};
@@ -136,6 +138,9 @@ void checkData(const CoveragePlotData& data) {
   }
   if (data.goal && !isFinite(*data.goal)) {
     throw InvalidInputError("coverage plot: non-finite goal");
+  }
+  if (data.closest_approach && !isFinite(*data.closest_approach)) {
+    throw InvalidInputError("coverage plot: non-finite closest approach");
   }
 }
 
@@ -511,6 +516,28 @@ void drawUnseenRegion(cairo_t* cr, const CoveragePlotLayout& layout, const Cover
   }
 }
 
+/// A circle with a cross of radius `radius` pixels around `centre`: the closest approach.
+void closestApproachPath(cairo_t* cr, const Point2& centre, double radius) {
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, centre.x(), centre.y(), radius, 0.0, 2.0 * M_PI);
+  const double arm = kClosestApproachCrossShare * radius;
+  cairo_move_to(cr, centre.x() - arm, centre.y() - arm);
+  cairo_line_to(cr, centre.x() + arm, centre.y() + arm);
+  cairo_move_to(cr, centre.x() - arm, centre.y() + arm);
+  cairo_line_to(cr, centre.x() + arm, centre.y() - arm);
+}
+
+/// Where the trajectory comes nearer the walls than wall_distance.
+void drawClosestApproach(cairo_t* cr, const CoveragePlotLayout& layout,
+                         const CoveragePlotData& data, const PlotScale& scale) {
+  if (!data.closest_approach) return;
+  closestApproachPath(cr, layout.toPixel(*data.closest_approach),
+                      kUnseenRegionMinPixels * scale.factor);
+  setColour(cr, kUnseenRegionColour);
+  cairo_set_line_width(cr, 2.2 * scale.factor);
+  cairo_stroke(cr);
+}
+
 void drawMarkers(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
                  const PlotScale& scale) {
   selectFont(cr, scale.legend, true);
@@ -717,6 +744,13 @@ void drawShapeKeys(LegendColumn& column, const CoveragePlotData& data) {
     cairo_stroke(cr);
     column.label("largest unseen region");
   }
+  if (data.closest_approach) {
+    closestApproachPath(cr, Point2(x + 0.5 * sample_width, column.y), 8.0 * f);
+    setColour(cr, kUnseenRegionColour);
+    cairo_set_line_width(cr, 2.2 * f);
+    cairo_stroke(cr);
+    column.label("in the wall band");
+  }
   if (!data.free_area.holes.empty()) {
     cairo_rectangle(cr, x + 0.5 * (sample_width - 16.0 * f), column.y - 8.0 * f, 16.0 * f,
                     16.0 * f);
@@ -836,6 +870,7 @@ void CoveragePlot::writePng(const CoveragePlotData& data, const std::string& pat
   drawActualPath(cr, layout, data, scale);
   drawPoseArrows(cr, layout, data, scale);
   drawUnseenRegion(cr, layout, data, scale);
+  drawClosestApproach(cr, layout, data, scale);
   drawMarkers(cr, layout, data, scale);
   cairo_restore(cr);
 

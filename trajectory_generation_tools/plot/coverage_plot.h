@@ -40,6 +40,10 @@ struct CoveragePlotData {
   /// The largest piece of the reachable area left unseen (its bounding box), outlined in
   /// red; none drawn when unset.
   std::optional<Ring> unseen_region;
+  /// Where the trajectory comes nearer the walls than wall_distance (a gap narrower than two
+  /// wall distances, or turns the user let into the wall band), circled with a cross in the
+  /// unseen region's colour; none drawn when unset.
+  std::optional<Point2> closest_approach;
   /// Lines above the plot: the first is the title (bold), the others key metrics.
   std::vector<std::string> title_lines;
 };

@@ -12,8 +12,10 @@
 #include "kinematic_coverage/PlanStatus.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/mission/wall_clearance_warning.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/ros/heatmap_grid.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
@@ -141,6 +143,15 @@ void SmoothTrajectoryGeneratorNode::generate() {
     trajectory_publisher_.publish(toPoseArray(trajectory.poses, header));
     path_publisher_.publish(toPath(trajectory.poses, header));
     visualization_msgs::MarkerArray markers = trajectoryMarkers(trajectory.path, header);
+    if (trajectory.min_obstacle_clearance_m <
+        parameters.wall_distance - core::kClearanceTolerance) {
+      for (const visualization_msgs::Marker& marker :
+           closestApproachMarkers(trajectory.closest_approach, trajectory.min_obstacle_clearance_m,
+                                  parameters.wall_distance, header)
+               .markers) {
+        markers.markers.push_back(marker);
+      }
+    }
     const std::vector<core::Pose2> poses = posesOf(trajectory.poses);
     marker_publisher_.publish(markers);
     heatmap_publisher_.publish(heatmapGrid(*free_area_, poses, parameters, header));
@@ -161,7 +172,8 @@ void SmoothTrajectoryGeneratorNode::generate() {
                                         unsmoothedPoses(parameters, waypoints, *free_area_));
     summary << "; " << core::coverageSummary(coverage);
     for (const std::optional<std::string>& warning :
-         {core::reachableCoverageWarning(coverage), core::smoothingLossWarning(coverage)}) {
+         {core::reachableCoverageWarning(coverage), core::smoothingLossWarning(coverage),
+          core::wallClearanceWarning(trajectory.min_obstacle_clearance_m, parameters)}) {
       if (!warning) continue;
       ROS_WARN("smooth_trajectory_generator: %s", warning->c_str());
       summary << "; warning: " << *warning;

@@ -99,6 +99,7 @@ BoundaryEdgeIndex::BoundaryEdgeIndex(const PolygonWithHoles& free_area, double c
                             std::to_string(clearance));
   }
   clearance_ = std::max(kContactTolerance, clearance);
+  blocking_distance_ = std::max(kContactTolerance, clearance - kClearanceTolerance);
   auto add_ring = [this](const Ring& ring) {
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
       const Point2& from = ring[i];
@@ -130,7 +131,7 @@ bool BoundaryEdgeIndex::segmentClear(const Point2& a, const Point2& b) const {
   std::vector<int> ids;
   edgesNear(a.cwiseMin(b), a.cwiseMax(b), &ids);
   for (const int id : ids) {
-    if (segmentSegmentDistance(a, b, from_[id], to_[id]) <= clearance_) {
+    if (segmentSegmentDistance(a, b, from_[id], to_[id]) <= blocking_distance_) {
       return false;
     }
   }
@@ -142,7 +143,7 @@ bool BoundaryEdgeIndex::arcClear(const PathPrimitive& arc) const {
   std::vector<int> ids;
   edgesNear(arc.centre() - reach, arc.centre() + reach, &ids);
   for (const int id : ids) {
-    if (arcSegmentDistance(arc, from_[id], to_[id]) <= clearance_) {
+    if (arcSegmentDistance(arc, from_[id], to_[id]) <= blocking_distance_) {
       return false;
     }
   }

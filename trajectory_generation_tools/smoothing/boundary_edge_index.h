@@ -28,9 +28,10 @@ class BoundaryEdgeIndex {
   /// for a non-finite coordinate or a negative or non-finite clearance.
   explicit BoundaryEdgeIndex(const PolygonWithHoles& free_area, double clearance = 0.0);
 
-  /// True when the closed segment [a, b] keeps more than clearance() from every edge.
+  /// True when the closed segment [a, b] keeps clearance() from every edge (more than the
+  /// contact tolerance for a clearance of 0; within kClearanceTolerance for a larger one).
   bool segmentClear(const Point2& a, const Point2& b) const;
-  /// True when the arc keeps more than clearance() from every edge.
+  /// True when the arc keeps clearance() from every edge, as segmentClear.
   bool arcClear(const PathPrimitive& arc) const;
   /// Metres a clothoid's chords, which primitiveClear tests, may stray from it.
   static constexpr double kClothoidChordTolerance = 1e-5;
@@ -56,6 +57,8 @@ class BoundaryEdgeIndex {
   std::vector<Point2> to_;
   bool has_hull_ = false;
   double clearance_ = kContactTolerance;
+  /// m: a primitive nearer an edge than this, or as near, is not clear.
+  double blocking_distance_ = kContactTolerance;
   EdgeGrid grid_;
 };
 

@@ -50,6 +50,9 @@ constexpr std::size_t kGuardedToleratedCells = 2;
 /// the strip beyond the lanes' ends there).
 constexpr std::array<std::pair<double, double>, 3> kBulbRuns{
     {{0.5, 0.5}, {0.25, 0.75}, {0.0, 1.0}}};
+/// rad: the largest corner turn whose inner arc's reach (r tan(turn / 2)) places a bulb's
+/// one-sided run; sharper corners use it too, which keeps the tangent finite.
+constexpr double kMaxFlushTurn = 0.9 * M_PI;
 
 double arcsLength(const CornerSmoothing& smoothing) {
   double length = 0.0;
@@ -212,13 +215,34 @@ void GlobalSmoothingProgramme::addCandidates(std::size_t i, const std::vector<do
           ReverseCurveSmoothing::compute(before, a, b, c, radius);
       consider(std::move(curve), radius, i - 1, {before, a, b, c});
       if (options.bulb_turns) {
-        for (const auto& [run_from, run_to] : kBulbRuns) {
+        for (const auto& [run_from, run_to] : bulbRuns(i, radius)) {
           consider(BulbTurnSmoothing::compute(before, a, b, c, radius, run_from, run_to), radius,
                    i - 1, {before, a, b, c});
         }
       }
     }
   }
+}
+
+std::vector<std::pair<double, double>> GlobalSmoothingProgramme::bulbRuns(std::size_t i,
+                                                                          double radius) const {
+  std::vector<std::pair<double, double>> runs(kBulbRuns.begin(), kBulbRuns.end());
+  // The middle leg is leg i, between corners i - 1 and i. Where the lanes are closer than
+  // two radii a bulb swings beyond one of them; these runs keep all of the swing on one
+  // side, for a lane beside a wall: the arc onto the middle leg is the inner arc of the
+  // first corner (it touches the leg r tan(turn / 2) after it), or the arc off it is the
+  // inner arc of the second.
+  const double middle = leg_length_[i];
+  const auto inner_reach = [&](const Point2& from, const Point2& to) {
+    const double turn = std::atan2(std::abs(from.x() * to.y() - from.y() * to.x()), from.dot(to));
+    return radius * std::tan(0.5 * std::min(turn, kMaxFlushTurn)) / middle;
+  };
+  const double incoming = std::min(1.0, inner_reach(leg_direction_[i - 1], leg_direction_[i]));
+  const double outgoing =
+      std::max(0.0, 1.0 - inner_reach(leg_direction_[i], leg_direction_[i + 1]));
+  runs.emplace_back(incoming, incoming);
+  runs.emplace_back(outgoing, outgoing);
+  return runs;
 }
 
 std::optional<double> GlobalSmoothingProgramme::legPiece(

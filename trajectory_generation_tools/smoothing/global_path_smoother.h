@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
@@ -130,6 +131,9 @@ class GlobalSmoothingProgramme {
   GlobalSmoothingProgramme(const GlobalPathSmoother& smoother, const std::vector<Point2>& points);
 
   void addCandidates(std::size_t i, const std::vector<double>& radii);
+  /// The runs along the middle leg (fractions of leg i, from corner i - 1) of the bulb
+  /// turns tried over corners i - 1 and i with arcs of `radius`.
+  std::vector<std::pair<double, double>> bulbRuns(std::size_t i, double radius) const;
   /// The time (s) of the piece of leg `leg` from the end of `previous` to the start of
   /// `next` (nullptr: the path's start or end, at rest), or nullopt when it cannot be
   /// driven (the two overlap, or the piece is not clear).

@@ -4,10 +4,16 @@
 #include <cmath>
 #include <limits>
 
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "trajectory_generation_tools/trajectory/primitive_distance.h"
 
 namespace kinematic_coverage::core {
 namespace {
+
+/// m: spacing of the points of the nearest primitive searched for the closest approach.
+constexpr double kClosestPointSpacing = 0.01;
+/// Upper bound on those points (a primitive longer than 100 m is searched more coarsely).
+constexpr int kMaxClosestPointSteps = 10000;
 
 /// An axis-aligned box, for a cheap lower bound on distances.
 struct Box {
@@ -74,21 +80,48 @@ double primitivePathMaxCurvature(const std::vector<PathPrimitive>& path) {
   return curvature;
 }
 
-double primitivePathClearance(const std::vector<PathPrimitive>& path,
-                              const PolygonWithHoles& free_area) {
+ClosestApproach primitivePathClosestApproach(const std::vector<PathPrimitive>& path,
+                                             const PolygonWithHoles& free_area) {
   std::vector<Edge> edges;
   appendEdges(free_area.hull, edges);
   for (const Ring& hole : free_area.holes) appendEdges(hole, edges);
 
   double clearance = std::numeric_limits<double>::infinity();
+  const PathPrimitive* nearest_primitive = nullptr;
+  const Edge* nearest_edge = nullptr;
   for (const PathPrimitive& primitive : path) {
     const Box box = boxOf(primitive);
     for (const Edge& edge : edges) {
       if (boxDistance(box, edge.box) >= clearance) continue;
-      clearance = std::min(clearance, distancePrimitiveToSegment(primitive, edge.a, edge.b));
+      const double distance = distancePrimitiveToSegment(primitive, edge.a, edge.b);
+      if (distance < clearance) {
+        clearance = distance;
+        nearest_primitive = &primitive;
+        nearest_edge = &edge;
+      }
     }
   }
-  return clearance;
+  ClosestApproach approach{clearance, Point2::Zero()};
+  if (nearest_primitive == nullptr) return approach;
+  // The nearest primitive's points kClosestPointSpacing apart, at most kMaxClosestPointSteps.
+  const int steps =
+      std::clamp(static_cast<int>(std::ceil(nearest_primitive->length() / kClosestPointSpacing)), 1,
+                 kMaxClosestPointSteps);
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= steps; ++i) {
+    const Point2 p = nearest_primitive->poseAt(static_cast<double>(i) / steps).position();
+    const double distance = distanceToSegment(p, nearest_edge->a, nearest_edge->b);
+    if (distance < best) {
+      best = distance;
+      approach.point = p;
+    }
+  }
+  return approach;
+}
+
+double primitivePathClearance(const std::vector<PathPrimitive>& path,
+                              const PolygonWithHoles& free_area) {
+  return primitivePathClosestApproach(path, free_area).distance_m;
 }
 
 }  // namespace kinematic_coverage::core

@@ -30,6 +30,35 @@ SmoothingStatistics segmentPathStatistics(const std::vector<PathPrimitive>& path
   return statistics;
 }
 
+/// True when the primitive lies on the closed segment [a, b]: a segment with both ends on
+/// it, or a rotation at a point of it.
+bool liesOn(const PathPrimitive& primitive, const Point2& a, const Point2& b) {
+  if (primitive.kind() != PrimitiveKind::kSegment && primitive.kind() != PrimitiveKind::kRotation) {
+    return false;
+  }
+  return distanceToSegment(primitive.start(), a, b) <= kInsideTolerance &&
+         distanceToSegment(primitive.end(), a, b) <= kInsideTolerance;
+}
+
+/// The legs of `waypoints` that are the shortest way into the offset free area from a
+/// start nearer than `wall_distance` to a wall, and out of it to such a goal: pairs of
+/// their ends.
+std::vector<std::pair<Point2, Point2>> wallBandLegs(const std::vector<Pose2>& waypoints,
+                                                    const PolygonWithHoles& free_area,
+                                                    double wall_distance) {
+  std::vector<std::pair<Point2, Point2>> legs;
+  if (waypoints.size() < 2 || !(wall_distance > 0.0)) return legs;
+  const auto in_band = [&](const Point2& p) {
+    const PathPrimitive here = PathPrimitive::rotation(p, 0.0, 0.0);
+    return primitivePathClearance({here}, free_area) < wall_distance - kClearanceTolerance;
+  };
+  const Point2 first = waypoints.front().position();
+  const Point2 last = waypoints.back().position();
+  if (in_band(first)) legs.emplace_back(first, waypoints[1].position());
+  if (in_band(last)) legs.emplace_back(waypoints[waypoints.size() - 2].position(), last);
+  return legs;
+}
+
 }  // namespace
 
 SmoothedPath TrajectoryGenerator::smoothedPath(const std::vector<Pose2>& waypoints,
@@ -106,14 +135,21 @@ GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& wayp
   trajectory.trajectory_length_m = primitivePathLength(trajectory.path);
   trajectory.max_curvature = primitivePathMaxCurvature(trajectory.path);
 
+  const std::vector<std::pair<Point2, Point2>> excepted =
+      wallBandLegs(waypoints, free_area, options_.wall_distance);
   std::vector<PathPrimitive> inside;
   for (const PathPrimitive& primitive : trajectory.path) {
-    if (contains(free_area, primitive.start(), kInsideTolerance) &&
+    const bool on_excepted_leg =
+        std::any_of(excepted.begin(), excepted.end(),
+                    [&](const auto& leg) { return liesOn(primitive, leg.first, leg.second); });
+    if (!on_excepted_leg && contains(free_area, primitive.start(), kInsideTolerance) &&
         contains(free_area, primitive.end(), kInsideTolerance)) {
       inside.push_back(primitive);
     }
   }
-  trajectory.min_obstacle_clearance_m = primitivePathClearance(inside, free_area);
+  const ClosestApproach approach = primitivePathClosestApproach(inside, free_area);
+  trajectory.min_obstacle_clearance_m = approach.distance_m;
+  trajectory.closest_approach = approach.point;
   return trajectory;
 }
 

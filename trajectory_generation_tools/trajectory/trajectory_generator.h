@@ -20,8 +20,12 @@ struct GeneratedTrajectory {
   double traversal_time_s = 0.0;
   double max_curvature = 0.0;
   /// Smallest distance to the raw hull and holes over the primitives that lie in the free
-  /// area (the legs joining a start or goal outside it are left out); infinity if none.
+  /// area, but for the first and last legs where they join a start or goal nearer than
+  /// wall_distance to the offset free area (its shortest way in and out); infinity if none.
   double min_obstacle_clearance_m = 0.0;
+  /// A point of the trajectory min_obstacle_clearance_m from the hull or a hole (within
+  /// 1 cm); the origin where that is infinite.
+  Point2 closest_approach = Point2::Zero();
 };
 
 /// Turns a waypoint path into a trajectory (Thesis sections 3.2 and 3.3): smoothing against

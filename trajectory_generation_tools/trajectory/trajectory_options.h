@@ -27,6 +27,10 @@ struct TrajectoryOptions {
   double rotation_sampling_angle = 0.2;    ///< rad
   TurnCurve turn_curve = TurnCurve::kArc;
   double curvature_rate_max = 2.0;  ///< 1/m^2: the clothoids' curvature change per metre
+  /// m: the distance the planner keeps from the hull and holes (wall_distance). The legs
+  /// that join a start or goal nearer than this to the offset free area are left out of
+  /// min_obstacle_clearance_m (docs/REFERENCE.md, Collisions and clearance).
+  double wall_distance = 0.0;
 };
 
 }  // namespace kinematic_coverage::core
