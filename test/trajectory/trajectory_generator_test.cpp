@@ -280,6 +280,16 @@ TEST(TrajectoryGenerator, LeavesTheWayInFromAStartInTheWallBandOutOfTheClearance
     const GeneratedTrajectory measured = TrajectoryGenerator(options).generate(waypoints, area);
     EXPECT_NEAR(measured.min_obstacle_clearance_m, 0.2, 1e-9) << smoothing;
   }
+  // The way out to the goal continues a lane: smoothing merges the two collinear legs into
+  // one segment, of which only the part beyond the offset free area is excepted.
+  const std::vector<Pose2> collinear = {{0.3, 5.0, 0.0}, {1.0, 5.0, 0.0}, {1.0, 2.0, 0.0},
+                                        {5.0, 2.0, 0.0}, {9.0, 2.0, 0.0}, {9.8, 2.0, 0.0}};
+  for (const bool smoothing : {false, true}) {
+    parameters.smoothing = smoothing;
+    const GeneratedTrajectory excepted =
+        TrajectoryGenerator(trajectoryOptionsOf(parameters)).generate(collinear, area);
+    EXPECT_NEAR(excepted.min_obstacle_clearance_m, 1.0, kClearanceTolerance) << smoothing;
+  }
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
@@ -30,14 +32,40 @@ SmoothingStatistics segmentPathStatistics(const std::vector<PathPrimitive>& path
   return statistics;
 }
 
-/// True when the primitive lies on the closed segment [a, b]: a segment with both ends on
-/// it, or a rotation at a point of it.
-bool liesOn(const PathPrimitive& primitive, const Point2& a, const Point2& b) {
-  if (primitive.kind() != PrimitiveKind::kSegment && primitive.kind() != PrimitiveKind::kRotation) {
-    return false;
+/// The pieces of `primitive` off the leg [a, b]: none for a rotation on it, the parts of a
+/// segment along the leg's line beyond the leg's ends (smoothing merges a leg with the
+/// collinear leg before it), and any other primitive whole.
+std::vector<PathPrimitive> offLeg(const PathPrimitive& primitive, const Point2& a,
+                                  const Point2& b) {
+  if (primitive.kind() == PrimitiveKind::kRotation) {
+    if (distanceToSegment(primitive.start(), a, b) <= kInsideTolerance) return {};
+    return {primitive};
   }
-  return distanceToSegment(primitive.start(), a, b) <= kInsideTolerance &&
-         distanceToSegment(primitive.end(), a, b) <= kInsideTolerance;
+  const Point2 from = primitive.start();
+  const Point2 direction = primitive.end() - from;
+  const double length_sq = direction.squaredNorm();
+  const Point2 leg = b - a;
+  const double leg_length = leg.norm();
+  const auto off_line = [&](const Point2& p) {
+    const Point2 d = p - a;
+    return std::abs(leg.x() * d.y() - leg.y() * d.x()) / leg_length > kInsideTolerance;
+  };
+  if (primitive.kind() != PrimitiveKind::kSegment || !(length_sq > 0.0) || !(leg_length > 0.0) ||
+      off_line(from) || off_line(primitive.end())) {
+    return {primitive};
+  }
+  const double t_a = (a - from).dot(direction) / length_sq;
+  const double t_b = (b - from).dot(direction) / length_sq;
+  const double low = std::max(0.0, std::min(t_a, t_b));
+  const double high = std::min(1.0, std::max(t_a, t_b));
+  if (low >= high) return {primitive};
+  const double tolerance = kInsideTolerance / std::sqrt(length_sq);
+  std::vector<PathPrimitive> pieces;
+  if (low > tolerance) pieces.push_back(PathPrimitive::segment(from, from + low * direction));
+  if (high < 1.0 - tolerance) {
+    pieces.push_back(PathPrimitive::segment(from + high * direction, primitive.end()));
+  }
+  return pieces;
 }
 
 /// The legs of `waypoints` that are the shortest way into the offset free area from a
@@ -137,12 +165,17 @@ GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& wayp
 
   const std::vector<std::pair<Point2, Point2>> excepted =
       wallBandLegs(waypoints, free_area, options_.wall_distance);
+  std::vector<PathPrimitive> measured = trajectory.path;
+  for (const auto& [a, b] : excepted) {
+    std::vector<PathPrimitive> off;
+    for (const PathPrimitive& primitive : measured) {
+      for (PathPrimitive& piece : offLeg(primitive, a, b)) off.push_back(std::move(piece));
+    }
+    measured = std::move(off);
+  }
   std::vector<PathPrimitive> inside;
-  for (const PathPrimitive& primitive : trajectory.path) {
-    const bool on_excepted_leg =
-        std::any_of(excepted.begin(), excepted.end(),
-                    [&](const auto& leg) { return liesOn(primitive, leg.first, leg.second); });
-    if (!on_excepted_leg && contains(free_area, primitive.start(), kInsideTolerance) &&
+  for (const PathPrimitive& primitive : measured) {
+    if (contains(free_area, primitive.start(), kInsideTolerance) &&
         contains(free_area, primitive.end(), kInsideTolerance)) {
       inside.push_back(primitive);
     }
