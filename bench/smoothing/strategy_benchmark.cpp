@@ -327,7 +327,7 @@ void printClearanceTable(const std::vector<MapSet>& sets) {
         const Run& run = map.runs[strategy];
         if (map.wall_distance > 0.0 && std::isfinite(run.min_clearance_m)) {
           least = std::min(least, run.min_clearance_m / map.wall_distance);
-          nearer += run.min_clearance_m < map.wall_distance - kClearanceTolerance ? 1 : 0;
+          nearer += keepsClearance(run.min_clearance_m, map.wall_distance) ? 0 : 1;
         }
         smoothed += run.turns_smoothed;
         total += run.turns_total;

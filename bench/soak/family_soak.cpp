@@ -153,7 +153,7 @@ std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
   if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
     failures.push_back("collision: min_obstacle_clearance_m " +
                        std::to_string(trajectory.min_obstacle_clearance_m));
-  } else if (trajectory.min_obstacle_clearance_m < least_clearance_m - kClearanceTolerance) {
+  } else if (!keepsClearance(trajectory.min_obstacle_clearance_m, least_clearance_m)) {
     failures.push_back("clearance: min_obstacle_clearance_m " +
                        std::to_string(trajectory.min_obstacle_clearance_m) + ", less than " +
                        std::to_string(least_clearance_m));

@@ -3,8 +3,9 @@
 // precise InvalidInputError for a start or goal the map makes impossible, no collision of
 // the smoothed trajectory, which keeps the wall distance (within kClearanceTolerance) or
 // comes no nearer than the unsmoothed trajectory (which passes gaps narrower than two wall
-// distances), and at least 99 % coverage of the reachable area by the waypoint path. Prints a progress line every 100 seeds, each failure with its seed, and a table
-// with a row per seed range (and their total when there are several): the outcomes and the
+// distances), and at least 99 % coverage of the reachable area by the waypoint path.
+// Prints a progress line every 100 seeds, each failure with its seed, and a table with a
+// row per seed range (and their total when there are several): the outcomes and the
 // planning-time distribution. Exit status 1 when any seed failed.
 // --trajectory-coverage also measures the smoothed trajectory's reachable coverage and
 // adds its distribution (smoothing cuts corners by design, so it is reported, not checked).
@@ -138,7 +139,7 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
             .generate(plan.waypoints, mission.polygon)
             .min_obstacle_clearance_m;
     const double least = std::min(mission.parameters.wall_distance, sharp_clearance);
-    if (trajectory.min_obstacle_clearance_m < least - kClearanceTolerance) {
+    if (!keepsClearance(trajectory.min_obstacle_clearance_m, least)) {
       return fail("clearance: min_obstacle_clearance_m " +
                   std::to_string(trajectory.min_obstacle_clearance_m) + ", less than " +
                   std::to_string(least));

@@ -13,6 +13,12 @@ constexpr double kLengthTolerance = 1e-9;
 /// area's boundary keep it (docs/REFERENCE.md, Collisions and clearance).
 constexpr double kClearanceTolerance = 1e-3;
 
+/// True when a distance of `distance_m` keeps the clearance `clearance_m`, within
+/// kClearanceTolerance.
+inline bool keepsClearance(double distance_m, double clearance_m) {
+  return distance_m >= clearance_m - kClearanceTolerance;
+}
+
 /// Signed area of a ring: positive when counter-clockwise.
 double signedArea(const Ring& ring);
 

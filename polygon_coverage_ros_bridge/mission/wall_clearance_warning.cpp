@@ -13,8 +13,8 @@ std::optional<std::string> wallClearanceWarning(double min_obstacle_clearance_m,
   const double allowed = smoothingClearanceOf(parameters);
   const double wall_distance = parameters.wall_distance;
   if (!parameters.smoothing || !std::isfinite(min_obstacle_clearance_m) ||
-      allowed >= wall_distance - kClearanceTolerance ||
-      min_obstacle_clearance_m >= wall_distance - kClearanceTolerance) {
+      keepsClearance(allowed, wall_distance) ||
+      keepsClearance(min_obstacle_clearance_m, wall_distance)) {
     return std::nullopt;
   }
   std::ostringstream out;

@@ -196,8 +196,7 @@ CoveragePlotData planPlot(const PlanOutputRequest& request, const std::vector<Po
           << " of " << turns.turns_total << " turns smoothed  |  " << trajectory.trajectory_length_m
           << " m  |  " << trajectory.traversal_time_s << " s";
   plot.title_lines = {request.title, figures.str()};
-  if (trajectory.min_obstacle_clearance_m <
-      request.parameters->wall_distance - kClearanceTolerance) {
+  if (!keepsClearance(trajectory.min_obstacle_clearance_m, request.parameters->wall_distance)) {
     plot.closest_approach = trajectory.closest_approach;
   }
   return plot;

@@ -143,8 +143,7 @@ void SmoothTrajectoryGeneratorNode::generate() {
     trajectory_publisher_.publish(toPoseArray(trajectory.poses, header));
     path_publisher_.publish(toPath(trajectory.poses, header));
     visualization_msgs::MarkerArray markers = trajectoryMarkers(trajectory.path, header);
-    if (trajectory.min_obstacle_clearance_m <
-        parameters.wall_distance - core::kClearanceTolerance) {
+    if (!core::keepsClearance(trajectory.min_obstacle_clearance_m, parameters.wall_distance)) {
       for (const visualization_msgs::Marker& marker :
            closestApproachMarkers(trajectory.closest_approach, trajectory.min_obstacle_clearance_m,
                                   parameters.wall_distance, header)

@@ -60,6 +60,11 @@ double arcsLength(const CornerSmoothing& smoothing) {
   return length;
 }
 
+/// The angle (rad, in [0, pi]) between unit directions `from` and `to`: a corner's turn.
+double turnBetween(const Point2& from, const Point2& to) {
+  return std::atan2(std::abs(from.x() * to.y() - from.y() * to.x()), from.dot(to));
+}
+
 void requirePositive(const char* name, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw InvalidInputError(std::string(name) + " must be a positive finite number, got " +
@@ -151,8 +156,7 @@ void GlobalSmoothingProgramme::addCandidates(std::size_t i, const std::vector<do
   const Point2& c = points_[i + 2];
   const Point2& incoming = leg_direction_[i];
   const Point2& outgoing = leg_direction_[i + 1];
-  const double turn = std::atan2(
-      std::abs(incoming.x() * outgoing.y() - incoming.y() * outgoing.x()), incoming.dot(outgoing));
+  const double turn = turnBetween(incoming, outgoing);
   std::vector<GlobalSmoothingCandidate>& list = candidates_[i];
   list.push_back({std::nullopt, 0.0, 0.0, 0.0, 0.0, turn / options.vehicle.yaw_rate_max, {}});
 
@@ -234,8 +238,7 @@ std::vector<std::pair<double, double>> GlobalSmoothingProgramme::bulbRuns(std::s
   // inner arc of the second.
   const double middle = leg_length_[i];
   const auto inner_reach = [&](const Point2& from, const Point2& to) {
-    const double turn = std::atan2(std::abs(from.x() * to.y() - from.y() * to.x()), from.dot(to));
-    return radius * std::tan(0.5 * std::min(turn, kMaxFlushTurn)) / middle;
+    return radius * std::tan(0.5 * std::min(turnBetween(from, to), kMaxFlushTurn)) / middle;
   };
   const double incoming = std::min(1.0, inner_reach(leg_direction_[i - 1], leg_direction_[i]));
   const double outgoing =

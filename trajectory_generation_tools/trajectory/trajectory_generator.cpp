@@ -78,7 +78,7 @@ std::vector<std::pair<Point2, Point2>> wallBandLegs(const std::vector<Pose2>& wa
   if (waypoints.size() < 2 || !(wall_distance > 0.0)) return legs;
   const auto in_band = [&](const Point2& p) {
     const PathPrimitive here = PathPrimitive::rotation(p, 0.0, 0.0);
-    return primitivePathClearance({here}, free_area) < wall_distance - kClearanceTolerance;
+    return !keepsClearance(primitivePathClearance({here}, free_area), wall_distance);
   };
   const Point2 first = waypoints.front().position();
   const Point2 last = waypoints.back().position();
