@@ -19,6 +19,7 @@
 
 #include "bench/support/median.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/hard_map_generator.h"
@@ -101,11 +102,19 @@ int main(int argc, char** argv) {
     std::vector<double> ratios;
     double seconds_without = 0.0;
     double seconds_with = 0.0;
+    int planned = 0;
     for (int seed = 0; seed < options.maps; ++seed) {
       Mission mission = generator.generate(static_cast<std::uint64_t>(seed)).mission;
       mission.parameters.coverage_repair = false;
       auto start = std::chrono::steady_clock::now();
-      const PlannedMission without = kinematic_coverage::core::planMission(mission);
+      PlannedMission without;
+      try {
+        without = kinematic_coverage::core::planMission(mission);
+      } catch (const kinematic_coverage::core::UnreachableGoalError& error) {
+        std::fprintf(stderr, "refused %s %d: %s\n", name.c_str(), seed, error.what());
+        continue;
+      }
+      ++planned;
       seconds_without += secondsSince(start);
       mission.parameters.coverage_repair = true;
       start = std::chrono::steady_clock::now();
@@ -123,8 +132,8 @@ int main(int argc, char** argv) {
                      with.plan.time_cost_s);
       }
     }
-    std::printf("| %s | %d | %d | %d | %.3f | %.4f | %.3f | %.1f | %.1f |\n", name.c_str(),
-                options.maps, below_without, below_with, worst_with, median(ratios),
+    std::printf("| %s | %d | %d | %d | %.3f | %.4f | %.3f | %.1f | %.1f |\n", name.c_str(), planned,
+                below_without, below_with, worst_with, median(ratios),
                 *std::max_element(ratios.begin(), ratios.end()), seconds_without, seconds_with);
     std::fflush(stdout);
   }

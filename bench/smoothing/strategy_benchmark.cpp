@@ -58,6 +58,7 @@
 
 #include "bench/support/median.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
@@ -435,6 +436,9 @@ int run(const Options& options) {
         try {
           maps.push_back(runMap(generator.generate(seed).mission, out_dir.path));
           if (options.per_map) printMap(name, seed, maps.back());
+        } catch (const UnreachableGoalError& error) {
+          std::fprintf(stderr, "refused %s seed %llu: %s\n", name.c_str(),
+                       static_cast<unsigned long long>(seed), error.what());
         } catch (const std::exception& error) {
           std::fprintf(stderr, "FAIL %s seed %llu: %s\n", name.c_str(),
                        static_cast<unsigned long long>(seed), error.what());

@@ -3,7 +3,8 @@
 // the star-shaped family) as `coverage_tool plan` does (validate, clean, plan) and turns
 // each plan into a trajectory with default settings and with smoothing off. Every map must
 // plan (an InvalidInputError is a map the package wrongly calls invalid, any other error
-// an internal one), and for both trajectories:
+// an internal one; an UnreachableGoalError, a goal that a robot keeping gap_clearance
+// cannot reach, is counted apart as refused), and for both trajectories:
 //  - every leg from first_inside to last_inside lies in the route area (the offset free
 //    area's parts joined through their gaps), the legs to the start and goal in the free area;
 //  - every pose lies in the free area and the trajectory keeps a clearance above 0; the
@@ -20,7 +21,9 @@
 //    boundaries (spirals, combs) turn into up to 0.5 % of the free area.
 // Each family runs in a child process, so that its peak resident memory is its own. Prints
 // each failure with its family and seed, a progress line every 20 maps, and a table with a
-// row per family. Exit status 1 when any map failed.
+// row per family, with the default trajectories' least closest approach / wall_distance,
+// the maps nearer than wall_distance, the share of turns smoothed and the median traversal
+// time ratio to the unsmoothed trajectories. Exit status 1 when any map failed.
 //
 // Usage: family_soak --maps N[,N...] [--first-seed S] [--families comb,spiral,...]
 //                    [--max-vertices V] [--oracle-max-vertices 200]
@@ -126,7 +129,10 @@ std::size_t vertexCount(const PolygonWithHoles& polygon) {
 /// What one map showed.
 struct MapResult {
   bool failed = false;
-  bool split = false;       ///< the offset free area fell into several parts
+  /// Refused precisely: the goal lies where a robot keeping the gap clearance cannot reach
+  /// from the start (docs/REFERENCE.md, Parts).
+  bool refused = false;
+  bool split = false;       ///< planned over several parts of the offset free area
   bool oracle = false;      ///< small enough for the oracle
   int oracle_measured = 0;  ///< trajectories the oracle measured (of two)
   /// Largest |reported - exact| of coverage_percent and of the unseen reachable area, both
@@ -134,22 +140,41 @@ struct MapResult {
   double coverage_difference_percent = 0.0;
   double unseen_difference_percent = 0.0;
   double planning_time_s = 0.0;
+  /// The default trajectory's: least clearance / wall_distance, turns, and traversal time
+  /// against the unsmoothed trajectory's (for maps planned and checked).
+  bool measured = false;
+  double clearance_share = 0.0;
+  bool nearer = false;  ///< nearer than wall_distance beyond kClearanceTolerance
+  int turns_smoothed = 0;
+  int turns_total = 0;
+  double time_ratio = 0.0;
+};
+
+/// What the check of one trajectory measured.
+struct TrajectoryFigures {
+  double clearance_m = 0.0;
+  double traversal_time_s = 0.0;
+  int turns_smoothed = 0;
+  int turns_total = 0;
 };
 
 /// The failures of one trajectory, one line each (none when it passes). A trajectory
 /// touches no wall, and comes no nearer than `least_clearance_m` (within
-/// kClearanceTolerance); its clearance goes to `clearance_m`.
+/// kClearanceTolerance); its clearance, time and turns go to `figures`.
 std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
                                          const CoveragePlan& plan,
                                          const PlannerParameters& parameters, bool with_oracle,
                                          double tolerance, double least_clearance_m,
                                          const std::string& label, MapResult* result,
-                                         double* clearance_m) {
+                                         TrajectoryFigures* figures) {
   std::vector<std::string> failures;
   const GeneratedTrajectory trajectory =
       TrajectoryGenerator(trajectoryOptionsOf(parameters, plan.offset_parts))
           .generate(plan.waypoints, free_area);
-  *clearance_m = trajectory.min_obstacle_clearance_m;
+  figures->clearance_m = trajectory.min_obstacle_clearance_m;
+  figures->traversal_time_s = trajectory.traversal_time_s;
+  figures->turns_smoothed = trajectory.statistics.turns_smoothed;
+  figures->turns_total = trajectory.statistics.turns_total;
   if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
     failures.push_back("collision: min_obstacle_clearance_m " +
                        std::to_string(trajectory.min_obstacle_clearance_m));
@@ -248,22 +273,34 @@ MapResult runMap(const testing::HardMap& map, const Options& options) {
     }
     // The unsmoothed trajectory first: the default one keeps the wall distance, or comes
     // no nearer than that one (which passes gaps narrower than two wall distances).
-    double unsmoothed_clearance = 0.0;
+    TrajectoryFigures unsmoothed;
     for (const bool smoothing : {false, true}) {
       PlannerParameters parameters = map.mission.parameters;
       parameters.smoothing = smoothing;
       const std::string label = family + " seed " + std::to_string(map.seed) +
                                 (smoothing ? ", default" : ", smoothing=false");
       const double least =
-          smoothing ? std::min(parameters.wall_distance, unsmoothed_clearance) : 0.0;
-      double clearance = 0.0;
+          smoothing ? std::min(parameters.wall_distance, unsmoothed.clearance_m) : 0.0;
+      TrajectoryFigures figures;
       for (const std::string& failure :
            checkTrajectory(planned.free_area, plan, parameters, result.oracle, 1e3 * tolerance,
-                           least, label, &result, &clearance)) {
+                           least, label, &result, &figures)) {
         fail(std::string(smoothing ? "default: " : "smoothing=false: ") + failure);
       }
-      if (!smoothing) unsmoothed_clearance = clearance;
+      if (!smoothing) {
+        unsmoothed = figures;
+      } else if (parameters.wall_distance > 0.0 && unsmoothed.traversal_time_s > 0.0) {
+        result.measured = true;
+        result.clearance_share = figures.clearance_m / parameters.wall_distance;
+        result.nearer = !keepsClearance(figures.clearance_m, parameters.wall_distance);
+        result.turns_smoothed = figures.turns_smoothed;
+        result.turns_total = figures.turns_total;
+        result.time_ratio = figures.traversal_time_s / unsmoothed.traversal_time_s;
+      }
     }
+  } catch (const UnreachableGoalError& error) {
+    std::cerr << "refused " << family << " seed " << map.seed << ": " << error.what() << std::endl;
+    result.refused = true;
   } catch (const InvalidInputError& error) {
     fail(std::string("exit 2 on a valid map: ") + error.what());
   } catch (const std::exception& error) {
@@ -283,22 +320,38 @@ double quantile(std::vector<double> values, double q) {
 struct BatchTally {
   int maps = 0;
   int failed = 0;
+  int refused = 0;
   int split = 0;
   int with_oracle = 0;
   double coverage_difference = 0.0;
   double unseen_difference = 0.0;
   std::size_t max_vertices = 0;
   std::vector<double> times;
+  /// Of the default trajectories: the least clearance / wall_distance, the maps under 1
+  /// (beyond kClearanceTolerance), the turns, and the time ratios to the unsmoothed ones.
+  double least_clearance_share = std::numeric_limits<double>::infinity();
+  int nearer = 0;
+  int turns_smoothed = 0;
+  int turns_total = 0;
+  std::vector<double> time_ratios;
 
   void add(const MapResult& result, std::size_t vertices) {
     ++maps;
     failed += result.failed ? 1 : 0;
+    refused += result.refused ? 1 : 0;
     split += result.split ? 1 : 0;
     with_oracle += result.oracle_measured == 2 ? 1 : 0;
     coverage_difference = std::max(coverage_difference, result.coverage_difference_percent);
     unseen_difference = std::max(unseen_difference, result.unseen_difference_percent);
     max_vertices = std::max(max_vertices, vertices);
-    times.push_back(result.planning_time_s);
+    if (!result.refused) times.push_back(result.planning_time_s);
+    if (result.measured) {
+      least_clearance_share = std::min(least_clearance_share, result.clearance_share);
+      nearer += result.nearer ? 1 : 0;
+      turns_smoothed += result.turns_smoothed;
+      turns_total += result.turns_total;
+      time_ratios.push_back(result.time_ratio);
+    }
   }
 };
 
@@ -336,10 +389,15 @@ int runFamily(testing::MapFamily family, const Options& options) {
     const std::vector<double>& times = tally.times;
     std::cout << std::fixed << "| " << name << ", maps " << done - tally.maps + 1 << "-" << done
               << " | " << tally.maps << " | " << tally.max_vertices << " | " << tally.split << " | "
-              << tally.failed << " | " << tally.with_oracle << " | " << std::setprecision(3)
-              << tally.coverage_difference << " | " << tally.unseen_difference << " | "
-              << quantile(times, 0.5) << " | " << *std::max_element(times.begin(), times.end())
-              << " | " << std::setprecision(0) << usage.ru_maxrss / 1024.0 << " |" << std::endl;
+              << tally.refused << " | " << tally.failed << " | " << std::setprecision(3)
+              << tally.least_clearance_share << " | " << tally.nearer << " | "
+              << std::setprecision(1)
+              << (tally.turns_total > 0 ? 100.0 * tally.turns_smoothed / tally.turns_total : 0.0)
+              << " | " << std::setprecision(3) << quantile(tally.time_ratios, 0.5) << " | "
+              << tally.with_oracle << " | " << std::setprecision(3) << tally.coverage_difference
+              << " | " << tally.unseen_difference << " | " << quantile(times, 0.5) << " | "
+              << (times.empty() ? 0.0 : *std::max_element(times.begin(), times.end())) << " | "
+              << std::setprecision(0) << usage.ru_maxrss / 1024.0 << " |" << std::endl;
   }
   return failed;
 }
@@ -350,11 +408,14 @@ int runFamily(testing::MapFamily family, const Options& options) {
 int main(int argc, char** argv) {
   using namespace kinematic_coverage::core;
   const Options options = parseOptions(argc, argv);
-  std::cout << "| family, maps | maps | most vertices | split offset | failed | oracle checked | "
+  std::cout << "| family, maps | maps | most vertices | planned in several parts | goal "
+               "unreachable (refused) | failed | closest approach / wall_distance, least | "
+               "maps nearer than wall_distance | turns smoothed % | traversal time ratio to "
+               "unsmoothed, median | oracle checked | "
                "coverage_percent against the oracle, largest difference | unseen reachable "
                "against the oracle, largest difference (% of free area) | median plan s "
                "(timing) | max plan s (timing) | peak RSS MB (timing) |\n"
-               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
             << std::endl;
   bool any_failed = false;
   for (const testing::MapFamily family : options.families) {

@@ -97,7 +97,8 @@ SoakOptions parseOptions(int argc, char** argv) {
 }
 
 /// True for the planner's precise rejections of a start or goal the map makes impossible
-/// (inside a hole, or joined to the offset area only through a hole).
+/// (inside a hole, or joined to the offset area only through a hole); a goal that a robot
+/// keeping the gap clearance cannot reach is an UnreachableGoalError.
 bool isPreciseRejection(const std::string& message) {
   return message.find("crosses a hole") != std::string::npos ||
          message.find("lies inside hole") != std::string::npos;
@@ -161,6 +162,8 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
           {evaluator.report(evaluator.seeTrajectory(poses)).reachable_coverage_percent, seed});
     }
     return SoakOutcome::kPassed;
+  } catch (const UnreachableGoalError&) {
+    return SoakOutcome::kRejected;
   } catch (const InvalidInputError& error) {
     if (isPreciseRejection(error.what())) return SoakOutcome::kRejected;
     return fail(std::string("InvalidInputError: ") + error.what());

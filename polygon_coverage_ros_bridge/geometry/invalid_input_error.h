@@ -21,4 +21,12 @@ class SizeLimitError : public InvalidInputError {
   explicit SizeLimitError(const std::string& message) : InvalidInputError(message) {}
 };
 
+/// Thrown for a goal that a robot keeping the gap clearance cannot reach from the start
+/// (docs/REFERENCE.md, Geometry and input rules, Parts): the request is impossible as set,
+/// not the map invalid; benchmarks count such maps apart.
+class UnreachableGoalError : public InvalidInputError {
+ public:
+  explicit UnreachableGoalError(const std::string& message) : InvalidInputError(message) {}
+};
+
 }  // namespace kinematic_coverage::core

@@ -42,6 +42,7 @@ const std::vector<ParameterField>& parameterFields() {
       {"yaw_rate_max", &P::yaw_rate_max},
       {"wall_distance", &P::wall_distance},
       {"offset_parts", &P::offset_parts},
+      {"gap_clearance", &P::gap_clearance, true},
       {"boundary_simplification", &P::boundary_simplification},
       {"sensor_model", &P::sensor_model},
       {"lateral_fov", &P::lateral_fov},

@@ -45,6 +45,18 @@ void requireOpenAngle(const char* name, double value) {
 }
 
 /// The current's fluctuation, the navigation error and their seed.
+/// gap_clearance in (0, wall_distance], or the wall distance's stand-in; any value when the
+/// wall distance is 0 (no gaps then).
+void requireGapClearance(const PlannerParameters& p) {
+  if (p.wall_distance > 0.0 && p.gap_clearance != kClearanceOfWallDistance &&
+      !(std::isfinite(p.gap_clearance) && p.gap_clearance > 0.0 &&
+        p.gap_clearance <= p.wall_distance)) {
+    throw InvalidInputError("gap_clearance = " + formatNumber(p.gap_clearance) +
+                            " is out of range: it must be in (0, wall_distance = " +
+                            formatNumber(p.wall_distance) + "] (m), or wall_distance");
+  }
+}
+
 void validateDisturbance(const PlannerParameters& p) {
   requireNonNegative("current_sigma", p.current_sigma, "m/s");
   requireNonNegative("navigation_sigma", p.navigation_sigma, "m");
@@ -102,6 +114,7 @@ void ParameterValidator::validate(const PlannerParameters& p) const {
   requireShare("lateral_overlap", p.lateral_overlap, 1.0, false);
   requirePositive("turning_radius", p.turning_radius, "m");
   choiceOf("offset_parts", p.offset_parts, kOffsetParts);
+  requireGapClearance(p);
   choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies);
   choiceOf("turn_curve", p.turn_curve, kTurnCurves);
   choiceOf("coverage_safe_area", p.coverage_safe_area, kCoverageSafeAreas);

@@ -4,8 +4,9 @@
 
 namespace kinematic_coverage::core {
 
-/// The value of smoothing_clearance that stands for the wall distance, written
-/// `wall_distance` in mission files, `--set`, config/*.yaml and the nodes' parameters.
+/// The value of a clearance (smoothing_clearance, gap_clearance) that stands for the wall
+/// distance, written `wall_distance` in mission files, `--set`, config/*.yaml and the
+/// nodes' parameters.
 constexpr double kClearanceOfWallDistance = -1.0;
 
 /// Every parameter (docs/REFERENCE.md, Parameters) with its default. The same names are the keys
@@ -21,9 +22,13 @@ struct PlannerParameters {
   double a_max = 0.2;                  ///< m/s^2
   double yaw_rate_max = 0.5;           ///< rad/s
   double wall_distance = 1.0;          ///< m kept from hull and holes
-  /// Where the wall offset splits the free area: "all" parts planned and joined through
-  /// their gaps, or only the "largest".
+  /// Where the wall offset splits the free area: "all" parts reachable through gaps with at
+  /// least gap_clearance, planned and joined through them, or only the "largest".
   std::string offset_parts = "all";
+  /// m: the least clearance of a gap between parts that transits pass, in (0, wall_distance];
+  /// by default the wall distance (kClearanceOfWallDistance): parts beyond narrower gaps are
+  /// not entered. Ignored when wall_distance is 0.
+  double gap_clearance = kClearanceOfWallDistance;
   /// Share of the sweep distance by which the offset free area's boundary may move inward
   /// before it is decomposed (BoundarySimplification); in [0, 0.5], 0: decomposed exactly.
   double boundary_simplification = 0.1;

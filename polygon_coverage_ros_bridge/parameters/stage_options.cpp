@@ -21,6 +21,10 @@ double smoothingClearance(const PlannerParameters& p) {
                                                            : p.smoothing_clearance;
 }
 
+double gapClearance(const PlannerParameters& p) {
+  return p.gap_clearance == kClearanceOfWallDistance ? p.wall_distance : p.gap_clearance;
+}
+
 SensorOptions sensorOptions(const PlannerParameters& p) {
   SensorOptions options;
   options.model = choiceOf("sensor_model", p.sensor_model, kSensorModels);
@@ -72,6 +76,10 @@ FrustumSensor sensorOf(const PlannerParameters& parameters) {
 
 double smoothingClearanceOf(const PlannerParameters& parameters) {
   return smoothingClearance(validated(parameters));
+}
+
+double gapClearanceOf(const PlannerParameters& parameters) {
+  return gapClearance(validated(parameters));
 }
 
 double boundarySimplificationOf(const PlannerParameters& parameters) {

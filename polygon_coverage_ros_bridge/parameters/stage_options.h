@@ -33,6 +33,9 @@ FrustumSensor sensorOf(const PlannerParameters& parameters);
 /// smoothing_clearance in metres: the wall distance unless set otherwise.
 double smoothingClearanceOf(const PlannerParameters& parameters);
 
+/// gap_clearance in metres: the wall distance unless set otherwise.
+double gapClearanceOf(const PlannerParameters& parameters);
+
 /// boundary_simplification as a distance (m): that share of the sensor's sweep distance.
 double boundarySimplificationOf(const PlannerParameters& parameters);
 

@@ -193,12 +193,34 @@ std::string partName(const PolygonWithHoles& part) {
   return name.str();
 }
 
+/// Why a sealed part is not entered: its widest passage, or none.
+std::string passageText(const SealedPart& sealed, double gap_clearance) {
+  std::ostringstream text;
+  if (sealed.widest_passage) {
+    text << "the widest gap to it, at " << formatPoint(sealed.widest_passage->narrowest_point)
+         << ", has " << sealed.widest_passage->clearance_m << " m clearance, below gap_clearance "
+         << gap_clearance << " m";
+  } else {
+    text << "no gap to it is wider than a pinch point";
+  }
+  return text.str();
+}
+
+/// A part of the offset free area that the robot cannot reach, and why.
+struct UnreachablePart {
+  PolygonWithHoles part;
+  std::string passage;  ///< passageText
+};
+
 /// The parts to plan and the area their transitions run in, by `offset_parts`, with a
-/// warning per gap passed and per part left out.
+/// warning per gap passed narrower than the wall distance and per part left out. With
+/// `all`, the parts beyond gaps narrower than gap_clearance leave plan->offset_parts (they
+/// count as unreachable, and are added to `unreachable`); a goal inside one is refused.
 std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
                                           const PlannerParameters& parameters, const Point2& start,
-                                          CoveragePlan* plan) {
-  const std::vector<PolygonWithHoles>& parts = plan->offset_parts;
+                                          const Point2& goal, double tolerance, CoveragePlan* plan,
+                                          std::vector<UnreachablePart>* unreachable) {
+  const std::vector<PolygonWithHoles> parts = plan->offset_parts;
   if (parts.size() == 1) {
     plan->route_area = parts.front();
     return parts;
@@ -211,9 +233,10 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
     plan->route_area = parts.front();
     return {parts.front()};
   }
+  const double gap_clearance = gapClearanceOf(parameters);
   JoinedOffsetArea joined;
   try {
-    joined = OffsetPartJoiner(free_area, parameters.wall_distance)
+    joined = OffsetPartJoiner(free_area, parameters.wall_distance, gap_clearance)
                  .join(parts, nearestPart(parts, start));
   } catch (const SizeLimitError&) {
     throw;
@@ -223,23 +246,44 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
   if (joined.route_area.hull.empty()) {
     throw InternalError("offset", "joining the parts of the offset free area gave no area");
   }
-  for (const OffsetGap& gap : joined.gaps) {
-    std::ostringstream warning;
-    warning << "the wall offset splits the free area: transits to " << partName(parts[gap.to_part])
-            << " pass a gap at " << formatPoint(gap.narrowest_point) << " with " << gap.clearance_m
-            << " m clearance (wall_distance " << parameters.wall_distance << " m)";
-    plan->warnings.push_back(warning.str());
+  for (const SealedPart& sealed : joined.sealed_parts) {
+    if (contains(parts[sealed.part], goal, tolerance)) {
+      throw UnreachableGoalError("goal " + formatPoint(goal) + " lies in " +
+                                 partName(parts[sealed.part]) +
+                                 " of the offset free area that the robot cannot reach from the "
+                                 "start: " +
+                                 passageText(sealed, gap_clearance));
+    }
+    unreachable->push_back({parts[sealed.part], passageText(sealed, gap_clearance)});
+    plan->warnings.push_back(
+        "the wall offset splits the free area: " + partName(parts[sealed.part]) +
+        " is not entered (it counts as "
+        "unreachable): " +
+        passageText(sealed, gap_clearance));
   }
-  for (std::size_t k : joined.sealed_parts) {
-    plan->warnings.push_back("the wall offset splits the free area: " + partName(parts[k]) +
-                             " is not planned: no passage to it has a clearance the robot can "
-                             "keep");
+  // Only the parts joined stay in the offset free area; the gaps name them by new index.
+  std::vector<std::size_t> index_of(parts.size(), 0);
+  plan->offset_parts.clear();
+  for (std::size_t k : joined.joined_parts) {
+    index_of[k] = plan->offset_parts.size();
+    plan->offset_parts.push_back(parts[k]);
+  }
+  for (OffsetGap& gap : joined.gaps) {
+    if (!keepsClearance(gap.clearance_m, parameters.wall_distance)) {
+      std::ostringstream warning;
+      warning << "the wall offset splits the free area: transits to "
+              << partName(parts[gap.to_part]) << " pass a gap at "
+              << formatPoint(gap.narrowest_point) << " with " << gap.clearance_m
+              << " m clearance, nearer than wall_distance " << parameters.wall_distance
+              << " m (gap_clearance " << gap_clearance << " m allows it)";
+      plan->warnings.push_back(warning.str());
+    }
+    gap.from_part = index_of[gap.from_part];
+    gap.to_part = index_of[gap.to_part];
   }
   plan->route_area = std::move(joined.route_area);
   plan->gaps = std::move(joined.gaps);
-  std::vector<PolygonWithHoles> planned;
-  for (std::size_t k : joined.joined_parts) planned.push_back(parts[k]);
-  return planned;
+  return plan->offset_parts;
 }
 
 /// Start and goal: the generalized TSP's nodes 0 and 1, before the sweep patterns.
@@ -337,18 +381,41 @@ OffsetStage offsetStage(const PlanningRun& run) {
   const Clock::time_point t = Clock::now();
   CoveragePlan& plan = run.plan;
   plan.offset_parts = computeOffsetFreeArea(run.free_area, run.parameters.wall_distance).parts;
+  const std::size_t part_count = plan.offset_parts.size();
   OffsetStage offset;
-  offset.planned_parts = partsToPlan(run.free_area, run.parameters, run.start, &plan);
+  std::vector<UnreachablePart> unreachable;
+  offset.planned_parts = partsToPlan(run.free_area, run.parameters, run.start, run.goal,
+                                     run.tolerance, &plan, &unreachable);
   offset.start_inside = entryPoint(run.free_area, plan.route_area, offset.planned_parts, run.start,
                                    "start", run.tolerance);
-  offset.goal_inside = entryPoint(run.free_area, plan.route_area, offset.planned_parts, run.goal,
-                                  "goal", run.tolerance);
+  try {
+    offset.goal_inside = entryPoint(run.free_area, plan.route_area, offset.planned_parts, run.goal,
+                                    "goal", run.tolerance);
+  } catch (const InvalidInputError& error) {
+    // A goal in the wall band nearer a part the robot cannot reach than the planned ones:
+    // say so.
+    const auto distance = [&](const PolygonWithHoles& part) {
+      return distanceToBoundary(run.goal, part);
+    };
+    const auto nearer = [&](const UnreachablePart& a, const UnreachablePart& b) {
+      return distance(a.part) < distance(b.part);
+    };
+    if (unreachable.empty()) throw;
+    const UnreachablePart& nearest =
+        *std::min_element(unreachable.begin(), unreachable.end(), nearer);
+    for (const PolygonWithHoles& part : offset.planned_parts) {
+      if (distance(part) <= distance(nearest.part)) throw;
+    }
+    throw UnreachableGoalError(
+        std::string(error.what()) + "; the part of the offset free area nearest it, " +
+        partName(nearest.part) + ", cannot be reached from the start: " + nearest.passage);
+  }
   std::size_t holes = 0;
   for (const PolygonWithHoles& part : plan.offset_parts) holes += part.holes.size();
   std::ostringstream summary;
   summary << "offset free area " << area(plan.offset_parts) << " m^2 with " << holes << " holes";
-  if (plan.offset_parts.size() > 1) {
-    summary << " in " << plan.offset_parts.size() << " parts, " << offset.planned_parts.size()
+  if (part_count > 1) {
+    summary << " in " << part_count << " parts, " << offset.planned_parts.size()
             << " planned, joined through " << plan.gaps.size() << " gaps";
   }
   run.stage("offset", t, summary.str());

@@ -33,13 +33,15 @@ struct CoveragePlan {
   /// area; legs before and after it join a start or goal outside that area.
   std::size_t first_inside = 0;
   std::size_t last_inside = 0;
-  /// The offset free area (docs/REFERENCE.md, Geometry and input rules), every part of
-  /// it, the largest first: the reachable area is grown from all of them, planned or not.
+  /// The offset free area (docs/REFERENCE.md, Geometry and input rules), the largest part
+  /// first: every part with offset_parts `largest`, planned or not; with `all` the parts
+  /// reachable from the start through gaps with at least gap_clearance. The reachable area
+  /// is grown from them.
   std::vector<PolygonWithHoles> offset_parts;
   /// Where transitions run: the planned parts joined by corridors through the gaps between
   /// them. Every leg from first_inside to last_inside lies in it.
   PolygonWithHoles route_area;
-  /// The gaps (narrower than two wall distances) that transits pass between parts.
+  /// The gaps (with at least gap_clearance) that transits pass between parts.
   std::vector<OffsetGap> gaps;
   /// The cells of the chosen decomposition, counter-clockwise.
   std::vector<Ring> cells;

@@ -15,17 +15,19 @@
 namespace kinematic_coverage::core {
 namespace {
 
-/// Gaps whose clearance is below this share of the wall distance are sealed: no robot
-/// passes a pinch point, and offsets at smaller distances add nothing but cost.
+/// Passages narrower than this share of the wall distance are not searched for (unless the
+/// gap clearance is smaller): pinch points, which no widest passage names and offsets at
+/// smaller distances would find only at a cost.
 constexpr double kMinClearanceShare = 0.02;
 /// A bracket of offset distances in which the parts' grouping changes is halved this many
-/// times: the gap's clearance is found to (1 - kMinClearanceShare) / 1024, about 0.1 % of
-/// the wall distance, with about 10 offsets per gap (milliseconds each); the transit, the
-/// shortest path in the offset at that distance, runs that close to the gap's middle.
+/// times: the gap's clearance is found to about 0.1 % of the wall distance, with about 10
+/// offsets per gap (milliseconds each); the transit, the shortest path in the offset at that
+/// distance, runs that close to the gap's middle.
 constexpr int kRefinementDepth = 10;
 /// Half-width of a transit corridor, as a share of its path's clearance: the corridor
 /// stays inside the free area, and a transit in it keeps 86 % of the path's clearance
-/// (the corridor's corners lie at sqrt(2) half-widths from the path).
+/// (the corridor's corners lie at sqrt(2) half-widths from the path); narrower where the
+/// transit must keep the gap clearance (corridorHalfWidth).
 constexpr double kCorridorShare = 0.1;
 /// Rounding of the Boolean operations' results, relative to the map's scale.
 constexpr double kRelativeVertexTolerance = 1e-9;
@@ -211,13 +213,29 @@ std::vector<Point2> shortestPathInside(const PolygonWithHoles& area, const Point
   return VisibilityGraph(area, distance_cost).shortestPath(a, b);
 }
 
+/// The distances that bound the search for gaps, below the wall distance: a gap found at
+/// `passable` or above keeps the gap clearance within kClearanceTolerance (its path lies in
+/// that offset), one found below it is narrower; none is sought below `lowest`.
+struct SearchLevels {
+  double lowest = 0.0;
+  double passable = 0.0;
+};
+
+SearchLevels searchLevels(double wall_distance, double gap_clearance) {
+  SearchLevels levels;
+  levels.passable = std::max(gap_clearance - 0.5 * kClearanceTolerance, 0.75 * gap_clearance);
+  levels.lowest = std::min(kMinClearanceShare * wall_distance, 0.5 * levels.passable);
+  return levels;
+}
+
 /// The gaps that join the parts of `area`'s offset at decreasing distances, largest
 /// clearance first. `parts[k]` stands for part `owner[k]` of `part_count` (a part may be
 /// sampled in several pieces); the gaps name the owners, and each joins two groups that
 /// no earlier gap joined. Clearances are measured against `free_area`.
 std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<PartVertices>& parts,
                               const std::vector<std::size_t>& owner, std::size_t part_count,
-                              double wall_distance, const PolygonWithHoles& free_area) {
+                              double wall_distance, const SearchLevels& levels,
+                              const PolygonWithHoles& free_area) {
   Level upper;
   upper.distance = wall_distance;
   for (std::size_t k = 0; k < parts.size(); ++k) {
@@ -225,9 +243,11 @@ std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<Pa
   }
   // Every level is an offset of the same area: its rings converted once.
   const WallOffset offset(area);
-  const Level lower = levelAt(offset, parts, kMinClearanceShare * wall_distance);
+  const Level lowest = levelAt(offset, parts, levels.lowest);
+  const Level passable = levelAt(offset, parts, levels.passable);
   std::vector<Merge> merges;
-  refine(offset, parts, lower, upper, kRefinementDepth, &merges);
+  refine(offset, parts, passable, upper, kRefinementDepth, &merges);
+  refine(offset, parts, lowest, passable, kRefinementDepth, &merges);
 
   PartGroups groups(part_count);
   std::vector<OffsetGap> gaps;
@@ -293,7 +313,7 @@ bool boundsOverlap(const Ring& a, const Ring& b) {
 /// the others is for the caller to join on the whole area.
 std::vector<OffsetGap> windowedGaps(const PolygonWithHoles& free_area,
                                     const std::vector<PolygonWithHoles>& parts,
-                                    double wall_distance) {
+                                    double wall_distance, const SearchLevels& levels) {
   std::vector<OffsetGap> gaps;
   for (std::size_t k = 1; k < parts.size(); ++k) {
     const PolygonWithHoles window = boxAround(parts[k].hull, kWindowMarginShare * wall_distance);
@@ -318,7 +338,7 @@ std::vector<OffsetGap> windowedGaps(const PolygonWithHoles& free_area,
       }
     }
     const std::vector<OffsetGap> found =
-        gapsIn(*area, local, owner, parts.size(), wall_distance, free_area);
+        gapsIn(*area, local, owner, parts.size(), wall_distance, levels, free_area);
     gaps.insert(gaps.end(), found.begin(), found.end());
   }
   return gaps;
@@ -330,10 +350,99 @@ std::size_t vertexCount(const PolygonWithHoles& area) {
   return count;
 }
 
+/// The gaps widest first, without those that join parts an earlier (wider) gap joined
+/// already: a widest spanning forest of the parts (Kruskal's order).
+std::vector<OffsetGap> widestFirst(std::vector<OffsetGap> gaps, std::size_t part_count) {
+  std::stable_sort(gaps.begin(), gaps.end(), [](const OffsetGap& a, const OffsetGap& b) {
+    return a.clearance_m > b.clearance_m;
+  });
+  PartGroups groups(part_count);
+  std::vector<OffsetGap> kept;
+  for (OffsetGap& gap : gaps) {
+    if (groups.find(gap.from_part) == groups.find(gap.to_part)) continue;
+    groups.join(gap.from_part, gap.to_part);
+    kept.push_back(std::move(gap));
+  }
+  return kept;
+}
+
+/// True when the gaps join all parts into one group.
+bool joinsAll(const std::vector<OffsetGap>& gaps, std::size_t part_count) {
+  PartGroups groups(part_count);
+  for (const OffsetGap& gap : gaps) groups.join(gap.from_part, gap.to_part);
+  for (std::size_t k = 1; k < part_count; ++k) {
+    if (groups.find(k) != groups.find(0)) return false;
+  }
+  return true;
+}
+
+/// Rounding of the Boolean operations at the free area's scale.
+double vertexTolerance(const PolygonWithHoles& free_area) {
+  double scale = 1.0;
+  for (const Point2& p : free_area.hull) scale = std::max(scale, p.cwiseAbs().maxCoeff());
+  return kRelativeVertexTolerance * scale;
+}
+
+/// The half-width of a gap's corridor: a transit in it keeps the gap clearance within
+/// kClearanceTolerance (a gap of exactly the wall distance gets a corridor about a
+/// millimetre wide), and at most kCorridorShare of the gap's clearance.
+double corridorHalfWidth(const OffsetGap& gap, double gap_clearance) {
+  const double room = std::max(gap.clearance_m - gap_clearance + kClearanceTolerance,
+                               0.5 * kClearanceTolerance);
+  return std::min(kCorridorShare * gap.clearance_m, room / std::sqrt(2.0));
+}
+
+/// The anchor's group, its parts and the corridors of its gaps (moved to `route_gaps`)
+/// united into one area: the component that holds the anchor part (`tolerance`: rounding).
+PolygonWithHoles routeArea(const std::vector<PolygonWithHoles>& parts, std::size_t anchor,
+                           PartGroups& groups, std::vector<OffsetGap>& gaps, double gap_clearance,
+                           double tolerance, std::vector<OffsetGap>* route_gaps) {
+  std::vector<PolygonWithHoles> pieces;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    if (groups.find(k) == groups.find(anchor)) pieces.push_back(parts[k]);
+  }
+  for (OffsetGap& gap : gaps) {
+    if (groups.find(gap.from_part) != groups.find(anchor)) continue;
+    const std::vector<PolygonWithHoles> strips =
+        corridor(gap.path, corridorHalfWidth(gap, gap_clearance));
+    pieces.insert(pieces.end(), strips.begin(), strips.end());
+    route_gaps->push_back(std::move(gap));
+  }
+  // A part's first vertex lies on the united boundary or inside it, up to rounding.
+  for (const PolygonWithHoles& component : unionOfAreas(pieces)) {
+    if (contains(component, parts[anchor].hull.front(), tolerance)) {
+      return component;
+    }
+  }
+  return {};
+}
+
+/// For every part outside the anchor's group: the narrow gap (widest first) that first
+/// joins its group to the anchor's, the bottleneck of its widest passage.
+std::vector<std::optional<OffsetGap>> widestPassages(const std::vector<OffsetGap>& narrow,
+                                                     std::size_t anchor, PartGroups reach,
+                                                     std::size_t part_count) {
+  std::vector<std::optional<OffsetGap>> widest(part_count);
+  for (const OffsetGap& gap : narrow) {
+    const std::size_t a = reach.find(gap.from_part);
+    const std::size_t b = reach.find(gap.to_part);
+    const std::size_t anchor_group = reach.find(anchor);
+    if (a != b && (a == anchor_group || b == anchor_group)) {
+      const std::size_t other = a == anchor_group ? b : a;
+      for (std::size_t k = 0; k < part_count; ++k) {
+        if (reach.find(k) == other) widest[k] = gap;
+      }
+    }
+    reach.join(gap.from_part, gap.to_part);
+  }
+  return widest;
+}
+
 }  // namespace
 
-OffsetPartJoiner::OffsetPartJoiner(const PolygonWithHoles& free_area, double wall_distance)
-    : free_area_(free_area), wall_distance_(wall_distance) {}
+OffsetPartJoiner::OffsetPartJoiner(const PolygonWithHoles& free_area, double wall_distance,
+                                   double gap_clearance)
+    : free_area_(free_area), wall_distance_(wall_distance), gap_clearance_(gap_clearance) {}
 
 JoinedOffsetArea OffsetPartJoiner::join(const std::vector<PolygonWithHoles>& parts,
                                         std::size_t anchor) const {
@@ -343,63 +452,47 @@ JoinedOffsetArea OffsetPartJoiner::join(const std::vector<PolygonWithHoles>& par
     for (std::size_t k = 0; k < parts.size(); ++k) result.joined_parts.push_back(k);
     return result;
   }
-  // Gaps, replayed into groups; a gap that joins what is joined already is dropped.
-  PartGroups groups(parts.size());
+  const SearchLevels levels = searchLevels(wall_distance_, gap_clearance_);
   std::vector<OffsetGap> gaps;
-  auto keepJoining = [&](std::vector<OffsetGap> found) {
-    for (OffsetGap& gap : found) {
-      if (groups.find(gap.from_part) == groups.find(gap.to_part)) continue;
-      groups.join(gap.from_part, gap.to_part);
-      gaps.push_back(std::move(gap));
-    }
-  };
-  auto allJoined = [&] {
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-      if (groups.find(k) != groups.find(anchor)) return false;
-    }
-    return true;
-  };
   if (vertexCount(free_area_) > kWindowedJoinVertices) {
-    keepJoining(windowedGaps(free_area_, parts, wall_distance_));
+    gaps = widestFirst(windowedGaps(free_area_, parts, wall_distance_, levels), parts.size());
   }
-  if (!allJoined()) {
-    groups = PartGroups(parts.size());
-    gaps.clear();
+  if (!joinsAll(gaps, parts.size())) {
     std::vector<PartVertices> all;
     std::vector<std::size_t> owner;
     for (std::size_t k = 0; k < parts.size(); ++k) {
       all.push_back(verticesOf(parts[k]));
       owner.push_back(k);
     }
-    keepJoining(gapsIn(free_area_, all, owner, parts.size(), wall_distance_, free_area_));
+    gaps = widestFirst(
+        gapsIn(free_area_, all, owner, parts.size(), wall_distance_, levels, free_area_),
+        parts.size());
   }
-
-  // The anchor's group, its parts and corridors united into one area.
-  std::vector<PolygonWithHoles> pieces;
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    if (groups.find(k) == groups.find(anchor)) pieces.push_back(parts[k]);
-  }
+  // The gaps that keep the gap clearance join the parts; the narrower ones name the
+  // widest passage to each part left apart.
+  PartGroups groups(parts.size());
+  std::vector<OffsetGap> passed;
+  std::vector<OffsetGap> narrow;
   for (OffsetGap& gap : gaps) {
-    if (groups.find(gap.from_part) != groups.find(anchor)) continue;
-    const std::vector<PolygonWithHoles> strips =
-        corridor(gap.path, kCorridorShare * gap.clearance_m);
-    pieces.insert(pieces.end(), strips.begin(), strips.end());
-    result.gaps.push_back(std::move(gap));
-  }
-  // A part's first vertex lies on the united boundary or inside it, up to rounding.
-  double scale = 1.0;
-  for (const Point2& p : free_area_.hull) scale = std::max(scale, p.cwiseAbs().maxCoeff());
-  const double tolerance = kRelativeVertexTolerance * scale;
-  for (const PolygonWithHoles& component : unionOfAreas(pieces)) {
-    if (contains(component, parts[anchor].hull.front(), tolerance)) {
-      result.route_area = component;
-      break;
+    if (keepsClearance(gap.clearance_m, gap_clearance_)) {
+      groups.join(gap.from_part, gap.to_part);
+      passed.push_back(std::move(gap));
+    } else {
+      narrow.push_back(std::move(gap));
     }
   }
+  const double tolerance = vertexTolerance(free_area_);
+  result.route_area =
+      routeArea(parts, anchor, groups, passed, gap_clearance_, tolerance, &result.gaps);
+  std::vector<std::optional<OffsetGap>> widest =
+      widestPassages(narrow, anchor, groups, parts.size());
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    const bool joined = groups.find(k) == groups.find(anchor) &&
-                        contains(result.route_area, parts[k].hull.front(), tolerance);
-    (joined ? result.joined_parts : result.sealed_parts).push_back(k);
+    if (groups.find(k) == groups.find(anchor) &&
+        contains(result.route_area, parts[k].hull.front(), tolerance)) {
+      result.joined_parts.push_back(k);
+    } else {
+      result.sealed_parts.push_back({k, std::move(widest[k])});
+    }
   }
   return result;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
@@ -13,14 +14,22 @@ enum class OffsetParts {
   kLargest,  ///< only the largest
 };
 
-/// A transit between two parts of the offset free area through a gap narrower than two
-/// wall distances: the robot may pass, with less clearance than the wall distance.
+/// A passage between two parts of the offset free area through a gap narrower than two
+/// wall distances: a robot may pass it with less clearance than the wall distance.
 struct OffsetGap {
   std::size_t from_part = 0;  ///< index into the parts: the side joined earlier
   std::size_t to_part = 0;    ///< the side this gap joins to it
   std::vector<Point2> path;   ///< from a boundary point of one part to one of the other
   Point2 narrowest_point = Point2::Zero();  ///< where the path's clearance is least
   double clearance_m = 0.0;                 ///< least distance from the path to the hull and holes
+};
+
+/// A part that no passage with at least the gap clearance joins to the start's part.
+struct SealedPart {
+  std::size_t part = 0;  ///< index into the parts
+  /// The widest passage to it, when one keeps at least 2 % of the wall distance: its
+  /// clearance is below the gap clearance. Empty: no such passage (a pinch point).
+  std::optional<OffsetGap> widest_passage;
 };
 
 /// The offset free area's parts joined into one area in which transits are routed.
@@ -30,14 +39,16 @@ struct JoinedOffsetArea {
   PolygonWithHoles route_area;
   /// Indices of the parts inside route_area (all of them unless a gap is sealed).
   std::vector<std::size_t> joined_parts;
-  /// One per joined gap.
+  /// One per joined gap, each with at least the gap clearance.
   std::vector<OffsetGap> gaps;
-  /// Parts that no passage of at least min clearance reaches from the joined ones.
-  std::vector<std::size_t> sealed_parts;
+  /// Parts that no passage with at least the gap clearance reaches from the joined ones.
+  std::vector<SealedPart> sealed_parts;
 };
 
 /// Joins the parts of a split offset free area (docs/REFERENCE.md, Geometry and input
-/// rules, Parts) by transits that keep the largest clearance each gap allows.
+/// rules, Parts) by transits that keep the largest clearance each gap allows, through gaps
+/// with at least the gap clearance (`gap_clearance`) only: a part beyond narrower gaps is
+/// sealed, named with its widest passage.
 ///
 /// The free area is offset at decreasing distances below the wall distance; where two
 /// groups of parts first fall into one offset component, the gap between them has about
@@ -49,8 +60,10 @@ struct JoinedOffsetArea {
 /// whole area only when the windows leave a part apart.
 class OffsetPartJoiner {
  public:
-  /// `free_area` cleaned, `wall_distance` > 0 the distance that split it.
-  OffsetPartJoiner(const PolygonWithHoles& free_area, double wall_distance);
+  /// `free_area` cleaned, `wall_distance` > 0 the distance that split it, `gap_clearance`
+  /// in (0, wall_distance] the least clearance of a gap passed (kClearanceTolerance
+  /// below it passes).
+  OffsetPartJoiner(const PolygonWithHoles& free_area, double wall_distance, double gap_clearance);
 
   /// Joins `parts` (computeOffsetFreeArea's parts of the same free area and distance,
   /// largest first). The joined group is the one holding part `anchor` (the part the
@@ -60,6 +73,7 @@ class OffsetPartJoiner {
  private:
   const PolygonWithHoles& free_area_;
   double wall_distance_;
+  double gap_clearance_;
 };
 
 }  // namespace kinematic_coverage::core

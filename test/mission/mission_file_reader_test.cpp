@@ -75,6 +75,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"yaw_rate_max", "0.9"},
       {"wall_distance", "0"},
       {"offset_parts", "largest"},
+      {"gap_clearance", "0.35"},
       {"sensor_model", "line"},
       {"lateral_fov", "1.1"},
       {"onward_fov", "0.3"},
@@ -190,6 +191,7 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.current_x, -0.05);
   EXPECT_EQ(p.current_y, 0.15);
   EXPECT_EQ(p.smoothing_clearance, 0.25);
+  EXPECT_EQ(p.gap_clearance, 0.35);
   EXPECT_EQ(p.current_sigma, 0.02);
   EXPECT_EQ(p.current_time_constant, 30.0);
   EXPECT_EQ(p.navigation_sigma, 0.1);
@@ -324,6 +326,13 @@ TEST(MissionFileReader, ReadsTheWordWallDistanceAsAClearance) {
       MissionFileReader().parse(missionWith("turning_radius", "smoothing_clearance: wall_distance"),
                                 "m.yaml", {"wall_distance=0.7"});
   EXPECT_EQ(smoothingClearanceOf(back.parameters), 0.7);
+  // gap_clearance likewise.
+  EXPECT_EQ(word.parameters.gap_clearance, kClearanceOfWallDistance);
+  EXPECT_EQ(MissionFileReader::parameterText(word.parameters, "gap_clearance"), "wall_distance");
+  EXPECT_EQ(gapClearanceOf(word.parameters), 2.5);
+  EXPECT_EQ(gapClearanceOf(
+                MissionFileReader().parse(kMission, "m.yaml", {"gap_clearance=0.4"}).parameters),
+            0.4);
 }
 
 TEST(MissionFileReader, ReadsFilesAndReportsMissingOnes) {

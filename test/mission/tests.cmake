@@ -6,5 +6,6 @@ kc_add_gtest(test_mission
   test/mission/coverage_finding_test.cpp
   test/mission/coverage_safe_bars_test.cpp
   test/mission/polygon_sketch_test.cpp
+  test/mission/wall_clearance_warning_test.cpp
   test/support/hard_map_generator.cpp
   LIBRARIES kc_mission kc_polygon_sketch)

@@ -157,6 +157,21 @@ TEST(ParameterValidator, ChecksTheRobotModelsRanges) {
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.smoothing_clearance = kClearanceOfWallDistance; }),
             "");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.smoothing_clearance = 0.5; }), "");
+  // gap_clearance in (0, wall_distance], ignored when wall_distance is 0.
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.gap_clearance = 1.5; }),
+            "gap_clearance = 1.5 is out of range: it must be in (0, wall_distance = 1] (m), or "
+            "wall_distance");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.gap_clearance = 0.0; }),
+            "gap_clearance = 0 is out of range: it must be in (0, wall_distance = 1] (m), or "
+            "wall_distance");
+  EXPECT_NE(errorOf([](PlannerParameters& p) { p.gap_clearance = std::nan(""); }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.gap_clearance = 1.0; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.gap_clearance = 0.01; }), "");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) {
+              p.wall_distance = 0.0;
+              p.gap_clearance = 3.0;
+            }),
+            "");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_sigma = -0.01; }),
             "current_sigma = -0.01 is out of range: it must be a finite number >= 0 (m/s)");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.navigation_sigma = INFINITY; }),

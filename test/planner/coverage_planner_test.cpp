@@ -14,6 +14,7 @@
 #include "test/planner/plan_properties.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/random_polygons.h"
+#include "test/support/test_shapes.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {
@@ -45,6 +46,7 @@ const PolygonWithHoles kThreeRooms = {
 TEST(CoveragePlanner, EveryPartOfASplitOffsetAreaIsPlannedAndSeen) {
   PlannerParameters parameters;
   parameters.sensor_distance = 1.0;  // W = 4.27 m, L = 0.53 m
+  parameters.gap_clearance = 0.5;    // transits may pass the straits (0.6 and 0.75 m)
   // Start in the smallest room, goal in the largest: the robot passes both straits.
   const Point2 start(40, 6);
   const Point2 goal(18, 18);
@@ -54,7 +56,10 @@ TEST(CoveragePlanner, EveryPartOfASplitOffsetAreaIsPlannedAndSeen) {
   EXPECT_EQ(plan.gaps.size(), 2u);
   EXPECT_EQ(plan.warnings.size(), 2u);  // one per gap, with its place and clearance
   for (const std::string& warning : plan.warnings) {
-    EXPECT_NE(warning.find("m clearance (wall_distance 1 m)"), std::string::npos) << warning;
+    EXPECT_NE(warning.find("m clearance, nearer than wall_distance 1 m (gap_clearance 0.5 m "
+                           "allows it)"),
+              std::string::npos)
+        << warning;
   }
   for (const PolygonWithHoles& part : plan.offset_parts) {
     std::size_t inside = 0;
@@ -76,6 +81,57 @@ TEST(CoveragePlanner, EveryPartOfASplitOffsetAreaIsPlannedAndSeen) {
     // (0.41 m).
     EXPECT_GT(trajectory.min_obstacle_clearance_m, smoothing ? 0.3 : 0.5)
         << "smoothing " << smoothing;
+  }
+}
+
+TEST(CoveragePlanner, ByDefaultPartsBeyondStraitsNarrowerThanTwoWallDistancesAreNotEntered) {
+  PlannerParameters parameters;
+  parameters.sensor_distance = 1.0;
+  // From the smallest room: both larger rooms lie beyond a strait narrower than 2 m.
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(kThreeRooms, {40, 6}, {46, 14});
+  expectValidPlan(kThreeRooms, plan, parameters, {40, 6}, {46, 14});
+  ASSERT_EQ(plan.offset_parts.size(), 1u);
+  EXPECT_TRUE(plan.gaps.empty());
+  for (const Pose2& waypoint : plan.waypoints) EXPECT_GE(waypoint.x, 38.0);
+  ASSERT_EQ(plan.warnings.size(), 2u);
+  for (const std::string& warning : plan.warnings) {
+    EXPECT_NE(warning.find("is not entered (it counts as unreachable): the widest gap to it"),
+              std::string::npos)
+        << warning;
+    // Both rooms' widest passage is the 1.2 m strait beside the start's room.
+    EXPECT_NE(warning.find("m clearance, below gap_clearance 1 m"), std::string::npos) << warning;
+  }
+  // A goal in a room the robot cannot reach is refused, naming the passage.
+  try {
+    CoveragePlanner(parameters).plan(kThreeRooms, {40, 6}, {10, 10});
+    ADD_FAILURE() << "a goal beyond a strait narrower than gap_clearance was planned";
+  } catch (const InvalidInputError& error) {
+    EXPECT_NE(std::string(error.what()).find("goal (10, 10) lies in a part of "), std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("that the robot cannot reach from the start"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(CoveragePlanner, AStraitOfTwiceTheWallDistanceIsPassedKeepingTheWallDistance) {
+  // The mitred offset splits at the strait, but a robot keeping 1 m passes along its
+  // middle, and by default it does, unwarned.
+  const PolygonWithHoles free_area = testing::twoRoomsJoinedByATwoMetreStrait();
+  PlannerParameters parameters;
+  parameters.sensor_distance = 1.0;
+  const CoveragePlan plan = CoveragePlanner(parameters).plan(free_area, {2, 2}, {24, 8});
+  expectValidPlan(free_area, plan, parameters, {2, 2}, {24, 8});
+  EXPECT_EQ(plan.offset_parts.size(), 2u);
+  ASSERT_EQ(plan.gaps.size(), 1u);
+  EXPECT_TRUE(plan.warnings.empty()) << plan.warnings.front();
+  for (const bool smoothing : {false, true}) {
+    parameters.smoothing = smoothing;
+    const GeneratedTrajectory trajectory =
+        TrajectoryGenerator(trajectoryOptionsOf(parameters, plan.offset_parts))
+            .generate(plan.waypoints, free_area);
+    EXPECT_TRUE(keepsClearance(trajectory.min_obstacle_clearance_m, 1.0))
+        << "smoothing " << smoothing << ": " << trajectory.min_obstacle_clearance_m;
   }
 }
 

@@ -7,11 +7,14 @@
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "test/support/test_shapes.h"
 
 namespace kinematic_coverage::core {
 namespace {
 
 constexpr double kWallDistance = 1.0;
+/// A gap clearance that lets transits through the straits of the maps below.
+constexpr double kAllowedGap = 0.5;
 /// The joiner finds a gap's clearance to about 3 % of the wall distance, from below.
 constexpr double kClearanceResolution = 0.04;
 
@@ -42,14 +45,17 @@ PolygonWithHoles twoSquaresJoinedByAHairline() {
           {}};
 }
 
-/// The hairline map (or a redrawing of it) joined from part 1: part 0 sealed, no gap, the
-/// route area part 1 alone.
+/// The hairline map (or a redrawing of it) joined from part 1: part 0 sealed with no
+/// passage (a pinch point), no gap, the route area part 1 alone.
 void expectTheHairlineSeals(const PolygonWithHoles& free_area) {
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
   ASSERT_EQ(parts.size(), 2u);
-  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 1);
+  const JoinedOffsetArea joined =
+      OffsetPartJoiner(free_area, kWallDistance, kAllowedGap).join(parts, 1);
   EXPECT_EQ(joined.joined_parts, std::vector<std::size_t>{1});
-  EXPECT_EQ(joined.sealed_parts, std::vector<std::size_t>{0});
+  ASSERT_EQ(joined.sealed_parts.size(), 1u);
+  EXPECT_EQ(joined.sealed_parts.front().part, 0u);
+  EXPECT_FALSE(joined.sealed_parts.front().widest_passage.has_value());
   EXPECT_TRUE(joined.gaps.empty());
   EXPECT_NEAR(area(joined.route_area), area(parts[1]), 1e-9);
 }
@@ -88,7 +94,8 @@ TEST(OffsetPartJoiner, JoinsThreeRoomsThroughTheirStraitsWithTheMostClearance) {
   const PolygonWithHoles free_area = threeRooms();
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
   ASSERT_EQ(parts.size(), 3u);
-  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 0);
+  const JoinedOffsetArea joined =
+      OffsetPartJoiner(free_area, kWallDistance, kAllowedGap).join(parts, 0);
   EXPECT_EQ(joined.joined_parts.size(), 3u);
   EXPECT_TRUE(joined.sealed_parts.empty());
   ASSERT_EQ(joined.gaps.size(), 2u);
@@ -127,7 +134,8 @@ TEST(OffsetPartJoiner, AnchorChoosesTheGroupButEveryReachablePartIsJoined) {
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
   ASSERT_EQ(parts.size(), 3u);
   for (std::size_t anchor = 0; anchor < parts.size(); ++anchor) {
-    const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, anchor);
+    const JoinedOffsetArea joined =
+        OffsetPartJoiner(free_area, kWallDistance, kAllowedGap).join(parts, anchor);
     EXPECT_EQ(joined.joined_parts.size(), 3u) << "anchor " << anchor;
     EXPECT_EQ(joined.gaps.size(), 2u) << "anchor " << anchor;
   }
@@ -142,7 +150,8 @@ TEST(OffsetPartJoiner, AStraitNoRobotPassesSealsThePartBeyondIt) {
 TEST(OffsetPartJoiner, OnePartIsItsOwnRouteArea) {
   const PolygonWithHoles free_area = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}};
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
-  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 0);
+  const JoinedOffsetArea joined =
+      OffsetPartJoiner(free_area, kWallDistance, kAllowedGap).join(parts, 0);
   EXPECT_EQ(joined.joined_parts, std::vector<std::size_t>{0});
   EXPECT_TRUE(joined.gaps.empty());
   EXPECT_NEAR(area(joined.route_area), 64.0, 1e-9);
@@ -156,12 +165,59 @@ TEST(OffsetPartJoiner, AnIslandCloseToTheShoreCutsOffAPocket) {
       {{{20, 8}, {20, 22}, {28.4, 22}, {28.4, 20}, {22, 20}, {22, 10}, {28.4, 10}, {28.4, 8}}}};
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
   ASSERT_EQ(parts.size(), 2u);
-  const JoinedOffsetArea joined = OffsetPartJoiner(free_area, kWallDistance).join(parts, 0);
+  const JoinedOffsetArea joined =
+      OffsetPartJoiner(free_area, kWallDistance, kAllowedGap).join(parts, 0);
   EXPECT_EQ(joined.joined_parts.size(), 2u);
   ASSERT_EQ(joined.gaps.size(), 1u);
   EXPECT_LE(joined.gaps.front().clearance_m, 0.8 + 1e-9);
   EXPECT_GE(joined.gaps.front().clearance_m, 0.8 - kClearanceResolution);
   expectPathInside(free_area, joined.gaps.front().path, joined.gaps.front().clearance_m);
+}
+
+/// By default (the gap clearance the wall distance) no strait of the three rooms is passed:
+/// each room beyond one is sealed, named with the bottleneck of its widest passage.
+TEST(OffsetPartJoiner, GapsNarrowerThanTheGapClearanceSealThePartsBeyond) {
+  const PolygonWithHoles free_area = threeRooms();
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
+  ASSERT_EQ(parts.size(), 3u);
+  // Parts largest first: the 20 m room, the 14 m room beyond the 1.5 m strait, the 10 m
+  // room beyond the 1.2 m strait.
+  const JoinedOffsetArea sealed =
+      OffsetPartJoiner(free_area, kWallDistance, kWallDistance).join(parts, 0);
+  EXPECT_EQ(sealed.joined_parts, std::vector<std::size_t>{0});
+  EXPECT_TRUE(sealed.gaps.empty());
+  EXPECT_NEAR(area(sealed.route_area), area(parts[0]), 1e-9);
+  ASSERT_EQ(sealed.sealed_parts.size(), 2u);
+  const double expected[] = {0.75, 0.6};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const SealedPart& part = sealed.sealed_parts[i];
+    EXPECT_EQ(part.part, i + 1);
+    ASSERT_TRUE(part.widest_passage.has_value());
+    EXPECT_LE(part.widest_passage->clearance_m, expected[i] + 1e-9);
+    EXPECT_GE(part.widest_passage->clearance_m, expected[i] - kClearanceResolution);
+    expectPathInside(free_area, part.widest_passage->path, part.widest_passage->clearance_m);
+  }
+  // A gap clearance between the straits' clearances passes the wider one only.
+  const JoinedOffsetArea between = OffsetPartJoiner(free_area, kWallDistance, 0.7).join(parts, 0);
+  EXPECT_EQ(between.joined_parts, (std::vector<std::size_t>{0, 1}));
+  ASSERT_EQ(between.gaps.size(), 1u);
+  EXPECT_GE(between.gaps.front().clearance_m, 0.7 - kClearanceTolerance);
+  ASSERT_EQ(between.sealed_parts.size(), 1u);
+  EXPECT_EQ(between.sealed_parts.front().part, 2u);
+}
+
+/// A strait exactly two wall distances wide splits the mitred offset into two parts, but a
+/// robot keeping the wall distance passes it along its middle: joined by default.
+TEST(OffsetPartJoiner, AStraitOfTwiceTheWallDistanceIsPassedByDefault) {
+  const PolygonWithHoles free_area = testing::twoRoomsJoinedByATwoMetreStrait();
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(free_area, kWallDistance).parts;
+  ASSERT_EQ(parts.size(), 2u);
+  const JoinedOffsetArea joined =
+      OffsetPartJoiner(free_area, kWallDistance, kWallDistance).join(parts, 0);
+  EXPECT_EQ(joined.joined_parts.size(), 2u);
+  EXPECT_TRUE(joined.sealed_parts.empty());
+  ASSERT_EQ(joined.gaps.size(), 1u);
+  EXPECT_TRUE(keepsClearance(joined.gaps.front().clearance_m, kWallDistance));
 }
 
 /// The three rooms drawn with 2 020 vertices: joined in windows around the two smaller
@@ -173,8 +229,10 @@ TEST(OffsetPartJoiner, AChartSizedAreaIsJoinedInWindowsAsOnTheWholeArea) {
   ASSERT_GT(fine.hull.size(), 2000u);
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(fine, kWallDistance).parts;
   ASSERT_EQ(parts.size(), 3u);
-  const JoinedOffsetArea windowed = OffsetPartJoiner(fine, kWallDistance).join(parts, 0);
-  const JoinedOffsetArea whole = OffsetPartJoiner(coarse, kWallDistance).join(parts, 0);
+  const JoinedOffsetArea windowed =
+      OffsetPartJoiner(fine, kWallDistance, kAllowedGap).join(parts, 0);
+  const JoinedOffsetArea whole =
+      OffsetPartJoiner(coarse, kWallDistance, kAllowedGap).join(parts, 0);
   EXPECT_EQ(windowed.joined_parts.size(), 3u);
   EXPECT_TRUE(windowed.sealed_parts.empty());
   ASSERT_EQ(windowed.gaps.size(), 2u);

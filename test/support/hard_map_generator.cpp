@@ -21,6 +21,9 @@ namespace {
 /// Grid (m) of the touching_holes family: its coordinates are multiples of a power of two
 /// over it, so that points on hull edges and shared hole edges are exact.
 constexpr double kGrid = 0.25;
+/// The rooms family's gap_clearance for a corridor narrower than 2 w, as a share of the
+/// corridor's half-width (its clearance): the transit through its middle passes.
+constexpr double kAllowedCorridorShare = 0.85;
 
 double uniform(std::mt19937& rng, double low, double high) {
   return std::uniform_real_distribution<double>(low, high)(rng);
@@ -199,7 +202,8 @@ void spiral(std::mt19937& rng, bool small, HardMap& map) {
 }
 
 /// Two rectangular rooms joined by a straight corridor 0.8 to 0.97 or 1.03 to 1.25 times
-/// 2 w wide; start in one room, goal in the other.
+/// 2 w wide; start in one room, goal in the other. A corridor narrower than 2 w is allowed
+/// (gap_clearance 0.85 times its half-width), as an operator must for the goal to be reached.
 void rooms(std::mt19937& rng, HardMap& map) {
   const double w = map.mission.parameters.wall_distance;
   const double W = map.footprint_width_m;
@@ -226,6 +230,7 @@ void rooms(std::mt19937& rng, HardMap& map) {
                               {x2, yc + h}, {a1, yc + h},  {a1, b1},           {0, b1}};
   map.mission.start = {uniform(rng, 0.05, 0.95) * a1, uniform(rng, 0.05, 0.95) * b1};
   map.mission.goal = {x2 + uniform(rng, 0.05, 0.95) * a2, yb + uniform(rng, 0.05, 0.95) * b2};
+  if (h < w) map.mission.parameters.gap_clearance = kAllowedCorridorShare * h;
   maybeRotate(rng, map.mission);
 }
 

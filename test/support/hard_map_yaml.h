@@ -34,6 +34,9 @@ inline std::string missionYaml(const Mission& m, const std::string& comment) {
   text += "\nstart: " + point(m.start) + "\ngoal: " + point(m.goal) + "\n";
   text += "decomposition_type: " + p.decomposition_type + "\n";
   text += "wall_distance: " + formatRoundTrip(p.wall_distance) + "\n";
+  if (p.gap_clearance != kClearanceOfWallDistance) {
+    text += "gap_clearance: " + formatRoundTrip(p.gap_clearance) + "\n";
+  }
   text += "sensor_distance: " + formatRoundTrip(p.sensor_distance) + "\n";
   text += "lateral_fov: " + formatRoundTrip(p.lateral_fov) + "\n";
   text += "onward_fov: " + formatRoundTrip(p.onward_fov) + "\n";

@@ -266,37 +266,83 @@ TEST(CoverageTool, KeepsTheWallDistanceOnTheLakeAndWarnsWhenAllowedLess) {
       << expected.str();
 }
 
-/// Two squares, 20 m and 14 m, joined by a strait 1.5 m wide: with a 1 m wall distance the
-/// offset free area falls into two parts.
-std::string writeStraitMission() {
-  const std::string path = scratchDir() + "/strait.yaml";
-  std::ofstream(path) << "polygon:\n  hull: [[0, 0], [20, 0], [20, 9.25], [22, 9.25], [22, 3], "
-                         "[36, 3], [36, 17], [22, 17], [22, 10.75], [20, 10.75], [20, 20], "
-                         "[0, 20]]\nstart: [2, 2]\ngoal: [18, 18]\nwall_distance: 1.0\n"
+/// Two squares, 20 m and 14 m, joined by a strait 1.2 m wide: with a 1 m wall distance the
+/// offset free area falls into two parts, and the strait's clearance is 0.6 m.
+std::string writeStraitMission(const std::string& goal = "[18, 18]") {
+  const std::string path = scratchDir() + "/strait_goal_" + goal.substr(1, 2) + ".yaml";
+  std::ofstream(path) << "polygon:\n  hull: [[0, 0], [20, 0], [20, 9.4], [22, 9.4], [22, 3], "
+                         "[36, 3], [36, 17], [22, 17], [22, 10.6], [20, 10.6], [20, 20], "
+                         "[0, 20]]\nstart: [2, 2]\ngoal: "
+                      << goal
+                      << "\nwall_distance: 1.0\n"
                          "sensor_distance: 1.0\nsmoothing: false\n";
   return path;
 }
 
-TEST(CoverageTool, PlansEveryPartOfASplitAreaAndNamesTheGap) {
+/// The number after `key` in `line`.
+double numberAfter(const std::string& line, const std::string& key) {
+  const std::size_t at = line.find(key);
+  return at == std::string::npos ? std::nan("") : std::stod(line.substr(at + key.size()));
+}
+
+TEST(CoverageTool, DoesNotEnterAPartBeyondAGapNarrowerThanTheGapClearance) {
   const std::string mission = writeStraitMission();
   const std::string out_dir = scratchDir() + "/strait_out";
   const ToolRun run = runTool("plan '" + mission + "' --out '" + out_dir + "'");
   ASSERT_EQ(run.exit_status, 0) << (run.err_lines.empty() ? "" : run.err_lines[0]);
   ASSERT_EQ(run.err_lines.size(), 1u);
-  EXPECT_NE(run.err_lines[0].find("warning: the wall offset splits the free area: transits to a "
-                                  "part of 144 m^2 near"),
+  const std::string& sealed = run.err_lines[0];
+  EXPECT_NE(sealed.find("warning: the wall offset splits the free area: a part of 144 m^2 near"),
             std::string::npos)
-      << run.err_lines[0];
-  // The strait's clearance is 0.75 m: the transit passes its middle, to 0.1 % of the wall
-  // distance.
-  const std::size_t with = run.err_lines[0].find(" with 0.7");
-  ASSERT_NE(with, std::string::npos) << run.err_lines[0];
-  EXPECT_NEAR(std::stod(run.err_lines[0].substr(with + 6)), 0.75, 0.001) << run.err_lines[0];
-  EXPECT_NE(run.err_lines[0].find("m clearance (wall_distance 1 m)"), std::string::npos)
-      << run.err_lines[0];
+      << sealed;
+  EXPECT_NE(sealed.find("is not entered (it counts as unreachable): the widest gap to it, at ("),
+            std::string::npos)
+      << sealed;
+  // The strait's clearance is 0.6 m, found to 0.1 % of the wall distance.
+  EXPECT_NEAR(numberAfter(sealed, "), has "), 0.6, 0.001) << sealed;
+  EXPECT_NE(sealed.find("m clearance, below gap_clearance 1 m"), std::string::npos) << sealed;
   const std::string json = readText(out_dir + "/metrics.json");
   EXPECT_GE(metric(json, "reachable_coverage_percent"), 99.9) << json;
-  EXPECT_LE(metric(json, "unseen_reachable_area_m2"), 0.5) << json;
+  const double unreachable = metric(json, "unreachable_area_m2");
+  EXPECT_GE(unreachable, 144.0) << json;
+  EXPECT_GE(metric(json, "min_obstacle_clearance_m"), 1.0 - 1e-3) << json;
+
+  // gap_clearance 0.5 m lets the transit through: the room is planned, and both the gap and
+  // the trajectory's closest approach are warned of.
+  const ToolRun allowed =
+      runTool("plan '" + mission + "' --out '" + out_dir + "' --set gap_clearance=0.5");
+  ASSERT_EQ(allowed.exit_status, 0) << (allowed.err_lines.empty() ? "" : allowed.err_lines[0]);
+  ASSERT_EQ(allowed.err_lines.size(), 2u);
+  EXPECT_NE(allowed.err_lines[0].find("warning: the wall offset splits the free area: transits to "
+                                      "a part of 144 m^2 near"),
+            std::string::npos)
+      << allowed.err_lines[0];
+  EXPECT_NEAR(numberAfter(allowed.err_lines[0], " with "), 0.6, 0.001) << allowed.err_lines[0];
+  EXPECT_NE(allowed.err_lines[0].find("m clearance, nearer than wall_distance 1 m (gap_clearance "
+                                      "0.5 m allows it)"),
+            std::string::npos)
+      << allowed.err_lines[0];
+  EXPECT_NE(allowed.err_lines[1].find("gap_clearance 0.5 m lets its transits through narrower "
+                                      "gaps"),
+            std::string::npos)
+      << allowed.err_lines[1];
+  const std::string entered = readText(out_dir + "/metrics.json");
+  EXPECT_GE(metric(entered, "reachable_coverage_percent"), 99.9) << entered;
+  EXPECT_LE(metric(entered, "unreachable_area_m2"), unreachable - 144.0) << entered;
+  // The transit runs in a corridor along the strait's middle (0.6 m), keeping the gap
+  // clearance.
+  EXPECT_GE(metric(entered, "min_obstacle_clearance_m"), 0.5 - 1e-3) << entered;
+  EXPECT_LT(metric(entered, "min_obstacle_clearance_m"), 0.6) << entered;
+
+  // A goal in the room beyond the strait cannot be reached keeping the gap clearance.
+  expectInvalid("plan '" + writeStraitMission("[29, 10]") + "' --out '" + out_dir + "'",
+                "goal (29, 10) lies in a part of 144 m^2 near");
+  // A gap clearance outside (0, wall_distance] is refused, named.
+  expectInvalid("plan '" + mission + "' --out '" + out_dir + "' --set gap_clearance=1.5",
+                "gap_clearance = 1.5 is out of range: it must be in (0, wall_distance = 1] (m), "
+                "or wall_distance");
+  expectInvalid("plan '" + mission + "' --out '" + out_dir + "' --set gap_clearance=0",
+                "gap_clearance = 0 is out of range");
 
   // Only the largest part: the other one is named, and its area shows as unseen, in the
   // figures, in a warning that names where it is, and outlined in the plot.
