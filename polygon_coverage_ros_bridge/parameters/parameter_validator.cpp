@@ -44,7 +44,6 @@ void requireOpenAngle(const char* name, double value) {
   }
 }
 
-/// The current's fluctuation, the navigation error and their seed.
 /// gap_clearance in (0, wall_distance], or the wall distance's stand-in; any value when the
 /// wall distance is 0 (no gaps then).
 void requireGapClearance(const PlannerParameters& p) {
@@ -57,6 +56,7 @@ void requireGapClearance(const PlannerParameters& p) {
   }
 }
 
+/// The current's fluctuation, the navigation error and their seed.
 void validateDisturbance(const PlannerParameters& p) {
   requireNonNegative("current_sigma", p.current_sigma, "m/s");
   requireNonNegative("navigation_sigma", p.navigation_sigma, "m");

@@ -247,19 +247,17 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
     throw InternalError("offset", "joining the parts of the offset free area gave no area");
   }
   for (const SealedPart& sealed : joined.sealed_parts) {
-    if (contains(parts[sealed.part], goal, tolerance)) {
-      throw UnreachableGoalError("goal " + formatPoint(goal) + " lies in " +
-                                 partName(parts[sealed.part]) +
+    const PolygonWithHoles& part = parts[sealed.part];
+    const std::string passage = passageText(sealed, gap_clearance);
+    if (contains(part, goal, tolerance)) {
+      throw UnreachableGoalError("goal " + formatPoint(goal) + " lies in " + partName(part) +
                                  " of the offset free area that the robot cannot reach from the "
                                  "start: " +
-                                 passageText(sealed, gap_clearance));
+                                 passage);
     }
-    unreachable->push_back({parts[sealed.part], passageText(sealed, gap_clearance)});
-    plan->warnings.push_back(
-        "the wall offset splits the free area: " + partName(parts[sealed.part]) +
-        " is not entered (it counts as "
-        "unreachable): " +
-        passageText(sealed, gap_clearance));
+    plan->warnings.push_back("the wall offset splits the free area: " + partName(part) +
+                             " is not entered (it counts as unreachable): " + passage);
+    unreachable->push_back({part, passage});
   }
   // Only the parts joined stay in the offset free area; the gaps name them by new index.
   std::vector<std::size_t> index_of(parts.size(), 0);
@@ -394,13 +392,13 @@ OffsetStage offsetStage(const PlanningRun& run) {
   } catch (const InvalidInputError& error) {
     // A goal in the wall band nearer a part the robot cannot reach than the planned ones:
     // say so.
+    if (unreachable.empty()) throw;
     const auto distance = [&](const PolygonWithHoles& part) {
       return distanceToBoundary(run.goal, part);
     };
     const auto nearer = [&](const UnreachablePart& a, const UnreachablePart& b) {
       return distance(a.part) < distance(b.part);
     };
-    if (unreachable.empty()) throw;
     const UnreachablePart& nearest =
         *std::min_element(unreachable.begin(), unreachable.end(), nearer);
     for (const PolygonWithHoles& part : offset.planned_parts) {

@@ -387,8 +387,8 @@ double vertexTolerance(const PolygonWithHoles& free_area) {
 /// kClearanceTolerance (a gap of exactly the wall distance gets a corridor about a
 /// millimetre wide), and at most kCorridorShare of the gap's clearance.
 double corridorHalfWidth(const OffsetGap& gap, double gap_clearance) {
-  const double room = std::max(gap.clearance_m - gap_clearance + kClearanceTolerance,
-                               0.5 * kClearanceTolerance);
+  const double room =
+      std::max(gap.clearance_m - gap_clearance + kClearanceTolerance, 0.5 * kClearanceTolerance);
   return std::min(kCorridorShare * gap.clearance_m, room / std::sqrt(2.0));
 }
 

@@ -144,12 +144,10 @@ void SmoothTrajectoryGeneratorNode::generate() {
     path_publisher_.publish(toPath(trajectory.poses, header));
     visualization_msgs::MarkerArray markers = trajectoryMarkers(trajectory.path, header);
     if (!core::keepsClearance(trajectory.min_obstacle_clearance_m, parameters.wall_distance)) {
-      for (const visualization_msgs::Marker& marker :
-           closestApproachMarkers(trajectory.closest_approach, trajectory.min_obstacle_clearance_m,
-                                  parameters.wall_distance, header)
-               .markers) {
-        markers.markers.push_back(marker);
-      }
+      const visualization_msgs::MarkerArray closest =
+          closestApproachMarkers(trajectory.closest_approach, trajectory.min_obstacle_clearance_m,
+                                 parameters.wall_distance, header);
+      markers.markers.insert(markers.markers.end(), closest.markers.begin(), closest.markers.end());
     }
     const std::vector<core::Pose2> poses = posesOf(trajectory.poses);
     marker_publisher_.publish(markers);

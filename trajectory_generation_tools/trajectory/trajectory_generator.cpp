@@ -77,8 +77,7 @@ std::vector<std::pair<Point2, Point2>> wallBandLegs(const std::vector<Pose2>& wa
   std::vector<std::pair<Point2, Point2>> legs;
   if (waypoints.size() < 2 || !(wall_distance > 0.0)) return legs;
   const auto in_band = [&](const Point2& p) {
-    const PathPrimitive here = PathPrimitive::rotation(p, 0.0, 0.0);
-    return !keepsClearance(primitivePathClearance({here}, free_area), wall_distance);
+    return !keepsClearance(distanceToBoundary(p, free_area), wall_distance);
   };
   const Point2 first = waypoints.front().position();
   const Point2 last = waypoints.back().position();
