@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -66,14 +67,121 @@ ClipperLib::Paths outlines(const ClipperLib::PolyTree& tree) {
   return result;
 }
 
-/// The mitred offset of one counter-clockwise ring by `delta` integer units: a negative one
-/// shrinks it (the hull), a positive one grows it (a hole).
-ClipperLib::Paths offsetRing(const ClipperLib::Path& ring, double delta) {
-  ClipperLib::ClipperOffset offset(kMiterLimit);
-  offset.AddPath(ring, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+/// The factor by which a chord of Clipper's round joins may sag more than its arc
+/// tolerance: a join's last step spans up to 1.5 steps, and the sag grows with its square.
+constexpr double kLastStepSag = 2.25;
+
+/// The offset of one counter-clockwise ring by `delta` integer units, its corners mitred or
+/// round (chords sagging at most `sag` units inside their arcs, vertices on them): a
+/// negative delta shrinks it (the hull), a positive one grows it (a hole).
+ClipperLib::Paths clipperOffset(const ClipperLib::Path& ring, double delta, bool round,
+                                double sag) {
+  ClipperLib::ClipperOffset offset(kMiterLimit, sag / kLastStepSag);
+  offset.AddPath(ring, round ? ClipperLib::jtRound : ClipperLib::jtMiter,
+                 ClipperLib::etClosedPolygon);
   ClipperLib::PolyTree tree;
   offset.Execute(tree, delta);
   return outlines(tree);
+}
+
+/// The share of the distance by which a tangent cap reaches past the mitred offset's edges.
+constexpr double kTangentCapMargin = 0.05;
+
+/// Where the offset by `delta` units (signed as in clipperOffset) needs a join at a corner
+/// of the counter-clockwise `ring` sharper than kTangentStep, the region between its mitre
+/// and the polygon of tangents to the arc of radius |delta| around the corner, kTangentStep
+/// or less apart: every point of it at least |delta| from the corner and its two edges.
+ClipperLib::Paths tangentCaps(const ClipperLib::Path& ring, double delta) {
+  using Vector = Point2;
+  const double side = delta < 0.0 ? -1.0 : 1.0;
+  const double distance = std::abs(delta);
+  const auto at = [&](std::size_t i) {
+    const ClipperLib::IntPoint& p = ring[i % ring.size()];
+    return Vector(static_cast<double>(p.X), static_cast<double>(p.Y));
+  };
+  const auto toIntPoint = [](const Vector& p) {
+    return ClipperLib::IntPoint(static_cast<ClipperLib::cInt>(std::llround(p.x())),
+                                static_cast<ClipperLib::cInt>(std::llround(p.y())));
+  };
+  ClipperLib::Paths caps;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vector vertex = at(i);
+    const Vector in = vertex - at(i + n - 1);
+    const Vector out = at(i + 1) - vertex;
+    if (in.norm() == 0.0 || out.norm() == 0.0) continue;
+    const double turn_cross = in.x() * out.y() - in.y() * out.x();
+    if (side * turn_cross <= 0.0) continue;  // the offset edges meet: no join
+    const double turn = std::atan2(std::abs(turn_cross), in.dot(out));
+    const int tangents = static_cast<int>(std::ceil(turn / kTangentStep - 1e-9));
+    if (tangents < 2) continue;
+    // Offset side normals of the two edges (outward of a counter-clockwise ring when growing).
+    const Vector first = side * Vector(in.y(), -in.x()).normalized();
+    const double start = std::atan2(first.y(), first.x());
+    const double rotation = (turn_cross > 0.0 ? 1.0 : -1.0) * turn;
+    const double half_step = 0.5 * turn / tangents;
+    const double radius = distance / std::cos(half_step);
+    std::vector<Vector> corners;  // between successive tangents, from the first edge's line
+    for (int k = 0; k < tangents; ++k) {
+      const double angle = start + rotation * (k + 0.5) / tangents;
+      corners.push_back(vertex + radius * Vector(std::cos(angle), std::sin(angle)));
+    }
+    // Out to the mitre along lines a margin beyond the edges' offset lines (at most
+    // kMiterLimit distances out): the cap reaches past the mitred offset's edges instead of
+    // sharing them, which Clipper's operations resolve less reliably.
+    const double margin = kTangentCapMargin * distance;
+    const Vector second = side * Vector(out.y(), -out.x()).normalized();
+    const double mitre_reach =
+        std::min((distance + margin) * std::tan(0.5 * turn) - distance * std::tan(half_step),
+                 kMiterLimit * distance);
+    const Vector first_out = corners.front() + margin * first;
+    const Vector last_out = corners.back() + margin * second;
+    ClipperLib::Path cap = {toIntPoint(corners.front()), toIntPoint(first_out),
+                            toIntPoint(first_out + mitre_reach * in.normalized()),
+                            toIntPoint(last_out - mitre_reach * out.normalized()),
+                            toIntPoint(last_out)};
+    for (auto it = corners.rbegin(); it != corners.rend() - 1; ++it) {
+      cap.push_back(toIntPoint(*it));
+    }
+    if (!ClipperLib::Orientation(cap)) ClipperLib::ReversePath(cap);
+    caps.push_back(std::move(cap));
+  }
+  return caps;
+}
+
+/// One Boolean operation of Clipper on two sets of rings, the outlines of its result.
+ClipperLib::Paths combine(const ClipperLib::Paths& subject, const ClipperLib::Paths& clip,
+                          ClipperLib::ClipType operation) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(subject, ClipperLib::ptSubject, true);
+  clipper.AddPaths(clip, ClipperLib::ptClip, true);
+  ClipperLib::PolyTree tree;
+  clipper.Execute(operation, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return outlines(tree);
+}
+
+/// The offset of one counter-clockwise ring by `delta` integer units with `corners`
+/// (`unit` integer units to the metre): the region kept (a shrunk hull, delta < 0) or
+/// taken away (a grown hole, delta > 0).
+ClipperLib::Paths offsetRing(const ClipperLib::Path& ring, double delta, OffsetCorners corners,
+                             double unit) {
+  const double tolerance = kClearanceTolerance * unit;
+  if (corners == OffsetCorners::kRound) {
+    return clipperOffset(ring, delta, true, kExactOffsetArcTolerance * unit);
+  }
+  const ClipperLib::Paths mitred = clipperOffset(ring, delta, false, tolerance);
+  if (corners == OffsetCorners::kMitred || std::abs(delta) <= tolerance) return mitred;
+  const ClipperLib::Paths caps = tangentCaps(ring, delta);
+  if (caps.empty()) return mitred;
+  // The caps are clear of their corner and its edges, not always of the ring's other edges:
+  // a round offset half a tolerance short of the distance (its chords sagging at most the
+  // other half) takes back what the caps would give that lies nearer the ring than that.
+  const double short_delta = delta < 0.0 ? delta + 0.5 * tolerance : delta - 0.5 * tolerance;
+  const ClipperLib::Paths round = clipperOffset(ring, short_delta, true, 0.5 * tolerance);
+  if (delta < 0.0) {
+    return combine(mitred, combine(caps, round, ClipperLib::ctIntersection), ClipperLib::ctUnion);
+  }
+  return combine(combine(mitred, caps, ClipperLib::ctDifference), round, ClipperLib::ctUnion);
 }
 
 /// The parts of the offset free area in `tree`, largest first; throws when it is empty.
@@ -121,7 +229,7 @@ WallOffset::WallOffset(const PolygonWithHoles& free_area)
 
 WallOffset::~WallOffset() = default;
 
-OffsetFreeArea WallOffset::at(double distance) const {
+OffsetFreeArea WallOffset::at(double distance, OffsetCorners corners) const {
   if (!(distance >= 0.0 && std::isfinite(distance))) {
     throw InternalError("offset", "a negative or non-finite offset distance was asked for");
   }
@@ -129,13 +237,15 @@ OffsetFreeArea WallOffset::at(double distance) const {
   // Beyond the hull's extent nothing is left (and the integer coordinates keep their range).
   if (distance <= rings_->frame.extent()) {
     const double delta = rings_->frame.toInteger(distance);
+    const double unit = rings_->frame.toInteger(1.0);
     try {
       ClipperLib::Clipper clipper;
       clipper.StrictlySimple(true);
       if (distance > 0.0) {
-        clipper.AddPaths(offsetRing(rings_->hull, -delta), ClipperLib::ptSubject, true);
+        clipper.AddPaths(offsetRing(rings_->hull, -delta, corners, unit), ClipperLib::ptSubject,
+                         true);
         for (const ClipperLib::Path& hole : rings_->holes) {
-          clipper.AddPaths(offsetRing(hole, delta), ClipperLib::ptClip, true);
+          clipper.AddPaths(offsetRing(hole, delta, corners, unit), ClipperLib::ptClip, true);
         }
       } else {
         clipper.AddPath(rings_->hull, ClipperLib::ptSubject, true);
@@ -152,6 +262,39 @@ OffsetFreeArea WallOffset::at(double distance) const {
 
 OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance) {
   return WallOffset(free_area).at(wall_distance);
+}
+
+std::vector<PolygonWithHoles> exactOffsetParts(const PolygonWithHoles& free_area,
+                                               double wall_distance,
+                                               const std::vector<PolygonWithHoles>& offset_parts) {
+  if (wall_distance == 0.0 || offset_parts.empty()) return offset_parts;
+  std::vector<PolygonWithHoles> round =
+      WallOffset(free_area).at(wall_distance, OffsetCorners::kRound).parts;
+  // A mitred part's vertices lie inside or on its round part; a vertex where two round parts
+  // touch lies on both, so each mitred part goes to the round part holding most of them.
+  std::vector<bool> holds(round.size(), false);
+  std::vector<PolygonWithHoles> exact;
+  for (const PolygonWithHoles& part : offset_parts) {
+    std::size_t best = round.size();
+    std::size_t best_count = 0;
+    for (std::size_t k = 0; k < round.size(); ++k) {
+      std::size_t count = 0;
+      for (const Point2& p : part.hull) count += contains(round[k], p, kClearanceTolerance) ? 1 : 0;
+      if (count > best_count) {
+        best_count = count;
+        best = k;
+      }
+    }
+    if (best < round.size()) {
+      holds[best] = true;
+    } else {
+      exact.push_back(part);  // a sliver that rounding left out of every round part
+    }
+  }
+  for (std::size_t k = 0; k < round.size(); ++k) {
+    if (holds[k]) exact.push_back(std::move(round[k]));
+  }
+  return exact;
 }
 
 }  // namespace kinematic_coverage::core

@@ -19,6 +19,31 @@ struct OffsetFreeArea {
 /// needle cannot throw an offset corner across the map.
 constexpr double kMiterLimit = 1000.0;
 
+/// How the offset edges meet around a wall's corner that bulges into the free area.
+enum class OffsetCorners {
+  /// Edges extended to a point (the straight-skeleton offset of the thesis's planner): inside
+  /// the exact offset, short of it by the corner's mitre (a fifth of a square wall distance
+  /// at a right angle, more at sharper corners).
+  kMitred,
+  /// Tangents to the arc around a corner sharper than kTangentStep, at most kTangentStep
+  /// apart: inside the exact offset, close to it (a 50th of a square wall distance at a
+  /// right angle) for a few vertices per sharp corner. Not yet the planner's: a
+  /// trapezoidal decomposition makes cells of those vertices, and a shoreline's lanes
+  /// grow longer.
+  kTangent,
+  /// Arcs of the wall distance around the corner, flattened to chords sagging at most
+  /// kExactOffsetArcTolerance inside them: the exact offset, against which coverage is
+  /// measured.
+  kRound,
+};
+
+/// The largest angle (radians) between successive tangents of kTangent corners: 30 degrees.
+constexpr double kTangentStep = 0.5235987755982988;
+
+/// Metres that a chord of a kRound corner may lie inside its arc (nearer the wall than the
+/// wall distance): half of kClearanceTolerance.
+constexpr double kExactOffsetArcTolerance = 0.5e-3;
+
 /// Computes the points of a cleaned free area at least `wall_distance` from the hull and
 /// from every hole, with mitred offsets (the straight-skeleton offsets of the reference
 /// planner: every offset edge parallel to its wall, corners extended to a point): the hull
@@ -40,13 +65,24 @@ class WallOffset {
   WallOffset(const WallOffset&) = delete;
   WallOffset& operator=(const WallOffset&) = delete;
 
-  /// computeOffsetFreeArea(free_area, distance); throws InternalError for a distance that
-  /// is negative or not finite.
-  OffsetFreeArea at(double distance) const;
+  /// computeOffsetFreeArea(free_area, distance), or with other `corners`; throws
+  /// InternalError for a distance that is negative or not finite.
+  OffsetFreeArea at(double distance, OffsetCorners corners = OffsetCorners::kMitred) const;
 
  private:
   struct Rings;
   std::unique_ptr<Rings> rings_;
 };
+
+/// The exact offset free area (docs/REFERENCE.md, Reachable area) around `offset_parts`
+/// (mitred parts of the offset of `free_area` by `wall_distance`): the parts of the round
+/// offset that hold one of them, so that coverage is measured against every point at least
+/// the wall distance from the walls that the robot can reach, not only against the mitred
+/// approximation the planner sweeps. Each mitred part lies inside one round part; a round
+/// part holding none (beyond a gap the planner does not pass) stays out. With
+/// `wall_distance` 0 the parts themselves. Throws InvalidInputError as computeOffsetFreeArea.
+std::vector<PolygonWithHoles> exactOffsetParts(const PolygonWithHoles& free_area,
+                                               double wall_distance,
+                                               const std::vector<PolygonWithHoles>& offset_parts);
 
 }  // namespace kinematic_coverage::core
