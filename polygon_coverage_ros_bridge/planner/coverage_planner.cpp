@@ -19,6 +19,7 @@
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/planner/reachable_offset_parts.h"
 #include "polygon_coverage_ros_bridge/repair/unseen_area_repair.h"
 #include "polygon_coverage_ros_bridge/route/jog_removal.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
@@ -170,20 +171,6 @@ Point2 entryPoint(const PolygonWithHoles& free_area, const PolygonWithHoles& rou
                           " is outside the offset free area and no straight leg inside the "
                           "free area joins it to the offset free area (its nearest point " +
                           formatPoint(nearest) + " lies across the hull)");
-}
-
-/// The part nearest to p (0 when p lies in it): the one a robot starting at p enters.
-std::size_t nearestPart(const std::vector<PolygonWithHoles>& parts, const Point2& p) {
-  std::size_t best = 0;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    const double d = contains(parts[k], p) ? 0.0 : distanceToBoundary(p, parts[k]);
-    if (d < best_distance) {
-      best_distance = d;
-      best = k;
-    }
-  }
-  return best;
 }
 
 std::string partName(const PolygonWithHoles& part) {

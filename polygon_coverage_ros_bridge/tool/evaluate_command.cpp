@@ -11,6 +11,7 @@
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/planner/reachable_offset_parts.h"
 #include "polygon_coverage_ros_bridge/tool/command_line.h"
 #include "polygon_coverage_ros_bridge/tool/coverage_metrics.h"
 #include "polygon_coverage_ros_bridge/tool/json_object.h"
@@ -71,8 +72,11 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
       << " cleaning steps (" << formatSeconds(built.clean_s) << ")" << std::endl;
 
   stage_start = std::chrono::steady_clock::now();
-  const OffsetFreeArea offset =
-      computeOffsetFreeArea(cleaned.free_area, mission.parameters.wall_distance);
+  // The parts that a robot starting where the trajectory starts reaches, as `plan` counts
+  // them: a part beyond a gap narrower than gap_clearance counts as unreachable.
+  const OffsetFreeArea offset = {
+      reachableOffsetParts(cleaned.free_area, mission.parameters,
+                           poses.empty() ? mission.start : Point2(poses.front().position()))};
   out << "offset: offset free area " << area(offset.parts) << " m^2 in " << offset.parts.size()
       << (offset.parts.size() == 1 ? " part (" : " parts (")
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;

@@ -14,6 +14,7 @@
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/planner/reachable_offset_parts.h"
 #include "polygon_coverage_ros_bridge/tool/command_line.h"
 #include "polygon_coverage_ros_bridge/tool/coverage_metrics.h"
 #include "polygon_coverage_ros_bridge/tool/json_object.h"
@@ -237,8 +238,9 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   stage_start = std::chrono::steady_clock::now();
   const CleanedPolygon cleaned =
       FreeAreaBuilder(boundarySimplificationOf(mission.parameters)).build(mission.polygon).cleaned;
-  const OffsetFreeArea offset =
-      computeOffsetFreeArea(cleaned.free_area, mission.parameters.wall_distance);
+  const OffsetFreeArea offset = {
+      reachableOffsetParts(cleaned.free_area, mission.parameters,
+                           desired.empty() ? mission.start : Point2(desired.front().position()))};
   out << "area: free area " << area(cleaned.free_area) << " m^2, offset free area "
       << area(offset.parts) << " m^2 (" << formatSeconds(secondsSince(stage_start)) << ")"
       << std::endl;

@@ -306,6 +306,17 @@ TEST(CoverageTool, DoesNotEnterAPartBeyondAGapNarrowerThanTheGapClearance) {
   const double unreachable = metric(json, "unreachable_area_m2");
   EXPECT_GE(unreachable, 144.0) << json;
   EXPECT_GE(metric(json, "min_obstacle_clearance_m"), 1.0 - 1e-3) << json;
+  // `evaluate` counts the room beyond the strait as unreachable too, as `plan` does.
+  const std::string evaluated_dir = scratchDir() + "/strait_evaluated";
+  const ToolRun evaluated = runTool("evaluate '" + mission + "' --trajectory '" + out_dir +
+                                    "/trajectory.csv' --out '" + evaluated_dir + "'");
+  ASSERT_EQ(evaluated.exit_status, 0)
+      << (evaluated.err_lines.empty() ? "" : evaluated.err_lines[0]);
+  const std::string evaluated_json = readText(evaluated_dir + "/metrics.json");
+  EXPECT_NEAR(metric(evaluated_json, "unreachable_area_m2"), unreachable, 0.01) << evaluated_json;
+  EXPECT_NEAR(metric(evaluated_json, "reachable_coverage_percent"),
+              metric(json, "reachable_coverage_percent"), 0.01)
+      << evaluated_json;
 
   // gap_clearance 0.5 m lets the transit through: the room is planned, and both the gap and
   // the trajectory's closest approach are warned of.

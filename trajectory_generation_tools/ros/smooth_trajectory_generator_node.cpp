@@ -13,10 +13,10 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/mission/wall_clearance_warning.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/planner/reachable_offset_parts.h"
 #include "polygon_coverage_ros_bridge/ros/heatmap_grid.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"
 #include "polygon_coverage_ros_bridge/ros/ros_parameter_reader.h"
@@ -162,11 +162,10 @@ void SmoothTrajectoryGeneratorNode::generate() {
             << trajectory.traversal_time_s << " s";
     // What the trajectory leaves unseen of the area it could search, measured as
     // `coverage_tool plan` measures it, and said as loudly.
-    const core::OffsetFreeArea offset =
-        core::computeOffsetFreeArea(*free_area_, parameters.wall_distance);
-    const core::TrajectoryCoverage coverage =
-        core::measureTrajectoryCoverage(*free_area_, offset.parts, parameters, poses,
-                                        unsmoothedPoses(parameters, waypoints, *free_area_));
+    const core::TrajectoryCoverage coverage = core::measureTrajectoryCoverage(
+        *free_area_,
+        core::reachableOffsetParts(*free_area_, parameters, waypoints.front().position()),
+        parameters, poses, unsmoothedPoses(parameters, waypoints, *free_area_));
     summary << "; " << core::coverageSummary(coverage);
     for (const std::optional<std::string>& warning :
          {core::reachableCoverageWarning(coverage), core::smoothingLossWarning(coverage),

@@ -1,0 +1,39 @@
+#include "polygon_coverage_ros_bridge/planner/reachable_offset_parts.h"
+
+#include <limits>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
+
+namespace kinematic_coverage::core {
+
+std::size_t nearestPart(const std::vector<PolygonWithHoles>& parts, const Point2& p) {
+  std::size_t best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const double d = contains(parts[k], p) ? 0.0 : distanceToBoundary(p, parts[k]);
+    if (d < best_distance) {
+      best_distance = d;
+      best = k;
+    }
+  }
+  return best;
+}
+
+std::vector<PolygonWithHoles> reachableOffsetParts(const PolygonWithHoles& free_area,
+                                                   const PlannerParameters& parameters,
+                                                   const Point2& start) {
+  std::vector<PolygonWithHoles> parts =
+      computeOffsetFreeArea(free_area, parameters.wall_distance).parts;
+  if (parts.size() == 1 || offsetPartsOf(parameters) == OffsetParts::kLargest) return parts;
+  const JoinedOffsetArea joined =
+      OffsetPartJoiner(free_area, parameters.wall_distance, gapClearanceOf(parameters))
+          .join(parts, nearestPart(parts, start));
+  std::vector<PolygonWithHoles> reachable;
+  for (std::size_t k : joined.joined_parts) reachable.push_back(parts[k]);
+  return reachable;
+}
+
+}  // namespace kinematic_coverage::core

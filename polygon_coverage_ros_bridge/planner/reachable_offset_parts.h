@@ -1,0 +1,25 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
+
+namespace kinematic_coverage::core {
+
+/// The part of `parts` nearest to p (0 when p lies in it): the one a robot starting at p
+/// enters.
+std::size_t nearestPart(const std::vector<PolygonWithHoles>& parts, const Point2& p);
+
+/// The parts of the offset free area of a cleaned `free_area` that count as reachable for a
+/// robot starting at `start`, as the planner's plan.offset_parts holds them (docs/REFERENCE.md,
+/// Parts): with `offset_parts: all` those joined to the start's part through gaps with at
+/// least gap_clearance, with `largest` every part; so that `evaluate`, `simulate` and the
+/// trajectory node measure the reachable area as `plan` does. Throws InvalidInputError as
+/// computeOffsetFreeArea.
+std::vector<PolygonWithHoles> reachableOffsetParts(const PolygonWithHoles& free_area,
+                                                   const PlannerParameters& parameters,
+                                                   const Point2& start);
+
+}  // namespace kinematic_coverage::core
