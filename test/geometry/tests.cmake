@@ -3,4 +3,5 @@ kc_add_gtest(test_geometry
   test/geometry/planar_geometry_test.cpp
   test/geometry/wall_offset_test.cpp
   test/geometry/edge_grid_test.cpp
-  LIBRARIES kc_geometry)
+  test/support/hard_map_generator.cpp
+  LIBRARIES kc_geometry kc_validation)

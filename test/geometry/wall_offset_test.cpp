@@ -11,6 +11,8 @@
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "test/support/hard_map_generator.h"
 #include "test/support/random_polygons.h"
 
 namespace kinematic_coverage::core {
@@ -292,6 +294,40 @@ TEST(WallOffset, TangentCornersLieBetweenTheMitredAndTheExactOffset) {
     }
   }
   EXPECT_GT(points_checked, 25000u);
+}
+
+/// The same on ten maps of each hard family at their own wall distance, cleaned as the
+/// planner cleans them: shorelines' sharp bays left rings that crossed themselves where the
+/// caps shared the mitred offset's edges.
+TEST(WallOffset, TangentCornersOnTheHardFamiliesKeepTheWallDistance) {
+  for (const testing::MapFamily family :
+       {testing::MapFamily::kComb, testing::MapFamily::kSpiral, testing::MapFamily::kRooms,
+        testing::MapFamily::kShoreline, testing::MapFamily::kTouchingHoles,
+        testing::MapFamily::kStar}) {
+    const testing::HardMapGenerator generator(family);
+    for (std::uint64_t seed = 0; seed < 10; ++seed) {
+      const testing::HardMap map = generator.generate(seed);
+      SCOPED_TRACE(testing::HardMapGenerator::name(family) + " seed " + std::to_string(seed));
+      const PolygonWithHoles free_area = PolygonCleaner().clean(map.mission.polygon).free_area;
+      const double distance = map.mission.parameters.wall_distance;
+      const WallOffset offset(free_area);
+      const OffsetFreeArea tangent = offset.at(distance, OffsetCorners::kTangent);
+      EXPECT_GE(area(tangent.parts), area(offset.at(distance).parts) - 1e-9);
+      EXPECT_LE(area(tangent.parts), area(offset.at(distance, OffsetCorners::kRound).parts) + 1e-9);
+      for (const PolygonWithHoles& part : tangent.parts) {
+        std::vector<const Ring*> rings = {&part.hull};
+        for (const Ring& hole : part.holes) rings.push_back(&hole);
+        for (const Ring* ring : rings) {
+          ASSERT_FALSE(crossesItself(*ring));
+          for (std::size_t i = 0, n = ring->size(); i < n; ++i) {
+            const Point2 middle = 0.5 * ((*ring)[i] + (*ring)[(i + 1) % n]);
+            ASSERT_GE(wallDistance(free_area, (*ring)[i]), distance - kClearanceTolerance);
+            ASSERT_GE(wallDistance(free_area, middle), distance - kClearanceTolerance);
+          }
+        }
+      }
+    }
+  }
 }
 
 /// Coverage is measured against the round parts that hold the planned ones: of two rooms
