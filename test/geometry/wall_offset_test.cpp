@@ -14,6 +14,7 @@
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/random_polygons.h"
+#include "test/support/test_shapes.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -60,6 +61,13 @@ TEST(WallOffset, ReflexCornersAreMitred) {
   ASSERT_EQ(offset.parts.size(), 1u);
   EXPECT_NEAR(area(offset.parts.front()), 8.0 * 3.0 + 3.0 * 5.0, 1e-9);
   EXPECT_EQ(offset.parts.front().hull.size(), 6u);
+}
+
+/// The hull and the holes of `part`.
+std::vector<const Ring*> ringsOf(const PolygonWithHoles& part) {
+  std::vector<const Ring*> rings = {&part.hull};
+  for (const Ring& hole : part.holes) rings.push_back(&hole);
+  return rings;
 }
 
 /// The wall band: the distance from a point to the hull and the holes.
@@ -110,9 +118,7 @@ TEST(WallOffset, OffsetsKeepTheWallDistanceAndRunParallelToTheWalls) {
       EXPECT_LT(offset_area, previous_area);
       previous_area = offset_area;
       for (const PolygonWithHoles& part : result.parts) {
-        std::vector<const Ring*> rings = {&part.hull};
-        for (const Ring& hole : part.holes) rings.push_back(&hole);
-        for (const Ring* ring : rings) {
+        for (const Ring* ring : ringsOf(part)) {
           for (std::size_t i = 0, n = ring->size(); i < n; ++i) {
             const Point2& a = (*ring)[i];
             const Point2& b = (*ring)[(i + 1) % n];
@@ -274,9 +280,7 @@ TEST(WallOffset, TangentCornersLieBetweenTheMitredAndTheExactOffset) {
       EXPECT_GE(area(tangent.parts), mitred_area - 1e-9);
       EXPECT_LE(area(tangent.parts), round_area + 1e-9);
       for (const PolygonWithHoles& part : tangent.parts) {
-        std::vector<const Ring*> rings = {&part.hull};
-        for (const Ring& hole : part.holes) rings.push_back(&hole);
-        for (const Ring* ring : rings) {
+        for (const Ring* ring : ringsOf(part)) {
           ASSERT_FALSE(crossesItself(*ring));
           for (std::size_t i = 0, n = ring->size(); i < n; ++i) {
             const Point2& a = (*ring)[i];
@@ -315,9 +319,7 @@ TEST(WallOffset, TangentCornersOnTheHardFamiliesKeepTheWallDistance) {
       EXPECT_GE(area(tangent.parts), area(offset.at(distance).parts) - 1e-9);
       EXPECT_LE(area(tangent.parts), area(offset.at(distance, OffsetCorners::kRound).parts) + 1e-9);
       for (const PolygonWithHoles& part : tangent.parts) {
-        std::vector<const Ring*> rings = {&part.hull};
-        for (const Ring& hole : part.holes) rings.push_back(&hole);
-        for (const Ring* ring : rings) {
+        for (const Ring* ring : ringsOf(part)) {
           ASSERT_FALSE(crossesItself(*ring));
           for (std::size_t i = 0, n = ring->size(); i < n; ++i) {
             const Point2 middle = 0.5 * ((*ring)[i] + (*ring)[(i + 1) % n]);
@@ -334,19 +336,7 @@ TEST(WallOffset, TangentCornersOnTheHardFamiliesKeepTheWallDistance) {
 /// that a 2 m strait splits at 1.5 m, one planned room gives its own room, rounded; both
 /// give both; wall distance 0 gives the parts themselves.
 TEST(WallOffset, ExactOffsetPartsAreTheRoundPartsHoldingThePlannedOnes) {
-  const PolygonWithHoles rooms = {{{0, 0},
-                                   {10, 0},
-                                   {10, 4},
-                                   {12, 4},
-                                   {12, 0},
-                                   {22, 0},
-                                   {22, 10},
-                                   {12, 10},
-                                   {12, 6},
-                                   {10, 6},
-                                   {10, 10},
-                                   {0, 10}},
-                                  {}};
+  const PolygonWithHoles rooms = testing::twoRoomsJoinedByATwoMetreStrait();
   const std::vector<PolygonWithHoles> mitred = computeOffsetFreeArea(rooms, 1.5).parts;
   ASSERT_EQ(mitred.size(), 2u);
   const std::vector<PolygonWithHoles> round =
