@@ -371,6 +371,7 @@ OffsetStage offsetStage(const PlanningRun& run) {
   std::vector<UnreachablePart> unreachable;
   offset.planned_parts = partsToPlan(run.free_area, run.parameters, run.start, run.goal,
                                      run.tolerance, &plan, &unreachable);
+  for (const UnreachablePart& sealed : unreachable) plan.unreachable_parts.push_back(sealed.part);
   offset.start_inside = entryPoint(run.free_area, plan.route_area, offset.planned_parts, run.start,
                                    "start", run.tolerance);
   try {

@@ -38,6 +38,9 @@ struct CoveragePlan {
   /// reachable from the start through gaps with at least gap_clearance. The reachable area
   /// is grown from them.
   std::vector<PolygonWithHoles> offset_parts;
+  /// The parts of the offset free area that are not entered: beyond gaps narrower than
+  /// gap_clearance from the start (offset_parts `all`). They count as unreachable.
+  std::vector<PolygonWithHoles> unreachable_parts;
   /// Where transitions run: the planned parts joined by corridors through the gaps between
   /// them. Every leg from first_inside to last_inside lies in it.
   PolygonWithHoles route_area;

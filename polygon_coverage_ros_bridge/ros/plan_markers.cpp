@@ -80,6 +80,32 @@ visualization_msgs::Marker deleteAllMarker(const std_msgs::Header& header) {
   return marker;
 }
 
+namespace {
+
+/// A marker colour.
+struct MarkerColour {
+  float red = 0.0f;
+  float green = 0.0f;
+  float blue = 0.0f;
+};
+
+/// The hulls and holes of `parts` as line strips of namespace `ns`, numbered from 0.
+void appendParts(const std::vector<core::PolygonWithHoles>& parts, const std::string& ns,
+                 const std_msgs::Header& header, const MarkerColour& colour, double width,
+                 visualization_msgs::MarkerArray* markers) {
+  int id = 0;
+  for (const core::PolygonWithHoles& part : parts) {
+    markers->markers.push_back(
+        ringMarker(part.hull, ns, id++, header, colour.red, colour.green, colour.blue, width));
+    for (const core::Ring& hole : part.holes) {
+      markers->markers.push_back(
+          ringMarker(hole, ns, id++, header, colour.red, colour.green, colour.blue, width));
+    }
+  }
+}
+
+}  // namespace
+
 visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_area,
                                             const core::CoveragePlan& plan,
                                             const core::Point2& start, const core::Point2& goal,
@@ -87,16 +113,10 @@ visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_a
   visualization_msgs::MarkerArray markers;
   markers.markers.push_back(deleteAllMarker(header));
   appendPolygon(free_area, header, &markers);
+  appendParts(plan.offset_parts, "offset_free_area", header, {0.6f, 0.6f, 0.6f}, 0.04, &markers);
+  appendParts(plan.unreachable_parts, "unreachable_parts", header, {0.8f, 0.0f, 0.45f}, 0.06,
+              &markers);
   int id = 0;
-  for (const core::PolygonWithHoles& part : plan.offset_parts) {
-    markers.markers.push_back(
-        ringMarker(part.hull, "offset_free_area", id++, header, 0.6f, 0.6f, 0.6f, 0.04));
-    for (const core::Ring& hole : part.holes) {
-      markers.markers.push_back(
-          ringMarker(hole, "offset_free_area", id++, header, 0.6f, 0.6f, 0.6f, 0.04));
-    }
-  }
-  id = 0;
   for (const core::OffsetGap& gap : plan.gaps) {
     visualization_msgs::Marker line = baseMarker(
         "gaps", id++, visualization_msgs::Marker::LINE_STRIP, header, 1.0f, 0.2f, 0.6f, 0.1);

@@ -11,9 +11,9 @@
 namespace kinematic_coverage::nodes {
 
 /// What coverage_planner computed, for rviz (`~markers`): the free area's hull and holes,
-/// the offset free area, the cells, the waypoint path with its waypoints, and start and
-/// goal. Each group is its own namespace so that rviz can toggle it; every marker of an
-/// earlier plan is deleted first, so a new plan replaces the old picture.
+/// the offset free area and the parts of it not entered, the cells, the waypoint path with its
+/// waypoints, and start and goal. Each group is its own namespace so that rviz can toggle it; every
+/// marker of an earlier plan is deleted first, so a new plan replaces the old picture.
 visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_area,
                                             const core::CoveragePlan& plan,
                                             const core::Point2& start, const core::Point2& goal,

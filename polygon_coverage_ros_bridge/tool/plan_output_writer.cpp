@@ -183,6 +183,7 @@ CoveragePlotData planPlot(const PlanOutputRequest& request, const std::vector<Po
   CoveragePlotData plot;
   plot.free_area = *request.free_area;
   plot.offset_parts = request.plan->offset_parts;
+  plot.unreachable_parts = request.plan->unreachable_parts;
   plot.heatmap = combined ? combined->heatmap : coverage.heatmap;
   plot.waypoints = request.plan->waypoints;
   plot.trajectory = poses;

@@ -93,6 +93,11 @@ TEST(CoveragePlanner, ByDefaultPartsBeyondStraitsNarrowerThanTwoWallDistancesAre
   ASSERT_EQ(plan.offset_parts.size(), 1u);
   EXPECT_TRUE(plan.gaps.empty());
   for (const Pose2& waypoint : plan.waypoints) EXPECT_GE(waypoint.x, 38.0);
+  // The two rooms not entered, for plot.png and rviz: left of the start's room.
+  ASSERT_EQ(plan.unreachable_parts.size(), 2u);
+  for (const PolygonWithHoles& part : plan.unreachable_parts) {
+    for (const Point2& p : part.hull) EXPECT_LT(p.x(), 38.0);
+  }
   ASSERT_EQ(plan.warnings.size(), 2u);
   for (const std::string& warning : plan.warnings) {
     EXPECT_NE(warning.find("is not entered (it counts as unreachable): the widest gap to it"),

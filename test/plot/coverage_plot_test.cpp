@@ -199,6 +199,34 @@ TEST(CoveragePlotTest, TheClosestApproachIsCircledWithACross) {
   EXPECT_THROW(plot.writePng(data, tempPng("bad_approach")), InvalidInputError);
 }
 
+TEST(CoveragePlotTest, PartsNotEnteredAreOutlinedDashed) {
+  // A part of the offset free area that is not entered: its outline in the unseen region's
+  // colour (dashed: some of the points along an edge), none there when unset.
+  const CoveragePlot plot(CoveragePlotOptions{800, 600});
+  CoveragePlotData data = scene();
+  const PolygonWithHoles part = {{{20, 3}, {28, 3}, {28, 9}, {20, 9}}, {}};
+  const CoveragePlotLayout layout = plot.layout(data);
+  const auto magentaAlongTheBottomEdge = [&](const std::string& path) {
+    const PngImage image(path);
+    int count = 0;
+    for (int k = 0; k <= 40; ++k) {
+      const PlotColour colour = image.colourAt(layout.toPixel(Point2(20.0 + 0.2 * k, 3.0)));
+      if (colour.red > 150 && colour.green < 60 && colour.blue > 60) ++count;
+    }
+    return count;
+  };
+  const std::string without = tempPng("no_unreachable");
+  plot.writePng(data, without);
+  EXPECT_EQ(magentaAlongTheBottomEdge(without), 0);
+  data.unreachable_parts = {part};
+  const std::string path = tempPng("unreachable");
+  plot.writePng(data, path);
+  ASSERT_TRUE(PngImage(path).valid());
+  EXPECT_GE(magentaAlongTheBottomEdge(path), 10);
+  data.unreachable_parts = {{{{20, 3}, {28, std::nan("")}, {28, 9}}, {}}};
+  EXPECT_THROW(plot.writePng(data, tempPng("bad_unreachable")), InvalidInputError);
+}
+
 TEST(CoveragePlotTest, FreeAreaWithoutHeatmapHasItsFill) {
   const CoveragePlot plot(CoveragePlotOptions{800, 600});
   CoveragePlotData data = scene();

@@ -117,6 +117,7 @@ void checkData(const CoveragePlotData& data) {
     throw InvalidInputError("coverage plot: free area hull has no extent in x or y");
   }
   for (const PolygonWithHoles& part : data.offset_parts) checkArea(part, "offset free area");
+  for (const PolygonWithHoles& part : data.unreachable_parts) checkArea(part, "unreachable part");
   if (data.heatmap) checkHeatmap(*data.heatmap);
   checkPoses(data.waypoints, "waypoint path");
   checkPoses(data.trajectory, "trajectory");
@@ -340,6 +341,14 @@ void drawAreas(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlot
     setColour(cr, kOffsetAreaColour);
     cairo_set_line_width(cr, 1.1 * scale.factor);
     setDash(cr, 7.0 * scale.factor, 4.0 * scale.factor);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+  }
+  if (!data.unreachable_parts.empty()) {
+    for (const PolygonWithHoles& part : data.unreachable_parts) areaPath(cr, layout, part);
+    setColour(cr, kUnseenRegionColour);
+    cairo_set_line_width(cr, 1.8 * scale.factor);
+    setDash(cr, 4.0 * scale.factor, 3.0 * scale.factor);
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0.0);
   }
@@ -726,6 +735,16 @@ void drawLineKeys(LegendColumn& column, const CoveragePlotData& data) {
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0.0);
     column.label("offset free area");
+  }
+  if (!data.unreachable_parts.empty()) {
+    setColour(cr, kUnseenRegionColour);
+    cairo_move_to(cr, x, column.y);
+    cairo_line_to(cr, x + sample_width, column.y);
+    cairo_set_line_width(cr, 1.8 * f);
+    setDash(cr, 4.0 * f, 3.0 * f);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+    column.label("beyond narrow gap");
   }
 }
 

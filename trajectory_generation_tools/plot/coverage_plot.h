@@ -19,6 +19,10 @@ struct CoveragePlotData {
   /// The parts of the offset free area (free area shrunk by wall_distance), outlined
   /// dashed; none drawn when empty.
   std::vector<PolygonWithHoles> offset_parts;
+  /// Parts of the offset free area that are not entered (beyond a gap narrower than
+  /// gap_clearance: they count as unreachable), outlined dashed in the unseen region's
+  /// colour; none drawn when empty.
+  std::vector<PolygonWithHoles> unreachable_parts;
   /// Visit counts (the heatmap), drawn over the free area only.
   std::optional<Heatmap> heatmap;
   /// The planner's waypoint path, a thin dashed polyline with a dot at each waypoint.
