@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <tuple>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "trajectory_generation_tools/plot/plot_canvas.h"
@@ -258,6 +259,27 @@ void setDash(cairo_t* cr, double on, double off) {
   cairo_set_dash(cr, dashes.data(), 2, 0.0);
 }
 
+/// A dashed outline: its colour, width and dash lengths (pixels at the base image size).
+struct DashedLine {
+  PlotColour colour;
+  double width = 1.0;
+  double on = 1.0;
+  double off = 1.0;
+};
+
+/// The offset free area's outline, and that of the parts not entered.
+constexpr DashedLine kOffsetAreaLine{kOffsetAreaColour, 1.1, 7.0, 4.0};
+constexpr DashedLine kUnreachablePartLine{kUnseenRegionColour, 1.8, 4.0, 3.0};
+
+/// Strokes the current path as `line`, its sizes scaled by `factor`.
+void strokeDashed(cairo_t* cr, const DashedLine& line, double factor) {
+  setColour(cr, line.colour);
+  cairo_set_line_width(cr, line.width * factor);
+  setDash(cr, line.on * factor, line.off * factor);
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0.0);
+}
+
 std::uint32_t packedColour(const PlotColour& colour) {
   return 0xff000000u | (std::uint32_t{colour.red} << 16) | (std::uint32_t{colour.green} << 8) |
          std::uint32_t{colour.blue};
@@ -338,19 +360,11 @@ void drawAreas(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlot
 
   if (!data.offset_parts.empty()) {
     for (const PolygonWithHoles& part : data.offset_parts) areaPath(cr, layout, part);
-    setColour(cr, kOffsetAreaColour);
-    cairo_set_line_width(cr, 1.1 * scale.factor);
-    setDash(cr, 7.0 * scale.factor, 4.0 * scale.factor);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
+    strokeDashed(cr, kOffsetAreaLine, scale.factor);
   }
   if (!data.unreachable_parts.empty()) {
     for (const PolygonWithHoles& part : data.unreachable_parts) areaPath(cr, layout, part);
-    setColour(cr, kUnseenRegionColour);
-    cairo_set_line_width(cr, 1.8 * scale.factor);
-    setDash(cr, 4.0 * scale.factor, 3.0 * scale.factor);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
+    strokeDashed(cr, kUnreachablePartLine, scale.factor);
   }
 }
 
@@ -726,25 +740,14 @@ void drawLineKeys(LegendColumn& column, const CoveragePlotData& data) {
     cairo_fill(cr);
     column.label("waypoint path");
   }
-  if (!data.offset_parts.empty()) {
-    setColour(cr, kOffsetAreaColour);
+  for (const auto& [shown, line, label] :
+       {std::tuple{!data.offset_parts.empty(), kOffsetAreaLine, "offset free area"},
+        std::tuple{!data.unreachable_parts.empty(), kUnreachablePartLine, "beyond narrow gap"}}) {
+    if (!shown) continue;
     cairo_move_to(cr, x, column.y);
     cairo_line_to(cr, x + sample_width, column.y);
-    cairo_set_line_width(cr, 1.1 * f);
-    setDash(cr, 7.0 * f, 4.0 * f);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
-    column.label("offset free area");
-  }
-  if (!data.unreachable_parts.empty()) {
-    setColour(cr, kUnseenRegionColour);
-    cairo_move_to(cr, x, column.y);
-    cairo_line_to(cr, x + sample_width, column.y);
-    cairo_set_line_width(cr, 1.8 * f);
-    setDash(cr, 4.0 * f, 3.0 * f);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
-    column.label("beyond narrow gap");
+    strokeDashed(cr, line, f);
+    column.label(label);
   }
 }
 
