@@ -92,23 +92,22 @@ constexpr double kTangentCapMargin = 0.05;
 /// and the polygon of tangents to the arc of radius |delta| around the corner, kTangentStep
 /// or less apart: every point of it at least |delta| from the corner and its two edges.
 ClipperLib::Paths tangentCaps(const ClipperLib::Path& ring, double delta) {
-  using Vector = Point2;
   const double side = delta < 0.0 ? -1.0 : 1.0;
   const double distance = std::abs(delta);
   const auto at = [&](std::size_t i) {
     const ClipperLib::IntPoint& p = ring[i % ring.size()];
-    return Vector(static_cast<double>(p.X), static_cast<double>(p.Y));
+    return Point2(static_cast<double>(p.X), static_cast<double>(p.Y));
   };
-  const auto toIntPoint = [](const Vector& p) {
+  const auto toIntPoint = [](const Point2& p) {
     return ClipperLib::IntPoint(static_cast<ClipperLib::cInt>(std::llround(p.x())),
                                 static_cast<ClipperLib::cInt>(std::llround(p.y())));
   };
   ClipperLib::Paths caps;
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vector vertex = at(i);
-    const Vector in = vertex - at(i + n - 1);
-    const Vector out = at(i + 1) - vertex;
+    const Point2 vertex = at(i);
+    const Point2 in = vertex - at(i + n - 1);
+    const Point2 out = at(i + 1) - vertex;
     if (in.norm() == 0.0 || out.norm() == 0.0) continue;
     const double turn_cross = in.x() * out.y() - in.y() * out.x();
     if (side * turn_cross <= 0.0) continue;  // the offset edges meet: no join
@@ -116,26 +115,26 @@ ClipperLib::Paths tangentCaps(const ClipperLib::Path& ring, double delta) {
     const int tangents = static_cast<int>(std::ceil(turn / kTangentStep - 1e-9));
     if (tangents < 2) continue;
     // Offset side normals of the two edges (outward of a counter-clockwise ring when growing).
-    const Vector first = side * Vector(in.y(), -in.x()).normalized();
+    const Point2 first = side * Point2(in.y(), -in.x()).normalized();
     const double start = std::atan2(first.y(), first.x());
     const double rotation = (turn_cross > 0.0 ? 1.0 : -1.0) * turn;
     const double half_step = 0.5 * turn / tangents;
     const double radius = distance / std::cos(half_step);
-    std::vector<Vector> corners;  // between successive tangents, from the first edge's line
+    std::vector<Point2> corners;  // between successive tangents, from the first edge's line
     for (int k = 0; k < tangents; ++k) {
       const double angle = start + rotation * (k + 0.5) / tangents;
-      corners.push_back(vertex + radius * Vector(std::cos(angle), std::sin(angle)));
+      corners.push_back(vertex + radius * Point2(std::cos(angle), std::sin(angle)));
     }
     // Out to the mitre along lines a margin beyond the edges' offset lines (at most
     // kMiterLimit distances out): the cap reaches past the mitred offset's edges instead of
     // sharing them, which Clipper's operations resolve less reliably.
     const double margin = kTangentCapMargin * distance;
-    const Vector second = side * Vector(out.y(), -out.x()).normalized();
+    const Point2 second = side * Point2(out.y(), -out.x()).normalized();
     const double mitre_reach =
         std::min((distance + margin) * std::tan(0.5 * turn) - distance * std::tan(half_step),
                  kMiterLimit * distance);
-    const Vector first_out = corners.front() + margin * first;
-    const Vector last_out = corners.back() + margin * second;
+    const Point2 first_out = corners.front() + margin * first;
+    const Point2 last_out = corners.back() + margin * second;
     ClipperLib::Path cap = {toIntPoint(corners.front()), toIntPoint(first_out),
                             toIntPoint(first_out + mitre_reach * in.normalized()),
                             toIntPoint(last_out - mitre_reach * out.normalized()),

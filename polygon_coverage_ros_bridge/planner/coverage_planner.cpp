@@ -193,20 +193,15 @@ std::string passageText(const SealedPart& sealed, double gap_clearance) {
   return text.str();
 }
 
-/// A part of the offset free area that the robot cannot reach, and why.
-struct UnreachablePart {
-  PolygonWithHoles part;
-  std::string passage;  ///< passageText
-};
-
 /// The parts to plan and the area their transitions run in, by `offset_parts`, with a
 /// warning per gap passed narrower than the wall distance and per part left out. With
-/// `all`, the parts beyond gaps narrower than gap_clearance leave plan->offset_parts (they
-/// count as unreachable, and are added to `unreachable`); a goal inside one is refused.
+/// `all`, the parts beyond gaps narrower than gap_clearance move from plan->offset_parts to
+/// plan->unreachable_parts, each with its passageText in `passages`; a goal inside one is
+/// refused.
 std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
                                           const PlannerParameters& parameters, const Point2& start,
                                           const Point2& goal, double tolerance, CoveragePlan* plan,
-                                          std::vector<UnreachablePart>* unreachable) {
+                                          std::vector<std::string>* passages) {
   const std::vector<PolygonWithHoles> parts = plan->offset_parts;
   if (parts.size() == 1) {
     plan->route_area = parts.front();
@@ -221,18 +216,7 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
     return {parts.front()};
   }
   const double gap_clearance = gapClearanceOf(parameters);
-  JoinedOffsetArea joined;
-  try {
-    joined = OffsetPartJoiner(free_area, parameters.wall_distance, gap_clearance)
-                 .join(parts, nearestPart(parts, start));
-  } catch (const SizeLimitError&) {
-    throw;
-  } catch (const InvalidInputError& error) {
-    throw InternalError("offset", std::string("joining the parts: ") + error.what());
-  }
-  if (joined.route_area.hull.empty()) {
-    throw InternalError("offset", "joining the parts of the offset free area gave no area");
-  }
+  JoinedOffsetArea joined = joinOffsetParts(free_area, parameters, parts, start);
   for (const SealedPart& sealed : joined.sealed_parts) {
     const PolygonWithHoles& part = parts[sealed.part];
     const std::string passage = passageText(sealed, gap_clearance);
@@ -244,7 +228,8 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
     }
     plan->warnings.push_back("the wall offset splits the free area: " + partName(part) +
                              " is not entered (it counts as unreachable): " + passage);
-    unreachable->push_back({part, passage});
+    plan->unreachable_parts.push_back(part);
+    passages->push_back(passage);
   }
   // Only the parts joined stay in the offset free area; the gaps name them by new index.
   std::vector<std::size_t> index_of(parts.size(), 0);
@@ -368,10 +353,9 @@ OffsetStage offsetStage(const PlanningRun& run) {
   plan.offset_parts = computeOffsetFreeArea(run.free_area, run.parameters.wall_distance).parts;
   const std::size_t part_count = plan.offset_parts.size();
   OffsetStage offset;
-  std::vector<UnreachablePart> unreachable;
+  std::vector<std::string> passages;  // one per plan.unreachable_parts
   offset.planned_parts = partsToPlan(run.free_area, run.parameters, run.start, run.goal,
-                                     run.tolerance, &plan, &unreachable);
-  for (const UnreachablePart& sealed : unreachable) plan.unreachable_parts.push_back(sealed.part);
+                                     run.tolerance, &plan, &passages);
   offset.start_inside = entryPoint(run.free_area, plan.route_area, offset.planned_parts, run.start,
                                    "start", run.tolerance);
   try {
@@ -380,21 +364,23 @@ OffsetStage offsetStage(const PlanningRun& run) {
   } catch (const InvalidInputError& error) {
     // A goal in the wall band nearer a part the robot cannot reach than the planned ones:
     // say so.
+    const std::vector<PolygonWithHoles>& unreachable = plan.unreachable_parts;
     if (unreachable.empty()) throw;
     const auto distance = [&](const PolygonWithHoles& part) {
       return distanceToBoundary(run.goal, part);
     };
-    const auto nearer = [&](const UnreachablePart& a, const UnreachablePart& b) {
-      return distance(a.part) < distance(b.part);
+    const auto nearer = [&](const PolygonWithHoles& a, const PolygonWithHoles& b) {
+      return distance(a) < distance(b);
     };
-    const UnreachablePart& nearest =
-        *std::min_element(unreachable.begin(), unreachable.end(), nearer);
+    const std::size_t nearest = static_cast<std::size_t>(
+        std::min_element(unreachable.begin(), unreachable.end(), nearer) - unreachable.begin());
     for (const PolygonWithHoles& part : offset.planned_parts) {
-      if (distance(part) <= distance(nearest.part)) throw;
+      if (distance(part) <= distance(unreachable[nearest])) throw;
     }
-    throw UnreachableGoalError(
-        std::string(error.what()) + "; the part of the offset free area nearest it, " +
-        partName(nearest.part) + ", cannot be reached from the start: " + nearest.passage);
+    throw UnreachableGoalError(std::string(error.what()) +
+                               "; the part of the offset free area nearest it, " +
+                               partName(unreachable[nearest]) +
+                               ", cannot be reached from the start: " + passages[nearest]);
   }
   std::size_t holes = 0;
   for (const PolygonWithHoles& part : plan.offset_parts) holes += part.holes.size();

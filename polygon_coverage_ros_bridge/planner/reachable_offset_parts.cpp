@@ -1,11 +1,13 @@
 #include "polygon_coverage_ros_bridge/planner/reachable_offset_parts.h"
 
 #include <limits>
+#include <string>
 
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
-#include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 
 namespace kinematic_coverage::core {
 
@@ -22,15 +24,31 @@ std::size_t nearestPart(const std::vector<PolygonWithHoles>& parts, const Point2
   return best;
 }
 
+JoinedOffsetArea joinOffsetParts(const PolygonWithHoles& free_area,
+                                 const PlannerParameters& parameters,
+                                 const std::vector<PolygonWithHoles>& parts, const Point2& start) {
+  JoinedOffsetArea joined;
+  try {
+    joined = OffsetPartJoiner(free_area, parameters.wall_distance, gapClearanceOf(parameters))
+                 .join(parts, nearestPart(parts, start));
+  } catch (const SizeLimitError&) {
+    throw;
+  } catch (const InvalidInputError& error) {
+    throw InternalError("offset", std::string("joining the parts: ") + error.what());
+  }
+  if (joined.route_area.hull.empty()) {
+    throw InternalError("offset", "joining the parts of the offset free area gave no area");
+  }
+  return joined;
+}
+
 std::vector<PolygonWithHoles> reachableOffsetParts(const PolygonWithHoles& free_area,
                                                    const PlannerParameters& parameters,
                                                    const Point2& start) {
   std::vector<PolygonWithHoles> parts =
       computeOffsetFreeArea(free_area, parameters.wall_distance).parts;
   if (parts.size() == 1 || offsetPartsOf(parameters) == OffsetParts::kLargest) return parts;
-  const JoinedOffsetArea joined =
-      OffsetPartJoiner(free_area, parameters.wall_distance, gapClearanceOf(parameters))
-          .join(parts, nearestPart(parts, start));
+  const JoinedOffsetArea joined = joinOffsetParts(free_area, parameters, parts, start);
   std::vector<PolygonWithHoles> reachable;
   for (std::size_t k : joined.joined_parts) reachable.push_back(parts[k]);
   return reachable;

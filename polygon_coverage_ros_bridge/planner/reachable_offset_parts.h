@@ -5,12 +5,22 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 
 namespace kinematic_coverage::core {
 
 /// The part of `parts` nearest to p (0 when p lies in it): the one a robot starting at p
 /// enters.
 std::size_t nearestPart(const std::vector<PolygonWithHoles>& parts, const Point2& p);
+
+/// The offset free area's `parts` (several, of a cleaned `free_area`) joined for a robot
+/// starting at `start`: OffsetPartJoiner with the parameters' wall distance and gap
+/// clearance, anchored at the part nearest the start. The planner and
+/// reachableOffsetParts join alike. Throws SizeLimitError over the joiner's limits, and
+/// InternalError when joining valid parts fails (not the user's error).
+JoinedOffsetArea joinOffsetParts(const PolygonWithHoles& free_area,
+                                 const PlannerParameters& parameters,
+                                 const std::vector<PolygonWithHoles>& parts, const Point2& start);
 
 /// The parts of the offset free area of a cleaned `free_area` that count as reachable for a
 /// robot starting at `start`, as the planner's plan.offset_parts holds them (docs/REFERENCE.md,

@@ -46,9 +46,9 @@ struct JoinedOffsetArea {
 };
 
 /// Joins the parts of a split offset free area (docs/REFERENCE.md, Geometry and input
-/// rules, Parts) by transits that keep the largest clearance each gap allows, through gaps
-/// with at least the gap clearance (`gap_clearance`) only: a part beyond narrower gaps is
-/// sealed, named with its widest passage.
+/// rules, Parts) by transits along each gap's widest path, through gaps with at least the
+/// gap clearance (`gap_clearance`) only, in corridors that keep it: a part beyond narrower
+/// gaps is sealed, named with its widest passage.
 ///
 /// The free area is offset at decreasing distances below the wall distance; where two
 /// groups of parts first fall into one offset component, the gap between them has about
