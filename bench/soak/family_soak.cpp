@@ -46,6 +46,7 @@
 #include <iostream>
 #include <limits>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -126,6 +127,21 @@ std::size_t vertexCount(const PolygonWithHoles& polygon) {
   return count;
 }
 
+/// What the check of one trajectory measured.
+struct TrajectoryFigures {
+  double clearance_m = 0.0;
+  double traversal_time_s = 0.0;
+  int turns_smoothed = 0;
+  int turns_total = 0;
+};
+
+/// The default trajectory's figures beside what they are compared with.
+struct DefaultTrajectory {
+  TrajectoryFigures figures;
+  double wall_distance = 0.0;
+  double unsmoothed_time_s = 0.0;
+};
+
 /// What one map showed.
 struct MapResult {
   bool failed = false;
@@ -140,22 +156,8 @@ struct MapResult {
   double coverage_difference_percent = 0.0;
   double unseen_difference_percent = 0.0;
   double planning_time_s = 0.0;
-  /// The default trajectory's: least clearance / wall_distance, turns, and traversal time
-  /// against the unsmoothed trajectory's (for maps planned and checked).
-  bool measured = false;
-  double clearance_share = 0.0;
-  bool nearer = false;  ///< nearer than wall_distance beyond kClearanceTolerance
-  int turns_smoothed = 0;
-  int turns_total = 0;
-  double time_ratio = 0.0;
-};
-
-/// What the check of one trajectory measured.
-struct TrajectoryFigures {
-  double clearance_m = 0.0;
-  double traversal_time_s = 0.0;
-  int turns_smoothed = 0;
-  int turns_total = 0;
+  /// For maps planned and checked with a wall distance.
+  std::optional<DefaultTrajectory> default_trajectory;
 };
 
 /// The failures of one trajectory, one line each (none when it passes). A trajectory
@@ -290,12 +292,8 @@ MapResult runMap(const testing::HardMap& map, const Options& options) {
       if (!smoothing) {
         unsmoothed = figures;
       } else if (parameters.wall_distance > 0.0 && unsmoothed.traversal_time_s > 0.0) {
-        result.measured = true;
-        result.clearance_share = figures.clearance_m / parameters.wall_distance;
-        result.nearer = !keepsClearance(figures.clearance_m, parameters.wall_distance);
-        result.turns_smoothed = figures.turns_smoothed;
-        result.turns_total = figures.turns_total;
-        result.time_ratio = figures.traversal_time_s / unsmoothed.traversal_time_s;
+        result.default_trajectory =
+            DefaultTrajectory{figures, parameters.wall_distance, unsmoothed.traversal_time_s};
       }
     }
   } catch (const UnreachableGoalError& error) {
@@ -345,12 +343,14 @@ struct BatchTally {
     unseen_difference = std::max(unseen_difference, result.unseen_difference_percent);
     max_vertices = std::max(max_vertices, vertices);
     if (!result.refused) times.push_back(result.planning_time_s);
-    if (result.measured) {
-      least_clearance_share = std::min(least_clearance_share, result.clearance_share);
-      nearer += result.nearer ? 1 : 0;
-      turns_smoothed += result.turns_smoothed;
-      turns_total += result.turns_total;
-      time_ratios.push_back(result.time_ratio);
+    if (const std::optional<DefaultTrajectory>& trajectory = result.default_trajectory) {
+      const TrajectoryFigures& figures = trajectory->figures;
+      least_clearance_share =
+          std::min(least_clearance_share, figures.clearance_m / trajectory->wall_distance);
+      nearer += keepsClearance(figures.clearance_m, trajectory->wall_distance) ? 0 : 1;
+      turns_smoothed += figures.turns_smoothed;
+      turns_total += figures.turns_total;
+      time_ratios.push_back(figures.traversal_time_s / trajectory->unsmoothed_time_s);
     }
   }
 };

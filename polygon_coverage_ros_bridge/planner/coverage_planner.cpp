@@ -366,16 +366,10 @@ OffsetStage offsetStage(const PlanningRun& run) {
     // say so.
     const std::vector<PolygonWithHoles>& unreachable = plan.unreachable_parts;
     if (unreachable.empty()) throw;
-    const auto distance = [&](const PolygonWithHoles& part) {
-      return distanceToBoundary(run.goal, part);
-    };
-    const auto nearer = [&](const PolygonWithHoles& a, const PolygonWithHoles& b) {
-      return distance(a) < distance(b);
-    };
-    const std::size_t nearest = static_cast<std::size_t>(
-        std::min_element(unreachable.begin(), unreachable.end(), nearer) - unreachable.begin());
+    const std::size_t nearest = nearestPart(unreachable, run.goal);
+    const double nearest_distance = distanceToBoundary(run.goal, unreachable[nearest]);
     for (const PolygonWithHoles& part : offset.planned_parts) {
-      if (distance(part) <= distance(unreachable[nearest])) throw;
+      if (distanceToBoundary(run.goal, part) <= nearest_distance) throw;
     }
     throw UnreachableGoalError(std::string(error.what()) +
                                "; the part of the offset free area nearest it, " +
