@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
@@ -46,6 +47,8 @@ void benchmark(const char* name, const kinematic_coverage::core::Mission& missio
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
   const FrustumSensor sensor = sensorOf(mission.parameters);
+  const std::vector<PolygonWithHoles> reachable = exactOffsetParts(
+      planned.free_area, mission.parameters.wall_distance, planned.plan.offset_parts);
 
   std::vector<double> raster_ms, seen_ms, report_ms, total_ms;
   CoverageReport report;
@@ -53,8 +56,8 @@ void benchmark(const char* name, const kinematic_coverage::core::Mission& missio
   std::size_t cells = 0;
   for (int run = 0; run < runs; ++run) {
     const Clock::time_point start = Clock::now();
-    const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts, sensor,
-                                      reportingResolution(), kReportingGridAngle);
+    const CoverageEvaluator evaluator(planned.free_area, reachable, sensor, reportingResolution(),
+                                      kReportingGridAngle);
     const Clock::time_point rasterized = Clock::now();
     const SeenArea seen = evaluator.seeTrajectory(poses);
     const Clock::time_point seen_done = Clock::now();

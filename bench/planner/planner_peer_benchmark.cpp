@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
@@ -99,7 +100,9 @@ int main(int argc, char** argv) {
       std::sort(times.begin(), times.end());
       const double median_time = times[times.size() / 2];
       const double seen = kinematic_coverage::core::waypointPathReachableCoveragePercent(
-          planned.free_area, plan.offset_parts,
+          planned.free_area,
+          kinematic_coverage::core::exactOffsetParts(
+              planned.free_area, mission.parameters.wall_distance, plan.offset_parts),
           kinematic_coverage::core::sensorOf(mission.parameters), plan.waypoints);
       const auto it = peer.find(name);
       if (it == peer.end()) {

@@ -20,6 +20,7 @@
 #include "bench/support/median.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/hard_map_generator.h"
@@ -30,6 +31,7 @@ namespace {
 using kinematic_coverage::bench::median;
 
 using kinematic_coverage::core::CoverageEvaluator;
+using kinematic_coverage::core::exactOffsetParts;
 using kinematic_coverage::core::FrustumSensor;
 using kinematic_coverage::core::Mission;
 using kinematic_coverage::core::PlannedMission;
@@ -76,10 +78,12 @@ Options parseOptions(int argc, char** argv) {
 
 /// Reachable coverage (percent) of a plan's waypoint path, as metrics.json measures it.
 double reachablePercent(const PlannedMission& planned, const Mission& mission) {
-  const CoverageEvaluator evaluator(planned.free_area, planned.plan.offset_parts,
-                                    sensorOf(mission.parameters),
-                                    kinematic_coverage::core::reportingResolution(),
-                                    kinematic_coverage::core::kReportingGridAngle);
+  const CoverageEvaluator evaluator(
+      planned.free_area,
+      exactOffsetParts(planned.free_area, mission.parameters.wall_distance,
+                       planned.plan.offset_parts),
+      sensorOf(mission.parameters), kinematic_coverage::core::reportingResolution(),
+      kinematic_coverage::core::kReportingGridAngle);
   return evaluator.report(evaluator.seeWaypointPath(planned.plan.waypoints))
       .reachable_coverage_percent;
 }

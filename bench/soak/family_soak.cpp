@@ -6,7 +6,9 @@
 // an internal one; an UnreachableGoalError, a goal that a robot keeping gap_clearance
 // cannot reach, is counted apart as refused), and for both trajectories:
 //  - every leg from first_inside to last_inside lies in the route area (the offset free
-//    area's parts joined through their gaps), the legs to the start and goal in the free area;
+//    area's parts joined through their gaps) or keeps the wall distance (the repair's
+//    excursions toward the exact offset's boundary), the legs to the start and goal in the
+//    free area;
 //  - every pose lies in the free area and the trajectory keeps a clearance above 0; the
 //    default one keeps the wall distance (within kClearanceTolerance) or comes no nearer
 //    than the unsmoothed one (which passes gaps narrower than two wall distances);
@@ -54,11 +56,13 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/coverage/exact_coverage_oracle.h"
 #include "test/support/hard_map_generator.h"
+#include "trajectory_generation_tools/smoothing/boundary_edge_index.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {
@@ -210,13 +214,13 @@ std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
   if (!failures.empty() || !with_oracle) return failures;
   const TrajectoryCoverage reported =
       measureTrajectoryCoverage(free_area, plan.offset_parts, parameters, poses);
-  // The oracle grows the planner's offset parts, not its own erosion: the planner's mitred
-  // offset lacks w^2 (tan(a/2) - a/2) at every reflex corner (a: its turn) of the exact
-  // one, a gap of the offset's definition, not of the coverage measurement checked here.
+  // The oracle measures the reachable area that the report does: the exact offset around
+  // the planner's mitred parts.
   testing::ExactCoverage exact;
   try {
-    const testing::ExactCoverageOracle oracle(free_area, plan.offset_parts,
-                                              testing::oracleFootprint(parameters));
+    const testing::ExactCoverageOracle oracle(
+        free_area, exactOffsetParts(free_area, parameters.wall_distance, plan.offset_parts),
+        testing::oracleFootprint(parameters));
     exact = oracle.measure(poses);
   } catch (const std::bad_alloc&) {
     // The oracle's limit, not the package's: the map is not counted checked.
@@ -258,12 +262,19 @@ MapResult runMap(const testing::HardMap& map, const Options& options) {
     double scale = 1.0;
     for (const Point2& p : planned.free_area.hull) scale = std::max(scale, p.cwiseAbs().maxCoeff());
     const double tolerance = kRelativeTolerance * scale;
+    const BoundaryEdgeIndex walls(planned.free_area, map.mission.parameters.wall_distance);
     for (std::size_t i = 0; i + 1 < plan.waypoints.size(); ++i) {
       const Point2 a = plan.waypoints[i].position();
       const Point2 b = plan.waypoints[i + 1].position();
       const bool inside = i >= plan.first_inside && i + 1 <= plan.last_inside;
-      if (!segmentInside(inside ? plan.route_area : planned.free_area, a, b, 1e3 * tolerance)) {
-        fail("leg " + std::to_string(i) + " leaves the " + (inside ? "route area" : "free area"));
+      // A leg out of the route area is a repair's excursion toward the exact offset's
+      // boundary: it must keep the wall distance.
+      const bool excursion = inside && segmentInside(planned.free_area, a, b, 1e3 * tolerance) &&
+                             walls.segmentClear(a, b);
+      if (!segmentInside(inside ? plan.route_area : planned.free_area, a, b, 1e3 * tolerance) &&
+          !excursion) {
+        fail("leg " + std::to_string(i) + " leaves the " +
+             (inside ? "route area and comes nearer than the wall distance" : "free area"));
         return result;
       }
     }

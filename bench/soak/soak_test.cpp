@@ -28,6 +28,7 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
@@ -145,8 +146,10 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
                   std::to_string(trajectory.min_obstacle_clearance_m) + ", less than " +
                   std::to_string(least));
     }
+    const std::vector<PolygonWithHoles> reachable =
+        exactOffsetParts(mission.polygon, mission.parameters.wall_distance, plan.offset_parts);
     const double covered = waypointPathReachableCoveragePercent(
-        mission.polygon, plan.offset_parts, sensorOf(mission.parameters), plan.waypoints,
+        mission.polygon, reachable, sensorOf(mission.parameters), plan.waypoints,
         RasterResolution{0.0, 1e-3, 1'000'000});
     if (!(covered >= kMinCoveragePercent)) {
       return fail("reachable coverage " + std::to_string(covered) + " %");
@@ -155,8 +158,7 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
       std::vector<Pose2> poses;
       poses.reserve(trajectory.poses.size());
       for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
-      const CoverageEvaluator evaluator(mission.polygon, plan.offset_parts,
-                                        sensorOf(mission.parameters),
+      const CoverageEvaluator evaluator(mission.polygon, reachable, sensorOf(mission.parameters),
                                         RasterResolution{0.0, 1e-3, 1'000'000});
       trajectory_coverage->push_back(
           {evaluator.report(evaluator.seeTrajectory(poses)).reachable_coverage_percent, seed});

@@ -168,6 +168,11 @@ ClipperLib::Paths offsetRing(const ClipperLib::Path& ring, double delta, OffsetC
   if (corners == OffsetCorners::kRound) {
     return clipperOffset(ring, delta, true, kExactOffsetArcTolerance * unit);
   }
+  if (corners == OffsetCorners::kRoundClear) {
+    // Arcs of the distance plus the sag, so that their chords keep the distance.
+    const double sag = kRoundClearArcTolerance * unit;
+    return clipperOffset(ring, delta < 0.0 ? delta - sag : delta + sag, true, sag);
+  }
   const ClipperLib::Paths mitred = clipperOffset(ring, delta, false, tolerance);
   if (corners == OffsetCorners::kMitred || std::abs(delta) <= tolerance) return mitred;
   const ClipperLib::Paths caps = tangentCaps(ring, delta);
@@ -278,7 +283,10 @@ std::vector<PolygonWithHoles> exactOffsetParts(const PolygonWithHoles& free_area
     std::size_t best_count = 0;
     for (std::size_t k = 0; k < round.size(); ++k) {
       std::size_t count = 0;
-      for (const Point2& p : part.hull) count += contains(round[k], p, kClearanceTolerance) ? 1 : 0;
+      const std::size_t step = std::max<std::size_t>(1, part.hull.size() / 8);
+      for (std::size_t i = 0; i < part.hull.size(); i += step) {
+        count += contains(round[k], part.hull[i], kRoundOffsetReach) ? 1 : 0;
+      }
       if (count > best_count) {
         best_count = count;
         best = k;

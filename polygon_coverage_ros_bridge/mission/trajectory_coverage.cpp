@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 
@@ -16,8 +17,9 @@ TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
                                              const std::optional<std::vector<Pose2>>& reference) {
   const auto start = std::chrono::steady_clock::now();
   const FrustumSensor sensor = sensorOf(parameters);
-  const CoverageEvaluator evaluator(free_area, offset_parts, sensor, reportingResolution(),
-                                    kReportingGridAngle);
+  const CoverageEvaluator evaluator(
+      free_area, exactOffsetParts(free_area, parameters.wall_distance, offset_parts), sensor,
+      reportingResolution(), kReportingGridAngle);
   TrajectoryCoverage coverage;
   const SeenArea seen_reported = evaluator.seeTrajectory(poses);
   coverage.report = evaluator.report(seen_reported);

@@ -729,7 +729,8 @@ std::string pathSummary(const std::vector<Point2>& waypoints, const SegmentCost&
   return summary.str();
 }
 
-/// The repair's raster (UnseenAreaRepair::measuringRaster), which depends only on the areas:
+/// The repair's raster (UnseenAreaRepair::measuringRaster) on the exact offset around the
+/// planned parts, which the coverage report measures too; it depends only on the areas:
 /// built on its own thread while the stages from simplify to path run (none without
 /// coverage_repair). The arguments must outlive the future.
 std::future<CoverageEvaluator> measuringRasterInBackground(
@@ -737,8 +738,8 @@ std::future<CoverageEvaluator> measuringRasterInBackground(
     const std::vector<PolygonWithHoles>* coverage_region) {
   if (!run.parameters.coverage_repair) return {};
   return std::async(std::launch::async, [&run, &offset, &sensor, coverage_region] {
-    return UnseenAreaRepair::measuringRaster(run.free_area, offset.planned_parts, sensor,
-                                             coverage_region);
+    return UnseenAreaRepair::measuringRaster(run.free_area, run.parameters.wall_distance,
+                                             offset.planned_parts, sensor, coverage_region);
   });
 }
 
@@ -749,7 +750,10 @@ std::string repairStage(const PlanningRun& run, const OffsetStage& offset,
                         const VisibilityGraph& graph, const SegmentCost& segment_cost,
                         const JogRemoval& jog_removal, double max_jog_shift, WaypointRoute* route) {
   CoveragePlan& plan = run.plan;
-  const UnseenAreaRepair repair(std::move(measuring_raster), offset.planned_parts, sensor, graph,
+  // Patches run along the route area's boundary: the planned parts and the gaps between
+  // them, whose necks the exact offset's reachable area holds too.
+  const UnseenAreaRepair repair(std::move(measuring_raster), run.free_area,
+                                run.parameters.wall_distance, {plan.route_area}, sensor, graph,
                                 segment_cost);
   // Jogs whose removal shifted a lane off what it had to see are put back first: near
   // a wall that the lane's footprint reaches exactly, any shift inward leaves a band.

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <set>
 #include <utility>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -28,6 +30,12 @@ constexpr double kPatchSplitShare = 1.0;
 /// Unseen cells closer than this share of the footprint width are one region: a patch
 /// that sees one sees the others, and a ragged sliver along a wall counts as a whole.
 constexpr double kJoinShare = 0.25;
+/// Excursions shorter than this share of the footprint width see little that their corner
+/// does not; longer ones than this share of the footprint diagonal are cut to it.
+constexpr double kMinExcursionShare = 0.1;
+constexpr double kMaxExcursionShare = 4.0;
+/// Excursions per region toward the samples farthest from the boundary.
+constexpr int kDeepExcursions = 4;
 /// Legs of the path, nearest to a patch's ends, where its insertion is priced.
 constexpr std::size_t kCandidateLegs = 12;
 /// A leg's view is sampled at this many steps along its middle (clear of its ends by half
@@ -37,6 +45,13 @@ constexpr int kLegSamplesAlong = 16;
 constexpr int kLegSamplesAcross = 3;
 constexpr double kLegSampleReach = 0.95;
 
+/// True when `patch` is an excursion out and back (ExactOffsetExcursions) whose far end `path`
+/// already reaches: driving it again sees nothing more.
+bool isDrivenExcursion(const std::vector<Point2>& patch, const std::vector<Point2>& path) {
+  return patch.size() == 3 && patch.front() == patch.back() &&
+         std::find(path.begin(), path.end(), patch[1]) != path.end();
+}
+
 double totalArea(const std::vector<UnseenRegion>& regions) {
   double sum = 0.0;
   for (const UnseenRegion& region : regions) sum += region.area_m2;
@@ -45,24 +60,27 @@ double totalArea(const std::vector<UnseenRegion>& regions) {
 
 }  // namespace
 
-UnseenAreaRepair::UnseenAreaRepair(const PolygonWithHoles& free_area,
+UnseenAreaRepair::UnseenAreaRepair(const PolygonWithHoles& free_area, double wall_distance,
                                    std::vector<PolygonWithHoles> planned_parts,
                                    const FrustumSensor& sensor, const VisibilityGraph& graph,
                                    const SegmentCost& segment_cost,
                                    const std::vector<PolygonWithHoles>* coverage_region)
-    : UnseenAreaRepair(measuringRaster(free_area, planned_parts, sensor, coverage_region),
-                       planned_parts, sensor, graph, segment_cost) {}
+    : UnseenAreaRepair(
+          measuringRaster(free_area, wall_distance, planned_parts, sensor, coverage_region),
+          free_area, wall_distance, planned_parts, sensor, graph, segment_cost) {}
 
 CoverageEvaluator UnseenAreaRepair::measuringRaster(
-    const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& planned_parts,
-    const FrustumSensor& sensor, const std::vector<PolygonWithHoles>* coverage_region) {
-  CoverageEvaluator evaluator(free_area, planned_parts, sensor, reportingResolution(),
-                              kReportingGridAngle);
+    const PolygonWithHoles& free_area, double wall_distance,
+    const std::vector<PolygonWithHoles>& planned_parts, const FrustumSensor& sensor,
+    const std::vector<PolygonWithHoles>* coverage_region) {
+  CoverageEvaluator evaluator(free_area, exactOffsetParts(free_area, wall_distance, planned_parts),
+                              sensor, reportingResolution(), kReportingGridAngle);
   if (coverage_region != nullptr) evaluator.restrictReachableArea(*coverage_region);
   return evaluator;
 }
 
 UnseenAreaRepair::UnseenAreaRepair(CoverageEvaluator measuring_raster,
+                                   const PolygonWithHoles& free_area, double wall_distance,
                                    std::vector<PolygonWithHoles> planned_parts,
                                    const FrustumSensor& sensor, const VisibilityGraph& graph,
                                    const SegmentCost& segment_cost)
@@ -72,10 +90,16 @@ UnseenAreaRepair::UnseenAreaRepair(CoverageEvaluator measuring_raster,
       graph_(graph),
       segment_cost_(segment_cost),
       min_region_m2_(kMinRegionShare * sensor.width() * sensor.width()),
-      join_distance_(kJoinShare * sensor.width()) {
+      join_distance_(kJoinShare * sensor.width()),
+      excursions_(free_area, wall_distance, kMinExcursionShare * sensor.width(),
+                  kMaxExcursionShare * std::hypot(sensor.width(), sensor.length())) {
   for (const PolygonWithHoles& part : planned_parts_) {
     rings_.push_back(part.hull);
-    for (const Ring& hole : part.holes) rings_.push_back(hole);
+    if (signedArea(rings_.back()) < 0.0) std::reverse(rings_.back().begin(), rings_.back().end());
+    for (const Ring& hole : part.holes) {
+      rings_.push_back(hole);
+      if (signedArea(rings_.back()) > 0.0) std::reverse(rings_.back().begin(), rings_.back().end());
+    }
   }
   for (const Ring& ring : rings_) {
     std::vector<double> lengths = {0.0};
@@ -99,7 +123,7 @@ UnseenAreaRepair::RingPosition UnseenAreaRepair::nearestOnBoundary(const Point2&
       const double d = (p - q).norm();
       if (d < best_distance) {
         best_distance = d;
-        best = {r, arc_lengths_[r][i] + (q - a).norm()};
+        best = {r, i, arc_lengths_[r][i] + (q - a).norm()};
       }
     }
   }
@@ -143,8 +167,11 @@ std::vector<Point2> UnseenAreaRepair::boundaryWalk(std::size_t ring, double from
 std::vector<std::vector<Point2>> UnseenAreaRepair::patchesFor(
     const std::vector<Point2>& samples) const {
   const double boundary_reach = kBoundaryReachShare * sensor_.width();
-  std::vector<std::vector<double>> along_ring(rings_.size());
   std::vector<Point2> deep;
+  std::vector<Point2> beyond;
+  std::vector<RingPosition> beyond_positions;
+  std::vector<double> beyond_distances;
+  std::vector<std::vector<double>> along_ring(rings_.size());
   for (const Point2& sample : samples) {
     double distance = 0.0;
     const RingPosition position = nearestOnBoundary(sample, &distance);
@@ -152,11 +179,19 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::patchesFor(
     for (const PolygonWithHoles& part : planned_parts_) inside = inside || contains(part, sample);
     if (inside && distance > boundary_reach) {
       deep.push_back(sample);
-    } else {
+    } else if (inside) {
       along_ring[position.ring].push_back(position.arc_length);
+    } else {
+      beyond.push_back(sample);
+      beyond_positions.push_back(position);
+      beyond_distances.push_back(distance);
     }
   }
-  std::vector<std::vector<Point2>> patches;
+  std::vector<std::vector<Point2>> patches =
+      excursionPatches(&beyond, &beyond_positions, &beyond_distances);
+  for (const RingPosition& position : beyond_positions) {
+    along_ring[position.ring].push_back(position.arc_length);
+  }
   // Along each ring: the stretches that hold the region's boundary points, split where
   // they lie far apart (the arc lengths are circular: the largest gap may wrap).
   const double split = kPatchSplitShare * sensor_.width();
@@ -212,6 +247,82 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::patchesFor(
   return patches;
 }
 
+std::vector<std::vector<Point2>> UnseenAreaRepair::excursionPatches(
+    std::vector<Point2>* beyond, std::vector<RingPosition>* positions,
+    std::vector<double>* distances) const {
+  struct Excursion {
+    Point2 corner;
+    Point2 apex;
+    bool sees = false;
+  };
+  // The excursions from the corners of the edges beside the samples.
+  std::vector<Excursion> candidates;
+  std::set<std::pair<std::size_t, std::size_t>> tried;  // ring, vertex
+  for (const RingPosition& position : *positions) {
+    const Ring& ring = rings_[position.ring];
+    const std::size_t n = ring.size();
+    for (const std::size_t v : {position.edge, (position.edge + 1) % n}) {
+      if (!tried.insert({position.ring, v}).second) continue;
+      if (const std::optional<Point2> apex =
+              excursions_.apex(ring[(v + n - 1) % n], ring[v], ring[(v + 1) % n])) {
+        candidates.push_back({ring[v], *apex});
+      }
+    }
+  }
+  // And toward the samples farthest from the boundary that no excursion passes near (a
+  // slot's mouth, where the boundary runs straight past the exact offset's bulge).
+  const double boundary_reach = kBoundaryReachShare * sensor_.width();
+  for (int k = 0; k < kDeepExcursions; ++k) {
+    std::size_t deepest = beyond->size();
+    double depth = boundary_reach;
+    for (std::size_t i = 0; i < beyond->size(); ++i) {
+      double nearest = (*distances)[i];
+      for (const Excursion& excursion : candidates) {
+        nearest =
+            std::min(nearest, distanceToSegment((*beyond)[i], excursion.corner, excursion.apex));
+      }
+      if (nearest > depth) {
+        depth = nearest;
+        deepest = i;
+      }
+    }
+    if (deepest == beyond->size()) break;
+    const Point2 from = pointAt((*positions)[deepest].ring, (*positions)[deepest].arc_length);
+    const std::optional<Point2> apex = excursions_.toward(from, (*beyond)[deepest] - from);
+    if (!apex) break;
+    candidates.push_back({from, *apex});
+  }
+  if (candidates.empty()) return {};
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < beyond->size(); ++i) {
+    Excursion* nearest = nullptr;
+    double nearest_distance = (*distances)[i];
+    for (Excursion& excursion : candidates) {
+      const double d = distanceToSegment((*beyond)[i], excursion.corner, excursion.apex);
+      if (d < nearest_distance) {
+        nearest = &excursion;
+        nearest_distance = d;
+      }
+    }
+    if (nearest != nullptr) {
+      nearest->sees = true;
+      continue;
+    }
+    (*beyond)[kept] = (*beyond)[i];
+    (*positions)[kept] = (*positions)[i];
+    (*distances)[kept] = (*distances)[i];
+    ++kept;
+  }
+  beyond->resize(kept);
+  positions->resize(kept);
+  distances->resize(kept);
+  std::vector<std::vector<Point2>> patches;
+  for (const Excursion& excursion : candidates) {
+    if (excursion.sees) patches.push_back({excursion.corner, excursion.apex, excursion.corner});
+  }
+  return patches;
+}
+
 bool UnseenAreaRepair::legNeeded(const SeenArea& seen, const Point2& a, const Point2& b) const {
   const double end_reach = 0.5 * std::hypot(sensor_.width(), sensor_.length());
   const double length = (b - a).norm();
@@ -230,22 +341,34 @@ bool UnseenAreaRepair::legNeeded(const SeenArea& seen, const Point2& a, const Po
   return false;
 }
 
+std::vector<std::size_t> UnseenAreaRepair::nearestLegs(const std::vector<Point2>& patch,
+                                                       const std::vector<Point2>& path,
+                                                       std::size_t first_inside,
+                                                       std::size_t last_inside) const {
+  std::vector<std::pair<double, std::size_t>> legs;
+  for (std::size_t i = first_inside; i < last_inside; ++i) {
+    if (!graph_.boundary().contains(path[i]) || !graph_.boundary().contains(path[i + 1])) continue;
+    const double near = std::min(distanceToSegment(patch.front(), path[i], path[i + 1]),
+                                 distanceToSegment(patch.back(), path[i], path[i + 1]));
+    legs.emplace_back(near, i);
+  }
+  const std::size_t count = std::min(kCandidateLegs, legs.size());
+  std::partial_sort(legs.begin(), legs.begin() + static_cast<std::ptrdiff_t>(count), legs.end());
+  std::vector<std::size_t> nearest;
+  for (std::size_t k = 0; k < count; ++k) nearest.push_back(legs[k].second);
+  return nearest;
+}
+
 bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement replacement,
                               const SeenArea& view, std::size_t first_inside,
                               std::size_t* last_inside, std::vector<Point2>* waypoints,
                               VisibilityGraph::PointCache* routes) const {
   std::vector<Point2>& path = *waypoints;
-  // The legs nearest to the patch's ends.
-  std::vector<std::pair<double, std::size_t>> legs;
-  for (std::size_t i = first_inside; i < *last_inside; ++i) {
-    const double near = std::min(distanceToSegment(patch.front(), path[i], path[i + 1]),
-                                 distanceToSegment(patch.back(), path[i], path[i + 1]));
-    legs.emplace_back(near, i);
-  }
+  // A patch is driven from and back to the area the graph routes in.
+  const BoundaryGrid& area = graph_.boundary();
+  if (!area.contains(patch.front()) || !area.contains(patch.back())) return false;
+  const std::vector<std::size_t> legs = nearestLegs(patch, path, first_inside, *last_inside);
   if (legs.empty()) return false;
-  const std::size_t candidates = std::min(kCandidateLegs, legs.size());
-  std::partial_sort(legs.begin(), legs.begin() + static_cast<std::ptrdiff_t>(candidates),
-                    legs.end());
   // A spur: from an anchor on the path out to the patch, along it and back, the path's
   // own legs kept (they see what the sweeps rely on). The anchor is a waypoint, or the
   // point of a leg nearest to the patch, which splits the leg. A leg may instead be
@@ -256,8 +379,7 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
   std::size_t best_leg = 0;
   std::optional<Point2> best_anchor;  // none: the leg is replaced
   bool best_reversed = false;
-  for (std::size_t k = 0; k < candidates; ++k) {
-    const std::size_t i = legs[k].second;
+  for (const std::size_t i : legs) {
     const double leg_cost = segment_cost_.of(path[i], path[i + 1]);
     for (bool reversed : {false, true}) {
       const Point2& in = reversed ? patch.back() : patch.front();
@@ -272,6 +394,7 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
       };
       for (const Point2& anchor :
            {path[i], path[i + 1], closestPointOnSegment(in, path[i], path[i + 1])}) {
+        if (!area.contains(anchor)) continue;
         const double split =
             segment_cost_.of(path[i], anchor) + segment_cost_.of(anchor, path[i + 1]) - leg_cost;
         consider(
@@ -346,6 +469,7 @@ RepairedPath UnseenAreaRepair::repair(Unseen measured, std::size_t first_inside,
       for (const UnseenRegion& region : regions) {
         if (region.area_m2 < min_region_m2_) break;  // the largest first
         for (const std::vector<Point2>& patch : patchesFor(region.samples)) {
+          if (isDrivenExcursion(patch, patched)) continue;
           if (insert(patch, replacement, seen, first_inside, &patched_last, &patched, &routes)) {
             ++patches;
           }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/repair/exact_offset_excursions.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
@@ -30,32 +31,39 @@ struct RepairedPath {
 /// cell corner), and the object may lie there. The repair measures the path's footprints
 /// on the coverage report's raster, and for every unseen region of the reachable area
 /// drives a patch that sees it: along the offset free area's boundary beside it (where a
-/// band lies beyond the boundary, or within a quarter footprint width inside it), or
-/// through it (deeper inside); each patch is driven where the detour costs least, as a
+/// band lies beyond the boundary, or within a quarter footprint width inside it), out of
+/// a corner of the boundary toward the round corner of the exact offset (ExactOffsetExcursions,
+/// where that passes nearer the region than the boundary does), or through it (deeper
+/// inside); each patch is driven where the detour costs least, as a
 /// spur from the path or instead of a leg whose view the path keeps (a round of patches
 /// that loses what the path saw is tried again with spurs only, which keep every leg).
 /// Rounds repeat while unseen regions remain and the last round saw more.
 class UnseenAreaRepair {
  public:
-  /// `free_area` (cleaned) and `planned_parts` (the parts of the offset free area that the
-  /// path covers) define the reachable area; `graph` routes inside the area the path
-  /// runs in (it must outlive this object); `segment_cost` prices the detours as the
-  /// planner's generalized TSP does. With `coverage_region` (a replanned mission's
-  /// remaining area), only the reachable area inside it counts: the rest was seen before.
-  UnseenAreaRepair(const PolygonWithHoles& free_area, std::vector<PolygonWithHoles> planned_parts,
-                   const FrustumSensor& sensor, const VisibilityGraph& graph,
-                   const SegmentCost& segment_cost,
+  /// `free_area` (cleaned) and `planned_parts` (the parts of the offset free area by
+  /// `wall_distance` that the path covers) define the reachable area: the exact offset
+  /// around the parts (exactOffsetParts), grown by half a footprint length; `graph` routes
+  /// inside the area the path runs in (it must outlive this object); `segment_cost` prices
+  /// the detours as the planner's generalized TSP does. With `coverage_region` (a replanned
+  /// mission's remaining area), only the reachable area inside it counts: the rest was seen
+  /// before.
+  UnseenAreaRepair(const PolygonWithHoles& free_area, double wall_distance,
+                   std::vector<PolygonWithHoles> planned_parts, const FrustumSensor& sensor,
+                   const VisibilityGraph& graph, const SegmentCost& segment_cost,
                    const std::vector<PolygonWithHoles>* coverage_region = nullptr);
 
   /// The repair with the raster that measuringRaster() built (so that a planner can build
-  /// it while its earlier stages run).
-  UnseenAreaRepair(CoverageEvaluator measuring_raster, std::vector<PolygonWithHoles> planned_parts,
+  /// it while its earlier stages run); `planned_parts` are then only where the patches run
+  /// (a planner passes its route area, the parts joined through their gaps).
+  UnseenAreaRepair(CoverageEvaluator measuring_raster, const PolygonWithHoles& free_area,
+                   double wall_distance, std::vector<PolygonWithHoles> planned_parts,
                    const FrustumSensor& sensor, const VisibilityGraph& graph,
                    const SegmentCost& segment_cost);
 
   /// The raster on which the repair measures a path: the coverage report's, with the
-  /// reachable area of `free_area` and `planned_parts` (inside `coverage_region`, if given).
-  static CoverageEvaluator measuringRaster(const PolygonWithHoles& free_area,
+  /// reachable area of `free_area` and the exact offset by `wall_distance` around
+  /// `planned_parts` (inside `coverage_region`, if given).
+  static CoverageEvaluator measuringRaster(const PolygonWithHoles& free_area, double wall_distance,
                                            const std::vector<PolygonWithHoles>& planned_parts,
                                            const FrustumSensor& sensor,
                                            const std::vector<PolygonWithHoles>* coverage_region);
@@ -86,9 +94,11 @@ class UnseenAreaRepair {
   RepairedPath repair(Unseen measured, std::size_t first_inside, std::size_t last_inside) const;
 
  private:
-  /// A point of a boundary ring of the planned parts: the ring and the arc length to it.
+  /// A point of a boundary ring of the planned parts: the ring, the edge it lies on and
+  /// the arc length to it.
   struct RingPosition {
     std::size_t ring = 0;
+    std::size_t edge = 0;
     double arc_length = 0.0;
   };
 
@@ -101,8 +111,24 @@ class UnseenAreaRepair {
   /// The patches that see the region of which `samples` are cells.
   std::vector<std::vector<Point2>> patchesFor(const std::vector<Point2>& samples) const;
 
+  /// Out of the samples beyond the planned parts (`positions` their nearest boundary
+  /// points, `distances` to them), those that an excursion from a corner of the edges they
+  /// lie beside passes nearer than the boundary: they are removed from `beyond` (with their
+  /// positions and distances), and the excursions that see them are returned as patches
+  /// out and back.
+  std::vector<std::vector<Point2>> excursionPatches(std::vector<Point2>* beyond,
+                                                    std::vector<RingPosition>* positions,
+                                                    std::vector<double>* distances) const;
+
   /// The stretch of ring `ring` from `from` to `to` (arc lengths, forward, may wrap).
   std::vector<Point2> boundaryWalk(std::size_t ring, double from, double to) const;
+
+  /// The legs of `path` between `first_inside` and `last_inside` nearest to the patch's
+  /// ends (kCandidateLegs of them), not those out of the area that the graph routes in (an
+  /// excursion's).
+  std::vector<std::size_t> nearestLegs(const std::vector<Point2>& patch,
+                                       const std::vector<Point2>& path, std::size_t first_inside,
+                                       std::size_t last_inside) const;
 
   /// Which legs a patch's detour may replace instead of leaving them as they are.
   enum class LegReplacement { kAnyLeg, kUnneededLeg, kNone };
@@ -125,9 +151,10 @@ class UnseenAreaRepair {
   CoverageEvaluator evaluator_;
   const VisibilityGraph& graph_;
   SegmentCost segment_cost_;
-  double min_region_m2_;                          ///< smaller unseen regions get no patch
-  double join_distance_;                          ///< unseen cells closer than this are one region
-  std::vector<Ring> rings_;                       ///< every hull and hole of the parts
+  double min_region_m2_;  ///< smaller unseen regions get no patch
+  double join_distance_;  ///< unseen cells closer than this are one region
+  ExactOffsetExcursions excursions_;
+  std::vector<Ring> rings_;  ///< every hull and hole of the parts, the parts to their left
   std::vector<std::vector<double>> arc_lengths_;  ///< per ring, to each vertex and round
 };
 

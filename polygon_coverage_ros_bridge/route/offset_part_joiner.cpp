@@ -41,6 +41,9 @@ constexpr std::size_t kWindowedJoinVertices = 2000;
 /// the offsets move inward by at most a wall distance) never touch what is compared.
 constexpr double kWindowMarginShare = 10.0;
 constexpr double kSampleMarginShare = 8.0;
+/// A gap's path is first sought within these many times the distance between its ends
+/// around them (pathBetweenParts).
+constexpr double kPathWindowShares[] = {2.0, 8.0};
 
 /// Boundary vertices standing for one part in a joining problem; the first tells which
 /// offset component holds the part.
@@ -53,16 +56,22 @@ struct Level {
   std::vector<int> component_of_part;  ///< -1: the part lies in no component
 };
 
-Level levelAt(const WallOffset& offset, const std::vector<PartVertices>& parts, double distance) {
+/// The parts' grouping in the offset at `distance` with `corners`.
+Level levelAt(const WallOffset& offset, const std::vector<PartVertices>& parts, double distance,
+              OffsetCorners corners = OffsetCorners::kMitred) {
   Level level;
   level.distance = distance;
-  level.components = offset.at(distance).parts;
+  level.components = offset.at(distance, corners).parts;
+  const double tolerance = corners == OffsetCorners::kMitred ? 0.0 : kRoundOffsetReach;
   for (const PartVertices& part : parts) {
-    // A part lies deep inside the offset at a smaller distance (offsets are nested), so
-    // one of its vertices tells which component holds it.
+    // A part lies inside the offset at a smaller distance (offsets are nested; a vertex on
+    // the part's boundary at most the round offset's shortfall outside it), so one of its
+    // vertices tells which component holds it.
     int found = -1;
     for (std::size_t c = 0; c < level.components.size() && found < 0; ++c) {
-      if (contains(level.components[c], part.front())) found = static_cast<int>(c);
+      if (contains(level.components[c], part.front(), tolerance)) {
+        found = static_cast<int>(c);
+      }
     }
     level.component_of_part.push_back(found);
   }
@@ -213,6 +222,71 @@ std::vector<Point2> shortestPathInside(const PolygonWithHoles& area, const Point
   return VisibilityGraph(area, distance_cost).shortestPath(a, b);
 }
 
+/// The lower-left and upper-right corners of the ring's axis-aligned bounds.
+std::pair<Point2, Point2> boundsOf(const Ring& ring) {
+  Point2 low = ring.front();
+  Point2 high = ring.front();
+  for (const Point2& p : ring) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  return {low, high};
+}
+
+/// An axis-aligned rectangle around `ring` with `margin` on every side.
+PolygonWithHoles boxAround(const Ring& ring, double margin) {
+  auto [low, high] = boundsOf(ring);
+  low -= Point2(margin, margin);
+  high += Point2(margin, margin);
+  return {{low, {high.x(), low.y()}, high, {low.x(), high.y()}}, {}};
+}
+
+/// The point of the area's boundary nearest to p.
+Point2 nearestBoundaryPoint(const PolygonWithHoles& area, const Point2& p) {
+  Point2 nearest = p;
+  double least = std::numeric_limits<double>::infinity();
+  const auto visit = [&](const Ring& ring) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      const Point2 q = closestPointOnSegment(p, ring[i], ring[(i + 1) % n]);
+      if ((q - p).norm() < least) {
+        least = (q - p).norm();
+        nearest = q;
+      }
+    }
+  };
+  visit(area.hull);
+  for (const Ring& hole : area.holes) visit(hole);
+  return nearest;
+}
+
+/// The shortest path inside the offset component `area` between vertices a and b of two
+/// parts, which may lie up to kRoundOffsetReach outside it: from each of them to the
+/// component's nearest boundary point when it does. The path is sought first in the part
+/// of the component within boxes around a and b (kPathWindowShares times their distance
+/// beyond them): a round component has arcs of many vertices at every corner, and a
+/// visibility graph of all of them costs seconds where the gap's neighbourhood costs
+/// milliseconds.
+std::vector<Point2> pathBetweenParts(const PolygonWithHoles& area, const Point2& a,
+                                     const Point2& b) {
+  const Point2 from = contains(area, a) ? a : nearestBoundaryPoint(area, a);
+  const Point2 to = contains(area, b) ? b : nearestBoundaryPoint(area, b);
+  std::vector<Point2> path;
+  for (const double share : kPathWindowShares) {
+    const PolygonWithHoles box = boxAround({from, to}, share * (to - from).norm());
+    for (const PolygonWithHoles& piece : intersectWithRegions(area, {box}, 0.0)) {
+      if (path.empty() && contains(piece, from, kRoundOffsetReach) &&
+          contains(piece, to, kRoundOffsetReach)) {
+        path = shortestPathInside(piece, from, to);
+      }
+    }
+    if (!path.empty()) break;
+  }
+  if (path.empty()) path = shortestPathInside(area, from, to);
+  if (from != a) path.insert(path.begin(), a);
+  if (to != b) path.push_back(b);
+  return path;
+}
+
 /// The distances that bound the search for gaps, below the wall distance: a gap found at
 /// `passable` or above keeps the gap clearance within kClearanceTolerance (its path lies in
 /// that offset), one found below it is narrower; none is sought below `lowest`.
@@ -247,6 +321,11 @@ std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<Pa
   const Level passable = levelAt(offset, parts, levels.passable);
   std::vector<Merge> merges;
   refine(offset, parts, passable, upper, kRefinementDepth, &merges);
+  // The mitred offsets find the gaps fast, but their corners close necks that the points at
+  // least the passable distance from the walls pass: the parts that the exact offset there
+  // joins (kRoundClear) are joined before narrower gaps are sought.
+  merges.push_back(
+      {levelAt(offset, parts, levels.passable, OffsetCorners::kRoundClear), grouping(passable)});
   refine(offset, parts, lowest, passable, kRefinementDepth, &merges);
 
   PartGroups groups(part_count);
@@ -269,7 +348,7 @@ std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<Pa
         OffsetGap gap;
         gap.from_part = owner[from];
         gap.to_part = owner[to];
-        gap.path = shortestPathInside(merge.lower.components[c], a, b);
+        gap.path = pathBetweenParts(merge.lower.components[c], a, b);
         std::tie(gap.clearance_m, gap.narrowest_point) = pathClearance(free_area, gap.path);
         groups.join(gap.from_part, gap.to_part);
         joined.insert(joined.end(), it->second.begin(), it->second.end());
@@ -278,25 +357,6 @@ std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<Pa
     }
   }
   return gaps;
-}
-
-/// The lower-left and upper-right corners of the ring's axis-aligned bounds.
-std::pair<Point2, Point2> boundsOf(const Ring& ring) {
-  Point2 low = ring.front();
-  Point2 high = ring.front();
-  for (const Point2& p : ring) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  return {low, high};
-}
-
-/// An axis-aligned rectangle around `ring` with `margin` on every side.
-PolygonWithHoles boxAround(const Ring& ring, double margin) {
-  auto [low, high] = boundsOf(ring);
-  low -= Point2(margin, margin);
-  high += Point2(margin, margin);
-  return {{low, {high.x(), low.y()}, high, {low.x(), high.y()}}, {}};
 }
 
 /// True when the axis-aligned bounds of `a` and `b` overlap.

@@ -211,11 +211,22 @@ TEST(WallOffset, OneAreaAtManyDistances) {
 
 /// The exact offset (round corners): an L-shaped room keeps (1 - pi/4) m^2 more at its reflex
 /// corner than the mitred one, and a 2 m square hole grows into a rounded square, each
-/// within the chords' sag of the arcs.
+/// within the chords' sag of the arcs. kRoundClear keeps the distance everywhere and falls
+/// short of the exact area by at most its tolerance along the boundary.
 TEST(WallOffset, RoundCornersAreTheExactOffset) {
   const PolygonWithHoles room = {{{0, 0}, {10, 0}, {10, 5}, {5, 5}, {5, 10}, {0, 10}}, {}};
+  const double exact_room = 39.0 + (1.0 - M_PI / 4.0);
   const double room_area = area(WallOffset(room).at(1.0, OffsetCorners::kRound).parts);
-  EXPECT_NEAR(room_area, 39.0 + (1.0 - M_PI / 4.0), 1e-3);
+  EXPECT_NEAR(room_area, exact_room, kExactOffsetArcTolerance * M_PI / 2.0);
+  const std::vector<PolygonWithHoles> clear =
+      WallOffset(room).at(1.0, OffsetCorners::kRoundClear).parts;
+  EXPECT_LE(area(clear), exact_room);
+  double perimeter = 0.0;
+  const Ring& ring = clear.front().hull;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    perimeter += (ring[(i + 1) % ring.size()] - ring[i]).norm();
+  EXPECT_GE(area(clear), exact_room - perimeter * kRoundClearArcTolerance);
+  for (const Point2& p : clear.front().hull) EXPECT_GE(distanceToBoundary(p, room), 1.0 - 1e-9);
   const PolygonWithHoles lake = {{{0, 0}, {20, 0}, {20, 20}, {0, 20}},
                                  {{{9, 9}, {11, 9}, {11, 11}, {9, 11}}}};
   const double lake_area = area(WallOffset(lake).at(1.0, OffsetCorners::kRound).parts);
@@ -352,6 +363,49 @@ TEST(WallOffset, ExactOffsetPartsAreTheRoundPartsHoldingThePlannedOnes) {
   EXPECT_NEAR(area(exactOffsetParts(rooms, 1.5, mitred)), area(round), 1e-9);
   const std::vector<PolygonWithHoles> itself = {rooms};
   EXPECT_EQ(exactOffsetParts(rooms, 0.0, itself).front().hull, rooms.hull);
+}
+
+/// The exact offset against its definition, on maps of touching holes (whose mitres close
+/// pockets and necks that a robot keeping its distance reaches): of random points of the
+/// free area (fixed seed), every one at least the wall distance plus the chords' sag from
+/// the walls lies in the exact parts, and every one in them lies at least the wall distance
+/// less that sag from the walls; the mitred parts miss some of the former.
+TEST(WallOffset, ExactOffsetPartsHoldThePointsAtLeastTheWallDistanceFromTheWalls) {
+  const testing::HardMapGenerator generator(testing::MapFamily::kTouchingHoles);
+  std::mt19937 random(11);
+  std::size_t missed_by_mitred = 0;
+  for (const std::uint64_t seed : {2u, 3u, 4u}) {
+    const testing::HardMap map = generator.generate(seed);
+    const PolygonWithHoles free_area = PolygonCleaner().clean(map.mission.polygon).free_area;
+    const double distance = map.mission.parameters.wall_distance;
+    const std::vector<PolygonWithHoles> mitred = computeOffsetFreeArea(free_area, distance).parts;
+    const std::vector<PolygonWithHoles> exact = exactOffsetParts(free_area, distance, mitred);
+    const auto inside = [](const std::vector<PolygonWithHoles>& parts, const Point2& p) {
+      return std::any_of(parts.begin(), parts.end(),
+                         [&](const PolygonWithHoles& part) { return contains(part, p); });
+    };
+    Point2 low = free_area.hull.front();
+    Point2 high = low;
+    for (const Point2& p : free_area.hull) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    std::uniform_real_distribution<double> x(low.x(), high.x());
+    std::uniform_real_distribution<double> y(low.y(), high.y());
+    for (int k = 0; k < 20000; ++k) {
+      const Point2 p(x(random), y(random));
+      if (!contains(free_area, p)) continue;
+      const double clearance = wallDistance(free_area, p);
+      if (clearance >= distance + kExactOffsetArcTolerance) {
+        EXPECT_TRUE(inside(exact, p)) << "seed " << seed << " " << p.transpose();
+        missed_by_mitred += inside(mitred, p) ? 0 : 1;
+      }
+      if (inside(exact, p)) {
+        EXPECT_GE(clearance, distance - kExactOffsetArcTolerance) << "seed " << seed;
+      }
+    }
+  }
+  EXPECT_GT(missed_by_mitred, 0u);
 }
 
 }  // namespace

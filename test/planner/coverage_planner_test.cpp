@@ -526,6 +526,23 @@ TEST(CoveragePlanner, SimplifiedShorelinesPlanValidlyAndSeeTheReachableArea) {
   }
 }
 
+/// Shoreline seed 26: the mitred offset closes the neck to a part of 900 m^2 (its mitres
+/// meet where the gap keeps 1.50 m, below the wall distance of 1.52 m), while the points at
+/// least the wall distance from the walls pass it. The gap is found on the exact offset,
+/// and the part is entered and seen.
+TEST(CoveragePlanner, APartBeyondANeckThatOnlyTheMitredOffsetClosesIsEntered) {
+  const testing::HardMap map =
+      testing::HardMapGenerator(testing::MapFamily::kShoreline).generate(26);
+  PlannerParameters parameters = map.mission.parameters;
+  parameters.smoothing = false;
+  const CoveragePlan plan =
+      CoveragePlanner(parameters).plan(map.mission.polygon, map.mission.start, map.mission.goal);
+  expectValidPlan(map.mission.polygon, plan, parameters, map.mission.start, map.mission.goal);
+  EXPECT_GT(area(plan.offset_parts), 900.0);
+  EXPECT_LT(area(plan.unreachable_parts), 1.0);
+  EXPECT_GE(trajectoryReachableCoverage(map, parameters, plan), 99.9);
+}
+
 /// The planner's guarantee: on 200 seeded random maps (hulls 50 to 200 m across, 0 to 15 holes,
 /// footprints from 12.9 m down to 2 m), every leg lies in the offset free area and the
 /// footprints swept along the legs cover at least 99 % of the reachable area.

@@ -4,12 +4,13 @@
 #include <cmath>
 #include <string>
 
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+#include "test/support/sampled_wall_distance.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
 namespace kinematic_coverage::core {
-
 void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan,
                      const PlannerParameters& parameters, const Point2& start, const Point2& goal) {
   const auto& waypoints = plan.waypoints;
@@ -28,9 +29,14 @@ void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan
         std::remainder(waypoints[i].yaw - std::atan2(b.y() - a.y(), b.x() - a.x()), 2 * M_PI), 0.0,
         1e-9);
     if (i >= plan.first_inside && i + 1 <= plan.last_inside) {
-      EXPECT_TRUE(segmentInside(plan.route_area, a, b, kLegTolerance))
+      // Inside the route area, or out of it toward the exact offset's boundary (the
+      // repair's excursions), keeping the wall distance.
+      EXPECT_TRUE(
+          segmentInside(plan.route_area, a, b, kLegTolerance) ||
+          keepsClearance(testing::sampledWallDistance(free_area, {a, b}), parameters.wall_distance))
           << "leg " << i << " from " << a.transpose() << " to " << b.transpose()
-          << " leaves the route area (the offset free area's parts and their gaps)";
+          << " leaves the route area (the offset free area's parts and their gaps) and comes "
+             "nearer the walls than the wall distance";
     }
   }
   EXPECT_NEAR(plan.path_length_m, length, 1e-6 * std::max(1.0, length));

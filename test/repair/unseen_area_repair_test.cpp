@@ -2,14 +2,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/hard_map_generator.h"
+#include "test/support/sampled_wall_distance.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 
 namespace kinematic_coverage::core {
@@ -46,7 +50,7 @@ struct Room {
   VisibilityGraph graph{offset, cost};
 
   RepairedPath repair(const std::vector<Point2>& waypoints) const {
-    return UnseenAreaRepair(free_area, {offset}, sensor, graph, cost)
+    return UnseenAreaRepair(free_area, 1.0, {offset}, sensor, graph, cost)
         .repair(waypoints, 0, waypoints.size() - 1);
   }
 };
@@ -146,7 +150,7 @@ TEST(UnseenAreaRepair, LegsToAStartAndGoalOutsideTheAreaGetNoPatch) {
   path.insert(path.begin(), Point2(0.5, 1.5));
   path.push_back({0.5, 7.5});
   const RepairedPath repaired =
-      UnseenAreaRepair(room.free_area, {room.offset}, room.sensor, room.graph, room.cost)
+      UnseenAreaRepair(room.free_area, 1.0, {room.offset}, room.sensor, room.graph, room.cost)
           .repair(path, 1, path.size() - 2);
   EXPECT_LT(repaired.unseen_after_m2, 0.01);
   EXPECT_EQ(repaired.waypoints.front(), path.front());
@@ -164,9 +168,9 @@ TEST(UnseenAreaRepair, OnlyTheCoverageRegionIsPatched) {
   const Room room;
   const std::vector<Point2> lanes = lanesAt({1.5, 3.5, 5.5, 7.5});
   const std::vector<PolygonWithHoles> left{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}}};
-  const RepairedPath repaired =
-      UnseenAreaRepair(room.free_area, {room.offset}, room.sensor, room.graph, room.cost, &left)
-          .repair(lanes, 0, lanes.size() - 1);
+  const RepairedPath repaired = UnseenAreaRepair(room.free_area, 1.0, {room.offset}, room.sensor,
+                                                 room.graph, room.cost, &left)
+                                    .repair(lanes, 0, lanes.size() - 1);
   EXPECT_NEAR(repaired.unseen_before_m2, 9.5, 0.2);
   EXPECT_LT(repaired.unseen_after_m2, 0.01);
   EXPECT_GE(repaired.patches, 1u);
@@ -176,12 +180,42 @@ TEST(UnseenAreaRepair, OnlyTheCoverageRegionIsPatched) {
   EXPECT_LT(pathLength(repaired.waypoints), pathLength(room.repair(lanes).waypoints) - 5.0);
 
   const std::vector<PolygonWithHoles> bottom{{{{0, 0}, {20, 0}, {20, 5}, {0, 5}}, {}}};
-  const RepairedPath untouched =
-      UnseenAreaRepair(room.free_area, {room.offset}, room.sensor, room.graph, room.cost, &bottom)
-          .repair(lanes, 0, lanes.size() - 1);
+  const RepairedPath untouched = UnseenAreaRepair(room.free_area, 1.0, {room.offset}, room.sensor,
+                                                  room.graph, room.cost, &bottom)
+                                     .repair(lanes, 0, lanes.size() - 1);
   EXPECT_EQ(untouched.waypoints, lanes);
   EXPECT_EQ(untouched.patches, 0u);
   EXPECT_EQ(untouched.unseen_before_m2, 0.0);
+}
+
+// A corner of a triangular obstacle bulges into the free area by 120 degrees: the mitred
+// offset by the wall distance (2 m) stops 2 m short of the exact offset's round corner, and
+// with a 1 m x 0.5 m footprint the reachable area around that corner is out of sight of the
+// mitred boundary. The repair drives out of the mitre to the round corner and back, keeping
+// the wall distance, and sees it.
+TEST(UnseenAreaRepair, ARoundCornerOfTheExactOffsetIsSeenFromAnExcursion) {
+  const double height = 3.0 * std::sqrt(3.0);
+  const PolygonWithHoles room{{{0, 0}, {40, 0}, {40, 30}, {0, 30}},
+                              {{{17, 13}, {20, 13 + height}, {23, 13}}}};
+  const double wall_distance = 2.0;
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(room, wall_distance).parts;
+  const FrustumSensor sensor{1.0, 0.5, 0.0};
+  const PlannerParameters parameters;
+  const SegmentCost cost{segmentCostOf(parameters)};
+  const VisibilityGraph graph{parts.front(), cost};
+  // Where the obstacle's lower left corner bulges; a lane below it sees up to y = 11.
+  const std::vector<PolygonWithHoles> near_corner{{{{13, 10}, {18, 10}, {18, 14}, {13, 14}}, {}}};
+  const std::vector<Point2> lane = {{3, 10.5}, {37, 10.5}};
+  const RepairedPath repaired =
+      UnseenAreaRepair(room, wall_distance, parts, sensor, graph, cost, &near_corner)
+          .repair(lane, 0, 1);
+  EXPECT_GT(repaired.unseen_before_m2, 5.0);
+  EXPECT_LT(repaired.unseen_after_m2, 0.01 * repaired.unseen_before_m2);
+  std::size_t beyond = 0;
+  for (const Point2& p : repaired.waypoints) beyond += contains(parts.front(), p, 1e-6) ? 0 : 1;
+  EXPECT_GE(beyond, 1u);
+  EXPECT_TRUE(
+      keepsClearance(testing::sampledWallDistance(room, repaired.waypoints), wall_distance));
 }
 
 /// A mission planned as coverage_tool plans it, without and with coverage_repair, and the
@@ -219,8 +253,17 @@ TEST(UnseenAreaRepair, AJogThatShiftedALaneOffTheWallIsPutBack) {
   const FrustumSensor& sensor = plans.sensor;
   const std::vector<Point2>& before = plans.before;
   const std::vector<Point2>& after = plans.after;
-  EXPECT_GT(unseenArea(planned.free_area, planned.plan.offset_parts, sensor, before), 1.5);
-  EXPECT_LT(unseenArea(repaired.free_area, repaired.plan.offset_parts, sensor, after), 0.01);
+  const double wall_distance = mission.parameters.wall_distance;
+  EXPECT_GT(
+      unseenArea(planned.free_area,
+                 exactOffsetParts(planned.free_area, wall_distance, planned.plan.offset_parts),
+                 sensor, before),
+      1.5);
+  EXPECT_LT(
+      unseenArea(repaired.free_area,
+                 exactOffsetParts(repaired.free_area, wall_distance, repaired.plan.offset_parts),
+                 sensor, after),
+      0.01);
   EXPECT_LE(repaired.plan.time_cost_s, 1.01 * planned.plan.time_cost_s);
   EXPECT_EQ(after.size(), before.size() + 1);
 }
@@ -237,8 +280,11 @@ TEST(UnseenAreaRepair, SpursAreTakenThoughTheLegsTheySplitLoseARasterSliver) {
   mission.parameters.boundary_simplification = 0.1;
   const PlannedBothWays plans = planBothWays(mission);
   const PlannedMission& repaired = plans.with;
-  const CoverageEvaluator evaluator(repaired.free_area, repaired.plan.offset_parts, plans.sensor,
-                                    reportingResolution(), kReportingGridAngle);
+  const CoverageEvaluator evaluator(
+      repaired.free_area,
+      exactOffsetParts(repaired.free_area, mission.parameters.wall_distance,
+                       repaired.plan.offset_parts),
+      plans.sensor, reportingResolution(), kReportingGridAngle);
   const CoverageReport before =
       evaluator.report(evaluator.seeWaypointPath(legHeadingPoses(plans.before)));
   const CoverageReport after =
@@ -264,8 +310,11 @@ TEST(UnseenAreaRepair, PlansOfTheHardMapsSeeTheirReachableArea) {
       const PlannedMission& repaired = plans.with;
       const std::vector<Point2>& before = plans.before;
       const std::vector<Point2>& after = plans.after;
-      const CoverageEvaluator evaluator(repaired.free_area, repaired.plan.offset_parts,
-                                        plans.sensor, reportingResolution(), kReportingGridAngle);
+      const double wall_distance = map.mission.parameters.wall_distance;
+      const CoverageEvaluator evaluator(
+          repaired.free_area,
+          exactOffsetParts(repaired.free_area, wall_distance, repaired.plan.offset_parts),
+          plans.sensor, reportingResolution(), kReportingGridAngle);
       const CoverageReport report_before =
           evaluator.report(evaluator.seeWaypointPath(legHeadingPoses(before)));
       const CoverageReport report_after =
@@ -275,8 +324,13 @@ TEST(UnseenAreaRepair, PlansOfTheHardMapsSeeTheirReachableArea) {
       EXPECT_GE(report_after.reachable_coverage_percent, 99.9) << name;
       EXPECT_EQ(after.front(), before.front()) << name;
       EXPECT_EQ(after.back(), before.back()) << name;
+      // Legs run in the route area, or out of it to the exact offset (an excursion),
+      // keeping the wall distance.
       for (std::size_t i = repaired.plan.first_inside; i < repaired.plan.last_inside; ++i) {
-        EXPECT_TRUE(segmentInside(repaired.plan.route_area, after[i], after[i + 1], 1e-6))
+        EXPECT_TRUE(segmentInside(repaired.plan.route_area, after[i], after[i + 1], 1e-6) ||
+                    keepsClearance(
+                        testing::sampledWallDistance(repaired.free_area, {after[i], after[i + 1]}),
+                        wall_distance))
             << name << " leg " << i;
       }
       EXPECT_GE(repaired.plan.time_cost_s, planned.plan.time_cost_s - 1e-9) << name;

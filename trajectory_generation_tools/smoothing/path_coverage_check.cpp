@@ -172,8 +172,11 @@ PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double w
   } else if (guarded == CoverageSafeArea::kFree) {
     reachable_ = raster_->rasterize(free_area);
   } else {
-    const std::vector<PolygonWithHoles> parts =
-        offset_parts.empty() ? computeOffsetFreeArea(free_area, wall_distance).parts : offset_parts;
+    // The exact offset around the parts, as the coverage report measures the reachable area.
+    const std::vector<PolygonWithHoles> parts = exactOffsetParts(
+        free_area, wall_distance,
+        offset_parts.empty() ? computeOffsetFreeArea(free_area, wall_distance).parts
+                             : offset_parts);
     reachable_ = reachableArea(*raster_, raster_->rasterize(free_area), raster_->rasterize(parts),
                                parts, sensor.length());
   }

@@ -1,0 +1,78 @@
+#include "polygon_coverage_ros_bridge/repair/exact_offset_excursions.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// m short of the full length at which an excursion ends, so that rounding leaves its end
+/// at the wall distance or beyond, never nearer.
+constexpr double kApexMargin = 1e-6;
+/// An excursion ends where a step would gain less than this (m), or after this many steps
+/// (a bisector that runs along a wall nears it slowly).
+constexpr double kTraceTolerance = 1e-4;
+constexpr int kTraceSteps = 32;
+
+void addWalls(const Ring& ring, std::vector<Point2>* from, std::vector<Point2>* to) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    from->push_back(ring[i]);
+    to->push_back(ring[(i + 1) % ring.size()]);
+  }
+}
+
+}  // namespace
+
+ExactOffsetExcursions::ExactOffsetExcursions(const PolygonWithHoles& free_area,
+                                             double wall_distance, double min_length,
+                                             double max_length)
+    : wall_distance_(wall_distance), min_length_(min_length), max_length_(max_length) {
+  addWalls(free_area.hull, &from_, &to_);
+  for (const Ring& hole : free_area.holes) addWalls(hole, &from_, &to_);
+  grid_ = EdgeGrid(from_, to_, EdgeGrid::Layout{});
+}
+
+double ExactOffsetExcursions::wallDistance(const Point2& p, double reach) const {
+  const Point2 box(reach, reach);
+  std::vector<int> ids;
+  grid_.collect(grid_.cellsOf(p - box, p + box), &ids);
+  double nearest = reach;
+  for (const int i : ids) nearest = std::min(nearest, distanceToSegment(p, from_[i], to_[i]));
+  return nearest;
+}
+
+std::optional<Point2> ExactOffsetExcursions::apex(const Point2& before, const Point2& corner,
+                                                  const Point2& after) const {
+  const Point2 in = corner - before;
+  const Point2 out = after - corner;
+  if (in.norm() <= kLengthTolerance || out.norm() <= kLengthTolerance) return std::nullopt;
+  if (cross(before, corner, after) >= 0.0) return std::nullopt;  // turns toward its inside
+  // The inward normals' sum points into the ring's inside; its opposite bisects the outside.
+  const Point2 inward =
+      Point2(-in.y(), in.x()).normalized() + Point2(-out.y(), out.x()).normalized();
+  return toward(corner, -inward);
+}
+
+std::optional<Point2> ExactOffsetExcursions::toward(const Point2& from,
+                                                    const Point2& direction) const {
+  if (!(wall_distance_ > 0.0) || from_.empty() || direction.norm() <= kLengthTolerance) {
+    return std::nullopt;
+  }
+  // Out by steps that each keep the wall distance: from a point d from the walls, d less
+  // the wall distance (sphere tracing), until the walls are that near.
+  const Point2 outward = direction.normalized();
+  const double reach = wall_distance_ + max_length_;
+  double length = 0.0;
+  for (int step = 0; step < kTraceSteps && length < max_length_; ++step) {
+    const double advance =
+        wallDistance(from + length * outward, reach) - wall_distance_ - kApexMargin;
+    if (advance <= kTraceTolerance) break;
+    length = std::min(length + advance, max_length_);
+  }
+  if (length < min_length_) return std::nullopt;
+  return Point2(from + length * outward);
+}
+
+}  // namespace kinematic_coverage::core
