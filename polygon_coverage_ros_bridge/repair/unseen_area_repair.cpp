@@ -81,10 +81,10 @@ CoverageEvaluator UnseenAreaRepair::measuringRaster(
 
 UnseenAreaRepair::UnseenAreaRepair(CoverageEvaluator measuring_raster,
                                    const PolygonWithHoles& free_area, double wall_distance,
-                                   std::vector<PolygonWithHoles> planned_parts,
+                                   std::vector<PolygonWithHoles> patch_areas,
                                    const FrustumSensor& sensor, const VisibilityGraph& graph,
                                    const SegmentCost& segment_cost)
-    : planned_parts_(std::move(planned_parts)),
+    : patch_areas_(std::move(patch_areas)),
       sensor_(sensor),
       evaluator_(std::move(measuring_raster)),
       graph_(graph),
@@ -93,7 +93,7 @@ UnseenAreaRepair::UnseenAreaRepair(CoverageEvaluator measuring_raster,
       join_distance_(kJoinShare * sensor.width()),
       excursions_(free_area, wall_distance, kMinExcursionShare * sensor.width(),
                   kMaxExcursionShare * std::hypot(sensor.width(), sensor.length())) {
-  for (const PolygonWithHoles& part : planned_parts_) {
+  for (const PolygonWithHoles& part : patch_areas_) {
     rings_.push_back(part.hull);
     if (signedArea(rings_.back()) < 0.0) std::reverse(rings_.back().begin(), rings_.back().end());
     for (const Ring& hole : part.holes) {
@@ -168,29 +168,24 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::patchesFor(
     const std::vector<Point2>& samples) const {
   const double boundary_reach = kBoundaryReachShare * sensor_.width();
   std::vector<Point2> deep;
-  std::vector<Point2> beyond;
-  std::vector<RingPosition> beyond_positions;
-  std::vector<double> beyond_distances;
+  std::vector<BoundarySample> beyond;
   std::vector<std::vector<double>> along_ring(rings_.size());
   for (const Point2& sample : samples) {
     double distance = 0.0;
     const RingPosition position = nearestOnBoundary(sample, &distance);
     bool inside = false;
-    for (const PolygonWithHoles& part : planned_parts_) inside = inside || contains(part, sample);
+    for (const PolygonWithHoles& part : patch_areas_) inside = inside || contains(part, sample);
     if (inside && distance > boundary_reach) {
       deep.push_back(sample);
     } else if (inside) {
       along_ring[position.ring].push_back(position.arc_length);
     } else {
-      beyond.push_back(sample);
-      beyond_positions.push_back(position);
-      beyond_distances.push_back(distance);
+      beyond.push_back({sample, position, distance});
     }
   }
-  std::vector<std::vector<Point2>> patches =
-      excursionPatches(&beyond, &beyond_positions, &beyond_distances);
-  for (const RingPosition& position : beyond_positions) {
-    along_ring[position.ring].push_back(position.arc_length);
+  std::vector<std::vector<Point2>> patches = excursionPatches(&beyond);
+  for (const BoundarySample& sample : beyond) {
+    along_ring[sample.position.ring].push_back(sample.position.arc_length);
   }
   // Along each ring: the stretches that hold the region's boundary points, split where
   // they lie far apart (the arc lengths are circular: the largest gap may wrap).
@@ -248,8 +243,7 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::patchesFor(
 }
 
 std::vector<std::vector<Point2>> UnseenAreaRepair::excursionPatches(
-    std::vector<Point2>* beyond, std::vector<RingPosition>* positions,
-    std::vector<double>* distances) const {
+    std::vector<BoundarySample>* beyond) const {
   struct Excursion {
     Point2 corner;
     Point2 apex;
@@ -258,64 +252,57 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::excursionPatches(
   // The excursions from the corners of the edges beside the samples.
   std::vector<Excursion> candidates;
   std::set<std::pair<std::size_t, std::size_t>> tried;  // ring, vertex
-  for (const RingPosition& position : *positions) {
-    const Ring& ring = rings_[position.ring];
+  for (const BoundarySample& sample : *beyond) {
+    const Ring& ring = rings_[sample.position.ring];
     const std::size_t n = ring.size();
-    for (const std::size_t v : {position.edge, (position.edge + 1) % n}) {
-      if (!tried.insert({position.ring, v}).second) continue;
+    for (const std::size_t v : {sample.position.edge, (sample.position.edge + 1) % n}) {
+      if (!tried.insert({sample.position.ring, v}).second) continue;
       if (const std::optional<Point2> apex =
               excursions_.apex(ring[(v + n - 1) % n], ring[v], ring[(v + 1) % n])) {
         candidates.push_back({ring[v], *apex});
       }
     }
   }
-  // And toward the samples farthest from the boundary that no excursion passes near (a
-  // slot's mouth, where the boundary runs straight past the exact offset's bulge).
-  const double boundary_reach = kBoundaryReachShare * sensor_.width();
-  for (int k = 0; k < kDeepExcursions; ++k) {
-    std::size_t deepest = beyond->size();
-    double depth = boundary_reach;
-    for (std::size_t i = 0; i < beyond->size(); ++i) {
-      double nearest = (*distances)[i];
-      for (const Excursion& excursion : candidates) {
-        nearest =
-            std::min(nearest, distanceToSegment((*beyond)[i], excursion.corner, excursion.apex));
-      }
-      if (nearest > depth) {
-        depth = nearest;
-        deepest = i;
-      }
-    }
-    if (deepest == beyond->size()) break;
-    const Point2 from = pointAt((*positions)[deepest].ring, (*positions)[deepest].arc_length);
-    const std::optional<Point2> apex = excursions_.toward(from, (*beyond)[deepest] - from);
-    if (!apex) break;
-    candidates.push_back({from, *apex});
-  }
-  if (candidates.empty()) return {};
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < beyond->size(); ++i) {
+  // The excursion that passes nearest to a sample, nearer than the boundary; none else.
+  const auto nearestTo = [&](const BoundarySample& sample) {
     Excursion* nearest = nullptr;
-    double nearest_distance = (*distances)[i];
+    double nearest_distance = sample.distance;
     for (Excursion& excursion : candidates) {
-      const double d = distanceToSegment((*beyond)[i], excursion.corner, excursion.apex);
+      const double d = distanceToSegment(sample.point, excursion.corner, excursion.apex);
       if (d < nearest_distance) {
         nearest = &excursion;
         nearest_distance = d;
       }
     }
-    if (nearest != nullptr) {
-      nearest->sees = true;
-      continue;
+    return std::make_pair(nearest, nearest_distance);
+  };
+  // And toward the samples farthest from the boundary that no excursion passes near (a
+  // slot's mouth, where the boundary runs straight past the exact offset's bulge).
+  const double boundary_reach = kBoundaryReachShare * sensor_.width();
+  for (int k = 0; k < kDeepExcursions; ++k) {
+    const BoundarySample* deepest = nullptr;
+    double depth = boundary_reach;
+    for (const BoundarySample& sample : *beyond) {
+      const double nearest = nearestTo(sample).second;
+      if (nearest > depth) {
+        depth = nearest;
+        deepest = &sample;
+      }
     }
-    (*beyond)[kept] = (*beyond)[i];
-    (*positions)[kept] = (*positions)[i];
-    (*distances)[kept] = (*distances)[i];
-    ++kept;
+    if (deepest == nullptr) break;
+    const Point2 from = pointAt(deepest->position.ring, deepest->position.arc_length);
+    const std::optional<Point2> apex = excursions_.toward(from, deepest->point - from);
+    if (!apex) break;
+    candidates.push_back({from, *apex});
   }
-  beyond->resize(kept);
-  positions->resize(kept);
-  distances->resize(kept);
+  // The samples an excursion sees leave `beyond`.
+  beyond->erase(std::remove_if(beyond->begin(), beyond->end(),
+                               [&](const BoundarySample& sample) {
+                                 Excursion* nearest = nearestTo(sample).first;
+                                 if (nearest != nullptr) nearest->sees = true;
+                                 return nearest != nullptr;
+                               }),
+                beyond->end());
   std::vector<std::vector<Point2>> patches;
   for (const Excursion& excursion : candidates) {
     if (excursion.sees) patches.push_back({excursion.corner, excursion.apex, excursion.corner});

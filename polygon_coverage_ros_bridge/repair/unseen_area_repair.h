@@ -53,10 +53,10 @@ class UnseenAreaRepair {
                    const std::vector<PolygonWithHoles>* coverage_region = nullptr);
 
   /// The repair with the raster that measuringRaster() built (so that a planner can build
-  /// it while its earlier stages run); `planned_parts` are then only where the patches run
-  /// (a planner passes its route area, the parts joined through their gaps).
+  /// it while its earlier stages run); `patch_areas` are where the patches run (a planner
+  /// passes its route area: the planned parts joined through their gaps).
   UnseenAreaRepair(CoverageEvaluator measuring_raster, const PolygonWithHoles& free_area,
-                   double wall_distance, std::vector<PolygonWithHoles> planned_parts,
+                   double wall_distance, std::vector<PolygonWithHoles> patch_areas,
                    const FrustumSensor& sensor, const VisibilityGraph& graph,
                    const SegmentCost& segment_cost);
 
@@ -111,14 +111,18 @@ class UnseenAreaRepair {
   /// The patches that see the region of which `samples` are cells.
   std::vector<std::vector<Point2>> patchesFor(const std::vector<Point2>& samples) const;
 
-  /// Out of the samples beyond the planned parts (`positions` their nearest boundary
-  /// points, `distances` to them), those that an excursion from a corner of the edges they
-  /// lie beside passes nearer than the boundary: they are removed from `beyond` (with their
-  /// positions and distances), and the excursions that see them are returned as patches
-  /// out and back.
-  std::vector<std::vector<Point2>> excursionPatches(std::vector<Point2>* beyond,
-                                                    std::vector<RingPosition>* positions,
-                                                    std::vector<double>* distances) const;
+  /// A sample of an unseen region with its nearest boundary point and the distance to it.
+  struct BoundarySample {
+    Point2 point;
+    RingPosition position;
+    double distance = 0.0;
+  };
+
+  /// Out of the samples beyond the patch areas, those that an excursion (from a corner of
+  /// the edges they lie beside, or toward the farthest of them) passes nearer than the
+  /// boundary: they are removed from `beyond`, and the excursions that see them are
+  /// returned as patches out and back.
+  std::vector<std::vector<Point2>> excursionPatches(std::vector<BoundarySample>* beyond) const;
 
   /// The stretch of ring `ring` from `from` to `to` (arc lengths, forward, may wrap).
   std::vector<Point2> boundaryWalk(std::size_t ring, double from, double to) const;
@@ -144,7 +148,7 @@ class UnseenAreaRepair {
   /// least twice (by another step of the path too).
   bool legNeeded(const SeenArea& seen, const Point2& a, const Point2& b) const;
 
-  std::vector<PolygonWithHoles> planned_parts_;
+  std::vector<PolygonWithHoles> patch_areas_;
   FrustumSensor sensor_;
   /// The coverage report's raster with the reachable area's rim measured exactly (only
   /// its part inside the coverage region, if one was given).
