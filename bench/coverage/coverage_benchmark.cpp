@@ -42,7 +42,7 @@ void benchmark(const char* name, const kinematic_coverage::core::Mission& missio
                const kinematic_coverage::core::PlannedMission& planned, int runs) {
   using namespace kinematic_coverage::core;
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, planned.plan.offset_parts))
+      TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, planned.plan.exact_offset_parts))
           .generate(planned.plan.waypoints, planned.free_area);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
@@ -72,7 +72,7 @@ void benchmark(const char* name, const kinematic_coverage::core::Mission& missio
   }
   // The tool's own call, once, to check that the stages above are what it measures.
   const TrajectoryCoverage tool = measureTrajectoryCoverage(
-      planned.free_area, planned.plan.offset_parts, mission.parameters, poses);
+      planned.free_area, planned.plan.exact_offset_parts, mission.parameters, poses);
   if (tool.report.coverage_percent != report.coverage_percent) {
     std::fprintf(stderr, "coverage_benchmark: the stages disagree with the tool\n");
     std::exit(1);

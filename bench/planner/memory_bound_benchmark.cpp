@@ -191,7 +191,8 @@ int run(const BenchmarkOptions& options) {
   if (options.smoothing) {
     const auto started = std::chrono::steady_clock::now();
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, planned.plan.offset_parts))
+        TrajectoryGenerator(
+            trajectoryOptionsOf(mission.parameters, planned.plan.exact_offset_parts))
             .generate(planned.plan.waypoints, planned.free_area);
     const double seconds = secondsSince(started);
     std::printf("| smoothing | %.3f | %.1f | %zu primitives, %zu poses, %.1f m, %.0f s |\n",

@@ -72,8 +72,8 @@ std::vector<StrategyFigures> compare(const Mission& mission) {
     std::vector<Pose2> poses;
     poses.reserve(trajectory.poses.size());
     for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
-    const TrajectoryCoverage coverage =
-        measureTrajectoryCoverage(planned.free_area, planned.plan.offset_parts, parameters, poses);
+    const TrajectoryCoverage coverage = measureTrajectoryCoverage(
+        planned.free_area, planned.plan.exact_offset_parts, parameters, poses);
     figures.push_back({trajectory.statistics.turns_smoothed, trajectory.statistics.turns_total,
                        trajectory.traversal_time_s, trajectory.trajectory_length_m,
                        coverage.report.coverage_loss_percent});

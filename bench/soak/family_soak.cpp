@@ -175,7 +175,7 @@ std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
                                          TrajectoryFigures* figures) {
   std::vector<std::string> failures;
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(trajectoryOptionsOf(parameters, plan.offset_parts))
+      TrajectoryGenerator(trajectoryOptionsOf(parameters, plan.exact_offset_parts))
           .generate(plan.waypoints, free_area);
   figures->clearance_m = trajectory.min_obstacle_clearance_m;
   figures->traversal_time_s = trajectory.traversal_time_s;
@@ -213,7 +213,7 @@ std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
   }
   if (!failures.empty() || !with_oracle) return failures;
   const TrajectoryCoverage reported =
-      measureTrajectoryCoverage(free_area, plan.offset_parts, parameters, poses);
+      measureTrajectoryCoverage(free_area, plan.exact_offset_parts, parameters, poses);
   // The oracle measures the reachable area that the report does: the exact offset around
   // the planner's mitred parts.
   testing::ExactCoverage exact;

@@ -126,7 +126,7 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
         CoveragePlanner(mission.parameters).plan(mission.polygon, mission.start, mission.goal);
     planning_times_s.push_back(secondsSince(started));
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, plan.offset_parts))
+        TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, plan.exact_offset_parts))
             .generate(plan.waypoints, mission.polygon);
     if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
       return fail("collision: min_obstacle_clearance_m " +
@@ -137,7 +137,7 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
     PlannerParameters unsmoothed = mission.parameters;
     unsmoothed.smoothing = false;
     const double sharp_clearance =
-        TrajectoryGenerator(trajectoryOptionsOf(unsmoothed, plan.offset_parts))
+        TrajectoryGenerator(trajectoryOptionsOf(unsmoothed, plan.exact_offset_parts))
             .generate(plan.waypoints, mission.polygon)
             .min_obstacle_clearance_m;
     const double least = std::min(mission.parameters.wall_distance, sharp_clearance);

@@ -272,8 +272,12 @@ std::vector<PolygonWithHoles> exactOffsetParts(const PolygonWithHoles& free_area
                                                double wall_distance,
                                                const std::vector<PolygonWithHoles>& offset_parts) {
   if (wall_distance == 0.0 || offset_parts.empty()) return offset_parts;
-  std::vector<PolygonWithHoles> round =
-      WallOffset(free_area).at(wall_distance, OffsetCorners::kRound).parts;
+  return roundPartsHolding(WallOffset(free_area).at(wall_distance, OffsetCorners::kRound).parts,
+                           offset_parts);
+}
+
+std::vector<PolygonWithHoles> roundPartsHolding(std::vector<PolygonWithHoles> round,
+                                                const std::vector<PolygonWithHoles>& offset_parts) {
   // A mitred part's vertices lie inside or on its round part; a vertex where two round parts
   // touch lies on both, so each mitred part goes to the round part holding most of them.
   std::vector<bool> holds(round.size(), false);

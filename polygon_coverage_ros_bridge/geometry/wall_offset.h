@@ -102,4 +102,9 @@ std::vector<PolygonWithHoles> exactOffsetParts(const PolygonWithHoles& free_area
                                                double wall_distance,
                                                const std::vector<PolygonWithHoles>& offset_parts);
 
+/// exactOffsetParts from the round offset (`round`: the kRound offset of the free area by
+/// the wall distance), so that one round offset serves several sets of mitred parts.
+std::vector<PolygonWithHoles> roundPartsHolding(std::vector<PolygonWithHoles> round,
+                                                const std::vector<PolygonWithHoles>& offset_parts);
+
 }  // namespace kinematic_coverage::core

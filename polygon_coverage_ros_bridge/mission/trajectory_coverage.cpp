@@ -4,22 +4,20 @@
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
-#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 
 namespace kinematic_coverage::core {
 
 TrajectoryCoverage measureTrajectoryCoverage(const PolygonWithHoles& free_area,
-                                             const std::vector<PolygonWithHoles>& offset_parts,
+                                             const std::vector<PolygonWithHoles>& exact_parts,
                                              const PlannerParameters& parameters,
                                              const std::vector<Pose2>& poses,
                                              const std::optional<std::vector<Pose2>>& reference) {
   const auto start = std::chrono::steady_clock::now();
   const FrustumSensor sensor = sensorOf(parameters);
-  const CoverageEvaluator evaluator(
-      free_area, exactOffsetParts(free_area, parameters.wall_distance, offset_parts), sensor,
-      reportingResolution(), kReportingGridAngle);
+  const CoverageEvaluator evaluator(free_area, exact_parts, sensor, reportingResolution(),
+                                    kReportingGridAngle);
   TrajectoryCoverage coverage;
   const SeenArea seen_reported = evaluator.seeTrajectory(poses);
   coverage.report = evaluator.report(seen_reported);

@@ -31,16 +31,16 @@ constexpr double kReachableCoverageBarPercent = 99.9;
 /// mission's cleaned free area, with the sensor that `parameters` describe, on the raster
 /// of reportingResolution() turned by kReportingGridAngle: the one measurement behind
 /// `plan`'s figures for its own trajectory and `evaluate`'s for any trajectory file, so
-/// that both agree on the same poses. `offset_parts` (the mitred parts of the offset free
-/// area that the robot reaches) only shape the reachable area: the parts of the exact offset
-/// holding them (exactOffsetParts), every point at least the wall distance from the walls. The
+/// that both agree on the same poses. `exact_parts` (the parts of the exact offset that the
+/// robot reaches, exactOffsetParts: a plan's exact_offset_parts) only shape the reachable
+/// area, every point at least the wall distance from the walls grown by half a footprint. The
 /// heatmap is the turned raster's visits read at the cell centres of a grid along the map's axes
 /// (cells of 5 cm or coarser), as plots draw it. With `reference` poses (the unsmoothed trajectory
 /// of the same waypoints), also what `poses` fail to see of what they see, on the same raster.
 /// Throws InvalidInputError for a non-finite pose, an invalid sensor or an offset free area that
 /// covers no cell.
 TrajectoryCoverage measureTrajectoryCoverage(
-    const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& offset_parts,
+    const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& exact_parts,
     const PlannerParameters& parameters, const std::vector<Pose2>& poses,
     const std::optional<std::vector<Pose2>>& reference = std::nullopt);
 

@@ -125,9 +125,9 @@ TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters) {
 }
 
 TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters,
-                                      const std::vector<PolygonWithHoles>& offset_parts) {
+                                      const std::vector<PolygonWithHoles>& exact_offset_parts) {
   TrajectoryOptions options = trajectoryOptionsOf(parameters);
-  options.global.offset_parts = offset_parts;
+  options.global.exact_offset_parts = exact_offset_parts;
   return options;
 }
 

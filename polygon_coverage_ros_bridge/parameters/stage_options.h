@@ -61,10 +61,10 @@ GlobalSmoothingOptions globalSmoothingOptionsOf(const PlannerParameters& paramet
 /// and the vehicle limits.
 TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters);
 
-/// As above, for a plan's waypoints: coverage-safe smoothing takes the plan's offset free
-/// area (`offset_parts`) instead of offsetting the free area again.
+/// As above, for a plan's waypoints: coverage-safe smoothing takes the plan's exact offset
+/// free area (`exact_offset_parts`) instead of offsetting the free area again.
 TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters,
-                                      const std::vector<PolygonWithHoles>& offset_parts);
+                                      const std::vector<PolygonWithHoles>& exact_offset_parts);
 
 /// The simulated robot: the vehicle limits, the controllers' gains and tolerances, the
 /// current, sim_dt and sim_time_limit.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <future>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -729,17 +730,36 @@ std::string pathSummary(const std::vector<Point2>& waypoints, const SegmentCost&
   return summary.str();
 }
 
-/// The repair's raster (UnseenAreaRepair::measuringRaster) on the exact offset around the
-/// planned parts, which the coverage report measures too; it depends only on the areas:
-/// built on its own thread while the stages from simplify to path run (none without
-/// coverage_repair). The arguments must outlive the future.
-std::future<CoverageEvaluator> measuringRasterInBackground(
+/// The exact offset around the plan's parts, against which coverage is measured, and the
+/// repair's raster (UnseenAreaRepair::measuringRaster) on the exact offset around the
+/// planned parts (none without coverage_repair), from one round offset.
+struct ExactOffsetStage {
+  std::vector<PolygonWithHoles> exact_offset_parts;
+  std::optional<CoverageEvaluator> measuring_raster;
+};
+
+/// ExactOffsetStage, which depends only on the areas: computed on its own thread while the
+/// stages from simplify to path run. The arguments must outlive the future.
+std::future<ExactOffsetStage> exactOffsetInBackground(
     const PlanningRun& run, const OffsetStage& offset, const FrustumSensor& sensor,
     const std::vector<PolygonWithHoles>* coverage_region) {
-  if (!run.parameters.coverage_repair) return {};
-  return std::async(std::launch::async, [&run, &offset, &sensor, coverage_region] {
-    return UnseenAreaRepair::measuringRaster(run.free_area, run.parameters.wall_distance,
-                                             offset.planned_parts, sensor, coverage_region);
+  return std::async(std::launch::async, [&run, &offset, &sensor, coverage_region,
+                                         offset_parts = run.plan.offset_parts] {
+    const double wall_distance = run.parameters.wall_distance;
+    std::vector<PolygonWithHoles> round;
+    if (wall_distance > 0.0) {
+      round = WallOffset(run.free_area).at(wall_distance, OffsetCorners::kRound).parts;
+    }
+    const auto exact = [&](const std::vector<PolygonWithHoles>& parts) {
+      return wall_distance > 0.0 && !parts.empty() ? roundPartsHolding(round, parts) : parts;
+    };
+    ExactOffsetStage stage;
+    stage.exact_offset_parts = exact(offset_parts);
+    if (run.parameters.coverage_repair) {
+      stage.measuring_raster = UnseenAreaRepair::measuringRaster(
+          run.free_area, exact(offset.planned_parts), sensor, coverage_region);
+    }
+    return stage;
   });
 }
 
@@ -836,8 +856,8 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   try {
     const FrustumSensor sensor = sensorOf(parameters_);
     // Joined before `sensor` goes out of scope, even when a stage throws.
-    std::future<CoverageEvaluator> measuring_raster =
-        measuringRasterInBackground(run, offset, sensor, coverage_region);
+    std::future<ExactOffsetStage> exact_offset =
+        exactOffsetInBackground(run, offset, sensor, coverage_region);
     const double simplification = boundarySimplificationOf(parameters_);
     const std::vector<PolygonWithHoles> simplified = simplifyStage(run, parts, simplification);
     const DecomposedParts decomposed{parts, simplified};
@@ -875,11 +895,14 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     const SegmentCost time_cost(CostFunction::kTime, vehicleLimitsOf(parameters_));
     run.stage("path", t, pathSummary(route.waypoints, time_cost));
 
-    if (parameters_.coverage_repair) {
+    ExactOffsetStage exact = exact_offset.get();
+    plan.exact_offset_parts = std::move(exact.exact_offset_parts);
+    if (exact.measuring_raster) {
       t = Clock::now();
       failing_stage = "repair";
-      const std::string repaired = repairStage(run, offset, measuring_raster.get(), sensor, graph,
-                                               segment_cost, jog_removal, max_jog_shift, &route);
+      const std::string repaired =
+          repairStage(run, offset, std::move(*exact.measuring_raster), sensor, graph, segment_cost,
+                      jog_removal, max_jog_shift, &route);
       run.stage("repair", t, repaired + pathSummary(route.waypoints, time_cost));
     }
     plan.waypoints = legHeadingPoses(route.waypoints);

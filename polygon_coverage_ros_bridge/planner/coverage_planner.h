@@ -38,6 +38,10 @@ struct CoveragePlan {
   /// reachable from the start through gaps with at least gap_clearance. The reachable area
   /// is grown from them.
   std::vector<PolygonWithHoles> offset_parts;
+  /// The exact offset around offset_parts (exactOffsetParts): every point at least
+  /// wall_distance from the walls in the parts reached, from which the coverage report grows
+  /// the reachable area.
+  std::vector<PolygonWithHoles> exact_offset_parts;
   /// The parts of the offset free area that are not entered: beyond gaps narrower than
   /// gap_clearance from the start (offset_parts `all`). They count as unreachable.
   std::vector<PolygonWithHoles> unreachable_parts;

@@ -54,4 +54,12 @@ std::vector<PolygonWithHoles> reachableOffsetParts(const PolygonWithHoles& free_
   return reachable;
 }
 
+ReachableOffset reachableOffset(const PolygonWithHoles& free_area,
+                                const PlannerParameters& parameters, const Point2& start) {
+  ReachableOffset offset;
+  offset.parts = reachableOffsetParts(free_area, parameters, start);
+  offset.exact_parts = exactOffsetParts(free_area, parameters.wall_distance, offset.parts);
+  return offset;
+}
+
 }  // namespace kinematic_coverage::core

@@ -32,4 +32,16 @@ std::vector<PolygonWithHoles> reachableOffsetParts(const PolygonWithHoles& free_
                                                    const PlannerParameters& parameters,
                                                    const Point2& start);
 
+/// The reachable parts (reachableOffsetParts) and the exact offset around them
+/// (exactOffsetParts), against which coverage is measured: a plan's offset_parts and
+/// exact_offset_parts.
+struct ReachableOffset {
+  std::vector<PolygonWithHoles> parts;
+  std::vector<PolygonWithHoles> exact_parts;
+};
+
+/// ReachableOffset of a cleaned `free_area` for a robot starting at `start`.
+ReachableOffset reachableOffset(const PolygonWithHoles& free_area,
+                                const PlannerParameters& parameters, const Point2& start);
+
 }  // namespace kinematic_coverage::core

@@ -66,15 +66,15 @@ UnseenAreaRepair::UnseenAreaRepair(const PolygonWithHoles& free_area, double wal
                                    const SegmentCost& segment_cost,
                                    const std::vector<PolygonWithHoles>* coverage_region)
     : UnseenAreaRepair(
-          measuringRaster(free_area, wall_distance, planned_parts, sensor, coverage_region),
+          measuringRaster(free_area, exactOffsetParts(free_area, wall_distance, planned_parts),
+                          sensor, coverage_region),
           free_area, wall_distance, planned_parts, sensor, graph, segment_cost) {}
 
 CoverageEvaluator UnseenAreaRepair::measuringRaster(
-    const PolygonWithHoles& free_area, double wall_distance,
-    const std::vector<PolygonWithHoles>& planned_parts, const FrustumSensor& sensor,
-    const std::vector<PolygonWithHoles>* coverage_region) {
-  CoverageEvaluator evaluator(free_area, exactOffsetParts(free_area, wall_distance, planned_parts),
-                              sensor, reportingResolution(), kReportingGridAngle);
+    const PolygonWithHoles& free_area, const std::vector<PolygonWithHoles>& exact_parts,
+    const FrustumSensor& sensor, const std::vector<PolygonWithHoles>* coverage_region) {
+  CoverageEvaluator evaluator(free_area, exact_parts, sensor, reportingResolution(),
+                              kReportingGridAngle);
   if (coverage_region != nullptr) evaluator.restrictReachableArea(*coverage_region);
   return evaluator;
 }

@@ -61,10 +61,10 @@ class UnseenAreaRepair {
                    const SegmentCost& segment_cost);
 
   /// The raster on which the repair measures a path: the coverage report's, with the
-  /// reachable area of `free_area` and the exact offset by `wall_distance` around
-  /// `planned_parts` (inside `coverage_region`, if given).
-  static CoverageEvaluator measuringRaster(const PolygonWithHoles& free_area, double wall_distance,
-                                           const std::vector<PolygonWithHoles>& planned_parts,
+  /// reachable area of `free_area` grown from `exact_parts` (the exact offset around the
+  /// planned parts, exactOffsetParts), inside `coverage_region`, if given.
+  static CoverageEvaluator measuringRaster(const PolygonWithHoles& free_area,
+                                           const std::vector<PolygonWithHoles>& exact_parts,
                                            const FrustumSensor& sensor,
                                            const std::vector<PolygonWithHoles>* coverage_region);
 

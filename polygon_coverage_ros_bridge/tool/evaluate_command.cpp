@@ -7,7 +7,6 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
@@ -74,15 +73,15 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   stage_start = std::chrono::steady_clock::now();
   // The parts that a robot starting where the trajectory starts reaches, as `plan` counts
   // them: a part beyond a gap narrower than gap_clearance counts as unreachable.
-  const OffsetFreeArea offset = {
-      reachableOffsetParts(cleaned.free_area, mission.parameters,
-                           poses.empty() ? mission.start : Point2(poses.front().position()))};
+  const ReachableOffset offset =
+      reachableOffset(cleaned.free_area, mission.parameters,
+                      poses.empty() ? mission.start : Point2(poses.front().position()));
   out << "offset: offset free area " << area(offset.parts) << " m^2 in " << offset.parts.size()
       << (offset.parts.size() == 1 ? " part (" : " parts (")
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
   const TrajectoryCoverage coverage =
-      measureTrajectoryCoverage(cleaned.free_area, offset.parts, mission.parameters, poses);
+      measureTrajectoryCoverage(cleaned.free_area, offset.exact_parts, mission.parameters, poses);
   out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
       << ")" << std::endl;
   const double evaluation_time_s = secondsSince(evaluation_start);

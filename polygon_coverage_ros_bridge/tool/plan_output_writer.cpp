@@ -37,8 +37,9 @@ GeneratedTrajectory generateTrajectory(const PlanOutputRequest& request, std::os
   const auto stage_start = std::chrono::steady_clock::now();
   GeneratedTrajectory trajectory;
   try {
-    trajectory = TrajectoryGenerator(trajectoryOptionsOf(parameters, request.plan->offset_parts))
-                     .generate(request.plan->waypoints, *request.free_area);
+    trajectory =
+        TrajectoryGenerator(trajectoryOptionsOf(parameters, request.plan->exact_offset_parts))
+            .generate(request.plan->waypoints, *request.free_area);
   } catch (const SizeLimitError&) {
     throw;
   } catch (const InvalidInputError& error) {
@@ -74,7 +75,7 @@ std::optional<std::vector<Pose2>> unsmoothedPoses(const PlanOutputRequest& reque
   unsmoothed.smoothing = false;
   try {
     return writtenPoses(
-        TrajectoryGenerator(trajectoryOptionsOf(unsmoothed, request.plan->offset_parts))
+        TrajectoryGenerator(trajectoryOptionsOf(unsmoothed, request.plan->exact_offset_parts))
             .generate(request.plan->waypoints, *request.free_area)
             .poses);
   } catch (const SizeLimitError&) {
@@ -92,7 +93,7 @@ TrajectoryCoverage measureCoverage(const PlanOutputRequest& request,
                                    std::ostream& out) {
   TrajectoryCoverage coverage;
   try {
-    coverage = measureTrajectoryCoverage(*request.free_area, request.plan->offset_parts,
+    coverage = measureTrajectoryCoverage(*request.free_area, request.plan->exact_offset_parts,
                                          *request.parameters, poses, reference);
   } catch (const SizeLimitError&) {
     throw;
@@ -222,7 +223,7 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
       all_unsmoothed = *request.visited;
       all_unsmoothed->insert(all_unsmoothed->end(), unsmoothed->begin(), unsmoothed->end());
     }
-    combined = measureTrajectoryCoverage(*request.free_area, request.plan->offset_parts,
+    combined = measureTrajectoryCoverage(*request.free_area, request.plan->exact_offset_parts,
                                          *request.parameters, all, all_unsmoothed);
     out << "combined coverage: visited and new trajectory: " << coverageSummary(*combined) << " ("
         << formatSeconds(combined->duration_s) << ")" << std::endl;

@@ -10,7 +10,6 @@
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/base/text_file_writer.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
@@ -173,7 +172,7 @@ TrackingErrorPlotData errorsPlot(const SimulationResult& simulation) {
 void writeSimulationFigures(const std::filesystem::path& dir, const std::string& title,
                             const SimulationResult& simulation, const TrajectoryCoverage& coverage,
                             const std::vector<Pose2>& desired, const CleanedPolygon& cleaned,
-                            const OffsetFreeArea& offset, double sim_dt) {
+                            const ReachableOffset& offset, double sim_dt) {
   CoveragePlotData plot = simulationPlot(simulation, coverage, desired, actualPoses(simulation));
   CoveragePlotData poses = posesPlot(simulation, desired, sim_dt);
   for (CoveragePlotData* figure : {&plot, &poses}) {
@@ -238,9 +237,9 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   stage_start = std::chrono::steady_clock::now();
   const CleanedPolygon cleaned =
       FreeAreaBuilder(boundarySimplificationOf(mission.parameters)).build(mission.polygon).cleaned;
-  const OffsetFreeArea offset = {
-      reachableOffsetParts(cleaned.free_area, mission.parameters,
-                           desired.empty() ? mission.start : Point2(desired.front().position()))};
+  const ReachableOffset offset =
+      reachableOffset(cleaned.free_area, mission.parameters,
+                      desired.empty() ? mission.start : Point2(desired.front().position()));
   out << "area: free area " << area(cleaned.free_area) << " m^2, offset free area "
       << area(offset.parts) << " m^2 (" << formatSeconds(secondsSince(stage_start)) << ")"
       << std::endl;
@@ -262,7 +261,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
 
   const std::vector<Pose2> actual = actualPoses(simulation);
   const TrajectoryCoverage coverage =
-      measureTrajectoryCoverage(cleaned.free_area, offset.parts, mission.parameters, actual);
+      measureTrajectoryCoverage(cleaned.free_area, offset.exact_parts, mission.parameters, actual);
   out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
       << ")" << std::endl;
 

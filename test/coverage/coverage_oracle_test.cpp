@@ -262,8 +262,8 @@ Comparison compare(const Mission& mission) {
   Comparison c;
   c.poses = poses.size();
   c.warnings = planned.warnings.size();
-  const TrajectoryCoverage reported =
-      measureTrajectoryCoverage(planned.free_area, planned.plan.offset_parts, parameters, poses);
+  const TrajectoryCoverage reported = measureTrajectoryCoverage(
+      planned.free_area, planned.plan.exact_offset_parts, parameters, poses);
   c.raster_coverage_percent = reported.report.coverage_percent;
   c.raster_reachable_percent = reported.report.reachable_coverage_percent;
   // The same raster again, for the cell counts that turn the reachable share into a share

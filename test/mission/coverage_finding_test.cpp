@@ -39,7 +39,7 @@ MissionTrajectory planTrajectory(const std::string& mission_name, bool smoothing
 }
 
 TrajectoryCoverage coverageOf(const MissionTrajectory& run) {
-  return measureTrajectoryCoverage(run.planned.free_area, run.planned.plan.offset_parts,
+  return measureTrajectoryCoverage(run.planned.free_area, run.planned.plan.exact_offset_parts,
                                    run.mission.parameters, run.poses);
 }
 
@@ -101,9 +101,9 @@ TEST(CoverageFinding, MeasuresAndWarnsOfWhatSmoothingLosesOfTheUnsmoothedView) {
   const MissionTrajectory smoothed =
       planTrajectory("parallelogram_60.yaml", true, {"smoothing_strategy=local"});
   const MissionTrajectory unsmoothed = planTrajectory("parallelogram_60.yaml", false);
-  const TrajectoryCoverage against =
-      measureTrajectoryCoverage(smoothed.planned.free_area, smoothed.planned.plan.offset_parts,
-                                smoothed.mission.parameters, smoothed.poses, unsmoothed.poses);
+  const TrajectoryCoverage against = measureTrajectoryCoverage(
+      smoothed.planned.free_area, smoothed.planned.plan.exact_offset_parts,
+      smoothed.mission.parameters, smoothed.poses, unsmoothed.poses);
   ASSERT_TRUE(against.lost_to_reference.has_value());
   const LostArea& lost = *against.lost_to_reference;
   EXPECT_GE(lost.percent_of_free_area, against.report.coverage_loss_percent -
@@ -114,9 +114,9 @@ TEST(CoverageFinding, MeasuresAndWarnsOfWhatSmoothingLosesOfTheUnsmoothedView) {
   ASSERT_TRUE(warning.has_value());
   EXPECT_EQ(warning->rfind("smoothing loses ", 0), 0u) << *warning;
 
-  const TrajectoryCoverage itself =
-      measureTrajectoryCoverage(unsmoothed.planned.free_area, unsmoothed.planned.plan.offset_parts,
-                                unsmoothed.mission.parameters, unsmoothed.poses, unsmoothed.poses);
+  const TrajectoryCoverage itself = measureTrajectoryCoverage(
+      unsmoothed.planned.free_area, unsmoothed.planned.plan.exact_offset_parts,
+      unsmoothed.mission.parameters, unsmoothed.poses, unsmoothed.poses);
   ASSERT_TRUE(itself.lost_to_reference.has_value());
   EXPECT_EQ(itself.lost_to_reference->area_m2, 0.0);
   EXPECT_FALSE(smoothingLossWarning(itself).has_value());

@@ -38,7 +38,8 @@ Measured measure(const PlannedMission& planned, const PlannerParameters& paramet
                                              .generate(planned.plan.waypoints, planned.free_area);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
-  return {measureTrajectoryCoverage(planned.free_area, planned.plan.offset_parts, parameters, poses)
+  return {measureTrajectoryCoverage(planned.free_area, planned.plan.exact_offset_parts, parameters,
+                                    poses)
               .report.reachable_coverage_percent,
           trajectory.min_obstacle_clearance_m};
 }

@@ -74,7 +74,7 @@ TEST(CoveragePlanner, EveryPartOfASplitOffsetAreaIsPlannedAndSeen) {
     std::vector<Pose2> poses;
     for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
     const TrajectoryCoverage coverage =
-        measureTrajectoryCoverage(kThreeRooms, plan.offset_parts, parameters, poses);
+        measureTrajectoryCoverage(kThreeRooms, plan.exact_offset_parts, parameters, poses);
     EXPECT_GE(coverage.report.reachable_coverage_percent, 99.0) << "smoothing " << smoothing;
     // The transits keep 86 % of the straits' clearance (0.6 m and 0.75 m); the smoother
     // (whose contract is no collision) may turn into a strait's mouth closer to its corner
@@ -133,7 +133,7 @@ TEST(CoveragePlanner, AStraitOfTwiceTheWallDistanceIsPassedKeepingTheWallDistanc
   for (const bool smoothing : {false, true}) {
     parameters.smoothing = smoothing;
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(trajectoryOptionsOf(parameters, plan.offset_parts))
+        TrajectoryGenerator(trajectoryOptionsOf(parameters, plan.exact_offset_parts))
             .generate(plan.waypoints, free_area);
     EXPECT_TRUE(keepsClearance(trajectory.min_obstacle_clearance_m, 1.0))
         << "smoothing " << smoothing << ": " << trajectory.min_obstacle_clearance_m;
@@ -468,7 +468,7 @@ TEST(CoveragePlanner, JoinedCellsCoverANoisyShorelineInFewerCellsAndLessTime) {
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
   const TrajectoryCoverage coverage =
-      measureTrajectoryCoverage(map.mission.polygon, joined.offset_parts, parameters, poses);
+      measureTrajectoryCoverage(map.mission.polygon, joined.exact_offset_parts, parameters, poses);
   EXPECT_GE(coverage.report.reachable_coverage_percent, 99.9);
 }
 
@@ -478,11 +478,11 @@ double trajectoryReachableCoverage(const testing::HardMap& map, const PlannerPar
   PlannerParameters smoothed = parameters;
   smoothed.smoothing = true;
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(trajectoryOptionsOf(smoothed, plan.offset_parts))
+      TrajectoryGenerator(trajectoryOptionsOf(smoothed, plan.exact_offset_parts))
           .generate(plan.waypoints, map.mission.polygon);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
-  return measureTrajectoryCoverage(map.mission.polygon, plan.offset_parts, smoothed, poses)
+  return measureTrajectoryCoverage(map.mission.polygon, plan.exact_offset_parts, smoothed, poses)
       .report.reachable_coverage_percent;
 }
 

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "test/support/sampled_wall_distance.h"
@@ -41,6 +43,11 @@ void expectValidPlan(const PolygonWithHoles& free_area, const CoveragePlan& plan
   }
   EXPECT_NEAR(plan.path_length_m, length, 1e-6 * std::max(1.0, length));
   EXPECT_GE(plan.time_cost_s, plan.path_length_m / parameters.v_max - 1e-9);
+  // The exact offset the plan hands on is the one around its parts.
+  const std::vector<PolygonWithHoles> exact =
+      exactOffsetParts(free_area, parameters.wall_distance, plan.offset_parts);
+  EXPECT_EQ(plan.exact_offset_parts.size(), exact.size());
+  EXPECT_NEAR(area(plan.exact_offset_parts), area(exact), 1e-9 * std::max(1.0, area(exact)));
   const FrustumSensor sensor = sensorOf(parameters);
   const double covered = waypointPathReachableCoveragePercent(
       free_area, plan.offset_parts, sensor, waypoints, RasterResolution{0.0, 1e-3, 1'000'000});

@@ -40,9 +40,10 @@ RobotRun planAndSimulate(const std::string& mission_name,
   run.simulation = RobotSimulator(robotModelOf(mission.parameters)).simulate(poses);
   std::vector<Pose2> actual;
   for (const SimulationStep& step : run.simulation.steps) actual.push_back(step.pose);
-  run.coverage_percent = measureTrajectoryCoverage(planned.free_area, planned.plan.offset_parts,
-                                                   mission.parameters, actual)
-                             .report.coverage_percent;
+  run.coverage_percent =
+      measureTrajectoryCoverage(planned.free_area, planned.plan.exact_offset_parts,
+                                mission.parameters, actual)
+          .report.coverage_percent;
   return run;
 }
 

@@ -164,7 +164,7 @@ void SmoothTrajectoryGeneratorNode::generate() {
     // `coverage_tool plan` measures it, and said as loudly.
     const core::TrajectoryCoverage coverage = core::measureTrajectoryCoverage(
         *free_area_,
-        core::reachableOffsetParts(*free_area_, parameters, waypoints.front().position()),
+        core::reachableOffset(*free_area_, parameters, waypoints.front().position()).exact_parts,
         parameters, poses, unsmoothedPoses(parameters, waypoints, *free_area_));
     summary << "; " << core::coverageSummary(coverage);
     for (const std::optional<std::string>& warning :

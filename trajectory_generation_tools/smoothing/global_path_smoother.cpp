@@ -535,7 +535,7 @@ GlobalSmoothingPlan GlobalSmoothingProgramme::plan() const {
   plan.choice = solveGuarded(guarded, verdict, coverage_refused, &plan.time, nullptr);
   if (smoother_.options_.safe_sensor && !smoother_.options_.preserved_sensor) {
     PathCoverageCheck check(smoother_.free_area_, smoother_.options_.wall_distance,
-                            smoother_.options_.offset_parts, *smoother_.options_.safe_sensor,
+                            smoother_.options_.exact_offset_parts, *smoother_.options_.safe_sensor,
                             points_, smoother_.options_.coverage_safe_area);
     keepCoverageSafe(plan, check, guarded, verdict, coverage_refused);
   }

@@ -38,10 +38,10 @@ struct GlobalSmoothingOptions {
   /// Coverage-safe only: what is kept of what the sharp path sees, the reachable area or
   /// all of the free area (`coverage_safe_area`).
   CoverageSafeArea coverage_safe_area = CoverageSafeArea::kReachable;
-  /// Coverage-safe only: the offset free area of the free area and wall_distance
-  /// (computeOffsetFreeArea's parts), whose rim bounds the reachable area, when the caller
-  /// has it (a plan's `offset_parts`); empty: computed from the free area.
-  std::vector<PolygonWithHoles> offset_parts;
+  /// Coverage-safe only: the exact offset free area of the free area and wall_distance
+  /// (exactOffsetParts), whose rim bounds the reachable area, when the caller has it (a
+  /// plan's `exact_offset_parts`); empty: computed from the free area.
+  std::vector<PolygonWithHoles> exact_offset_parts;
   /// Bulb turns (BulbTurnSmoothing) among the candidates of corner pairs turning the same
   /// way. Coverage-safe smoothing sets it: a bulb turn drives along the boundary the lanes
   /// end at and sees the strip beyond their ends, which inner arcs cut. The `global` and

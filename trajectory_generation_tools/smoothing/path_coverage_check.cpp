@@ -138,7 +138,7 @@ std::size_t lostCellsIn(const CoverageRaster& raster, const CellWindow& window,
 }  // namespace
 
 PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
-                                     const std::vector<PolygonWithHoles>& offset_parts,
+                                     const std::vector<PolygonWithHoles>& exact_parts,
                                      const FrustumSensor& sensor,
                                      const std::vector<Point2>& waypoints, CoverageSafeArea guarded)
     : sensor_(sensor) {
@@ -172,11 +172,12 @@ PathCoverageCheck::PathCoverageCheck(const PolygonWithHoles& free_area, double w
   } else if (guarded == CoverageSafeArea::kFree) {
     reachable_ = raster_->rasterize(free_area);
   } else {
-    // The exact offset around the parts, as the coverage report measures the reachable area.
-    const std::vector<PolygonWithHoles> parts = exactOffsetParts(
-        free_area, wall_distance,
-        offset_parts.empty() ? computeOffsetFreeArea(free_area, wall_distance).parts
-                             : offset_parts);
+    // The exact offset, as the coverage report measures the reachable area.
+    const std::vector<PolygonWithHoles> parts =
+        exact_parts.empty()
+            ? exactOffsetParts(free_area, wall_distance,
+                               computeOffsetFreeArea(free_area, wall_distance).parts)
+            : exact_parts;
     reachable_ = reachableArea(*raster_, raster_->rasterize(free_area), raster_->rasterize(parts),
                                parts, sensor.length());
   }

@@ -40,13 +40,14 @@ class PathCoverageCheck {
   /// Measures what the sharp path through `waypoints` (straight legs, in-place rotations)
   /// sees of the reachable area of `free_area` (an empty hull: the unbounded plane, all of
   /// it reachable) with walls kept `wall_distance` away: the free cells whose centres lie
-  /// within half a footprint length of `offset_parts`, the offset free area's polygons
-  /// (empty: computeOffsetFreeArea's), measured as the coverage report measures them. With
+  /// within half a footprint length of `exact_parts`, the exact offset free area's polygons
+  /// (exactOffsetParts; empty: those of the whole offset free area), measured as the
+  /// coverage report measures them. With
   /// `guarded` kFree every free cell counts as reachable does below: the check then keeps
   /// all that the sharp path sees. Throws InvalidInputError for a non-finite coordinate or
   /// a negative or non-finite wall distance.
   PathCoverageCheck(const PolygonWithHoles& free_area, double wall_distance,
-                    const std::vector<PolygonWithHoles>& offset_parts, const FrustumSensor& sensor,
+                    const std::vector<PolygonWithHoles>& exact_parts, const FrustumSensor& sensor,
                     const std::vector<Point2>& waypoints,
                     CoverageSafeArea guarded = CoverageSafeArea::kReachable);
 

@@ -123,7 +123,7 @@ ContinuousCurvaturePath TrajectoryGenerator::continuousCurvature(
   std::vector<Point2> points;
   points.reserve(waypoints.size());
   for (const Pose2& waypoint : waypoints) points.push_back(waypoint.position());
-  PathCoverageCheck check(free_area, global.wall_distance, global.offset_parts, *sensor,
+  PathCoverageCheck check(free_area, global.wall_distance, global.exact_offset_parts, *sensor,
                           cornerWaypoints(points));
   return turns.apply(path, &check);
 }
