@@ -23,6 +23,21 @@ void addWalls(const Ring& ring, std::vector<Point2>* from, std::vector<Point2>* 
   }
 }
 
+/// The distance between the segments ab and cd: 0 where they cross, else the nearest of an
+/// end of one to the other.
+double distanceBetweenSegments(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  const double abc = cross(a, b, c);
+  const double abd = cross(a, b, d);
+  const double cda = cross(c, d, a);
+  const double cdb = cross(c, d, b);
+  if (((abc > 0.0 && abd < 0.0) || (abc < 0.0 && abd > 0.0)) &&
+      ((cda > 0.0 && cdb < 0.0) || (cda < 0.0 && cdb > 0.0))) {
+    return 0.0;
+  }
+  return std::min({distanceToSegment(a, c, d), distanceToSegment(b, c, d),
+                   distanceToSegment(c, a, b), distanceToSegment(d, a, b)});
+}
+
 }  // namespace
 
 ExactOffsetExcursions::ExactOffsetExcursions(const PolygonWithHoles& free_area,
@@ -73,6 +88,18 @@ std::optional<Point2> ExactOffsetExcursions::toward(const Point2& from,
   }
   if (length < min_length_) return std::nullopt;
   return Point2(from + length * outward);
+}
+
+bool ExactOffsetExcursions::keepsDistance(const Point2& a, const Point2& b) const {
+  if (!(wall_distance_ > 0.0)) return true;
+  const Point2 reach(wall_distance_, wall_distance_);
+  const Point2 low(std::min(a.x(), b.x()), std::min(a.y(), b.y()));
+  const Point2 high(std::max(a.x(), b.x()), std::max(a.y(), b.y()));
+  std::vector<int> ids;
+  grid_.collect(grid_.cellsOf(low - reach, high + reach), &ids);
+  return std::all_of(ids.begin(), ids.end(), [&](int i) {
+    return distanceBetweenSegments(a, b, from_[i], to_[i]) >= wall_distance_ - kApexMargin;
+  });
 }
 
 }  // namespace kinematic_coverage::core

@@ -40,6 +40,10 @@ class ExactOffsetExcursions {
   /// min_length.
   std::optional<Point2> toward(const Point2& from, const Point2& direction) const;
 
+  /// True when no point of the segment from a to b comes nearer to the walls than the wall
+  /// distance: a straight way to or from an excursion's far end that keeps it.
+  bool keepsDistance(const Point2& a, const Point2& b) const;
+
  private:
   /// The distance from p to the nearest wall, or `reach` when none lies nearer.
   double wallDistance(const Point2& p, double reach) const;

@@ -36,6 +36,10 @@ constexpr double kMinExcursionShare = 0.1;
 constexpr double kMaxExcursionShare = 4.0;
 /// Excursions per region toward the samples farthest from the boundary.
 constexpr int kDeepExcursions = 4;
+/// How far along the leg a bump leaves it and rejoins it, in multiples of the far end's
+/// distance from the leg: the widest keeps the turns gentlest, the narrowest the walls
+/// farthest.
+constexpr double kBumpSpreads[] = {2.0, 1.0, 0.5};
 /// Legs of the path, nearest to a patch's ends, where its insertion is priced.
 constexpr std::size_t kCandidateLegs = 12;
 /// A leg's view is sampled at this many steps along its middle (clear of its ends by half
@@ -346,6 +350,28 @@ std::vector<std::size_t> UnseenAreaRepair::nearestLegs(const std::vector<Point2>
   return nearest;
 }
 
+std::optional<UnseenAreaRepair::Bump> UnseenAreaRepair::bump(const Point2& apex, const Point2& a,
+                                                            const Point2& b) const {
+  const double length = (b - a).norm();
+  if (length <= kLengthTolerance) return std::nullopt;
+  const Point2 along = (b - a) / length;
+  const double at = std::clamp((apex - a).dot(along), 0.0, length);
+  const double height = (apex - (a + at * along)).norm();
+  if (height <= kLengthTolerance) return std::nullopt;
+  const double leg_cost = segment_cost_.of(a, b);
+  std::optional<Bump> best;
+  for (const double spread : kBumpSpreads) {
+    const Point2 leave = a + std::max(0.0, at - spread * height) * along;
+    const Point2 rejoin = a + std::min(length, at + spread * height) * along;
+    if (!excursions_.keepsDistance(leave, apex) || !excursions_.keepsDistance(apex, rejoin)) {
+      continue;
+    }
+    const double cost = segment_cost_.pathCost({a, leave, apex, rejoin, b}) - leg_cost;
+    if (!best || cost < best->cost) best = Bump{cost, leave, rejoin};
+  }
+  return best;
+}
+
 bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement replacement,
                               const SeenArea& view, std::size_t first_inside,
                               std::size_t* last_inside, std::vector<Point2>* waypoints,
@@ -366,7 +392,19 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
   std::size_t best_leg = 0;
   std::optional<Point2> best_anchor;  // none: the leg is replaced
   bool best_reversed = false;
+  // An excursion may also bend a leg out through its far end (not when every leg must be
+  // kept: the bent middle sees less of what the leg saw).
+  const bool excursion = patch.size() == 3 && patch.front() == patch.back();
+  std::optional<Bump> best_bump;
   for (const std::size_t i : legs) {
+    if (excursion && replacement != LegReplacement::kNone) {
+      const std::optional<Bump> bent = bump(patch[1], path[i], path[i + 1]);
+      if (bent && bent->cost < best_cost) {
+        best_cost = bent->cost;
+        best_leg = i;
+        best_bump = bent;
+      }
+    }
     const double leg_cost = segment_cost_.of(path[i], path[i + 1]);
     for (bool reversed : {false, true}) {
       const Point2& in = reversed ? patch.back() : patch.front();
@@ -377,6 +415,7 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
           best_leg = i;
           best_anchor = anchor;
           best_reversed = reversed;
+          best_bump.reset();
         }
       };
       for (const Point2& anchor :
@@ -397,6 +436,15 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
     }
   }
   if (!std::isfinite(best_cost)) return false;
+  if (best_bump) {
+    std::vector<Point2> bent;
+    if (best_bump->leave != path[best_leg]) bent.push_back(best_bump->leave);
+    bent.push_back(patch[1]);
+    if (best_bump->rejoin != path[best_leg + 1]) bent.push_back(best_bump->rejoin);
+    path.insert(path.begin() + static_cast<std::ptrdiff_t>(best_leg) + 1, bent.begin(), bent.end());
+    *last_inside += bent.size();
+    return true;
+  }
   std::vector<Point2> stretch = patch;
   if (best_reversed) std::reverse(stretch.begin(), stretch.end());
   // From where the detour leaves the path to where it rejoins it, without repeated points.

@@ -134,6 +134,18 @@ class UnseenAreaRepair {
                                        const std::vector<Point2>& path, std::size_t first_inside,
                                        std::size_t last_inside) const;
 
+  /// A way through an excursion's far end instead of out and back: the middle of a leg,
+  /// from `leave` to `rejoin`, replaced by straight ways out to the far end and back that
+  /// keep the wall distance; `cost` is what it adds to the leg's.
+  struct Bump {
+    double cost = 0.0;
+    Point2 leave;
+    Point2 rejoin;
+  };
+
+  /// The cheapest bump of the leg from a to b through `apex`, if one keeps the distance.
+  std::optional<Bump> bump(const Point2& apex, const Point2& a, const Point2& b) const;
+
   /// Which legs a patch's detour may replace instead of leaving them as they are.
   enum class LegReplacement { kAnyLeg, kUnneededLeg, kNone };
 
