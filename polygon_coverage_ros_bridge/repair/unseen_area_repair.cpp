@@ -37,8 +37,8 @@ constexpr double kMaxExcursionShare = 4.0;
 /// Excursions per region toward the samples farthest from the boundary.
 constexpr int kDeepExcursions = 4;
 /// How far along the leg a bump leaves it and rejoins it, in multiples of the far end's
-/// distance from the leg: the widest keeps the turns gentlest, the narrowest the walls
-/// farthest.
+/// distance from the leg, the widest (gentlest turns) first; narrower ones keep farther
+/// from the walls beside the far end.
 constexpr double kBumpSpreads[] = {2.0, 1.0, 0.5};
 /// Legs of the path, nearest to a patch's ends, where its insertion is priced.
 constexpr std::size_t kCandidateLegs = 12;
@@ -351,72 +351,51 @@ std::vector<std::size_t> UnseenAreaRepair::nearestLegs(const std::vector<Point2>
 }
 
 std::optional<UnseenAreaRepair::Bump> UnseenAreaRepair::bump(const Point2& apex, const Point2& a,
-                                                            const Point2& b) const {
+                                                             const Point2& b) const {
   const double length = (b - a).norm();
   if (length <= kLengthTolerance) return std::nullopt;
   const Point2 along = (b - a) / length;
   const double at = std::clamp((apex - a).dot(along), 0.0, length);
   const double height = (apex - (a + at * along)).norm();
   if (height <= kLengthTolerance) return std::nullopt;
-  const double leg_cost = segment_cost_.of(a, b);
-  std::optional<Bump> best;
   for (const double spread : kBumpSpreads) {
     const Point2 leave = a + std::max(0.0, at - spread * height) * along;
     const Point2 rejoin = a + std::min(length, at + spread * height) * along;
-    if (!excursions_.keepsDistance(leave, apex) || !excursions_.keepsDistance(apex, rejoin)) {
-      continue;
+    if (excursions_.keepsDistance(leave, apex) && excursions_.keepsDistance(apex, rejoin)) {
+      return Bump{segment_cost_.pathCost({a, leave, apex, rejoin, b}) - segment_cost_.of(a, b),
+                  leave, rejoin};
     }
-    const double cost = segment_cost_.pathCost({a, leave, apex, rejoin, b}) - leg_cost;
-    if (!best || cost < best->cost) best = Bump{cost, leave, rejoin};
   }
-  return best;
+  return std::nullopt;
 }
 
-bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement replacement,
-                              const SeenArea& view, std::size_t first_inside,
-                              std::size_t* last_inside, std::vector<Point2>* waypoints,
-                              VisibilityGraph::PointCache* routes) const {
-  std::vector<Point2>& path = *waypoints;
-  // A patch is driven from and back to the area the graph routes in.
-  const BoundaryGrid& area = graph_.boundary();
-  if (!area.contains(patch.front()) || !area.contains(patch.back())) return false;
-  const std::vector<std::size_t> legs = nearestLegs(patch, path, first_inside, *last_inside);
-  if (legs.empty()) return false;
+UnseenAreaRepair::Insertion UnseenAreaRepair::cheapestInsertion(
+    const std::vector<Point2>& patch, LegReplacement replacement, const SeenArea& view,
+    const std::vector<std::size_t>& legs, const std::vector<Point2>& path,
+    VisibilityGraph::PointCache* routes) const {
   // A spur: from an anchor on the path out to the patch, along it and back, the path's
   // own legs kept (they see what the sweeps rely on). The anchor is a waypoint, or the
   // point of a leg nearest to the patch, which splits the leg. A leg may instead be
   // replaced by a detour through the patch: any leg, or only one whose middle shows nothing
-  // that no other step of the path saw in `view` (a transition over swept area).
-  const double patch_cost = segment_cost_.pathCost(patch);
-  double best_cost = std::numeric_limits<double>::infinity();
-  std::size_t best_leg = 0;
-  std::optional<Point2> best_anchor;  // none: the leg is replaced
-  bool best_reversed = false;
-  // An excursion may also bend a leg out through its far end (not when every leg must be
+  // that no other step of the path saw in `view` (a transition over swept area). An
+  // excursion may also bend a leg out through its far end (not when every leg must be
   // kept: the bent middle sees less of what the leg saw).
+  const BoundaryGrid& area = graph_.boundary();
+  const double patch_cost = segment_cost_.pathCost(patch);
   const bool excursion = patch.size() == 3 && patch.front() == patch.back();
-  std::optional<Bump> best_bump;
+  Insertion best;
   for (const std::size_t i : legs) {
     if (excursion && replacement != LegReplacement::kNone) {
       const std::optional<Bump> bent = bump(patch[1], path[i], path[i + 1]);
-      if (bent && bent->cost < best_cost) {
-        best_cost = bent->cost;
-        best_leg = i;
-        best_bump = bent;
-      }
+      if (bent && bent->cost < best.cost)
+        best = Insertion{bent->cost, i, std::nullopt, false, bent};
     }
     const double leg_cost = segment_cost_.of(path[i], path[i + 1]);
     for (bool reversed : {false, true}) {
       const Point2& in = reversed ? patch.back() : patch.front();
       const Point2& out = reversed ? patch.front() : patch.back();
       const auto consider = [&](double cost, std::optional<Point2> anchor) {
-        if (cost < best_cost) {
-          best_cost = cost;
-          best_leg = i;
-          best_anchor = anchor;
-          best_reversed = reversed;
-          best_bump.reset();
-        }
+        if (cost < best.cost) best = Insertion{cost, i, anchor, reversed, std::nullopt};
       };
       for (const Point2& anchor :
            {path[i], path[i + 1], closestPointOnSegment(in, path[i], path[i + 1])}) {
@@ -435,39 +414,60 @@ bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement r
       }
     }
   }
-  if (!std::isfinite(best_cost)) return false;
-  if (best_bump) {
-    std::vector<Point2> bent;
-    if (best_bump->leave != path[best_leg]) bent.push_back(best_bump->leave);
-    bent.push_back(patch[1]);
-    if (best_bump->rejoin != path[best_leg + 1]) bent.push_back(best_bump->rejoin);
-    path.insert(path.begin() + static_cast<std::ptrdiff_t>(best_leg) + 1, bent.begin(), bent.end());
-    *last_inside += bent.size();
-    return true;
+  return best;
+}
+
+std::vector<Point2> UnseenAreaRepair::insertedPoints(const Insertion& insertion,
+                                                     const std::vector<Point2>& patch,
+                                                     const std::vector<Point2>& path,
+                                                     VisibilityGraph::PointCache* routes) const {
+  const Point2& first = path[insertion.leg];
+  const Point2& second = path[insertion.leg + 1];
+  std::vector<Point2> inserted;
+  if (insertion.bump) {
+    if (insertion.bump->leave != first) inserted.push_back(insertion.bump->leave);
+    inserted.push_back(patch[1]);
+    if (insertion.bump->rejoin != second) inserted.push_back(insertion.bump->rejoin);
+    return inserted;
   }
   std::vector<Point2> stretch = patch;
-  if (best_reversed) std::reverse(stretch.begin(), stretch.end());
+  if (insertion.reversed) std::reverse(stretch.begin(), stretch.end());
   // From where the detour leaves the path to where it rejoins it, without repeated points.
-  const Point2& leave = best_anchor ? *best_anchor : path[best_leg];
-  const Point2& rejoin = best_anchor ? *best_anchor : path[best_leg + 1];
+  const Point2& leave = insertion.anchor ? *insertion.anchor : first;
+  const Point2& rejoin = insertion.anchor ? *insertion.anchor : second;
   std::vector<Point2> detour = graph_.shortestPath(leave, stretch.front(), routes);
   detour.insert(detour.end(), stretch.begin() + 1, stretch.end());
   const std::vector<Point2> back = graph_.shortestPath(stretch.back(), rejoin, routes);
   detour.insert(detour.end(), back.begin() + 1, back.end());
   detour.erase(std::unique(detour.begin(), detour.end()), detour.end());
-  std::vector<Point2> inserted;
-  if (best_anchor) {
-    if (detour.size() <= 1) return false;  // the patch is the anchor
+  if (insertion.anchor) {
+    if (detour.size() <= 1) return {};  // the patch is the anchor
     // After the leg's first waypoint: the anchor (unless it is that waypoint), the spur,
     // and the anchor again (unless it is the leg's second waypoint).
-    if (*best_anchor != path[best_leg]) inserted.push_back(*best_anchor);
+    if (*insertion.anchor != first) inserted.push_back(*insertion.anchor);
     inserted.insert(inserted.end(), detour.begin() + 1, detour.end());
-    if (*best_anchor == path[best_leg + 1]) inserted.pop_back();
-  } else {
-    if (detour.size() <= 2) return false;  // the patch lies on the leg's ends
+    if (*insertion.anchor == second) inserted.pop_back();
+  } else if (detour.size() > 2) {  // else the patch lies on the leg's ends
     inserted.assign(detour.begin() + 1, detour.end() - 1);
   }
-  path.insert(path.begin() + static_cast<std::ptrdiff_t>(best_leg) + 1, inserted.begin(),
+  return inserted;
+}
+
+bool UnseenAreaRepair::insert(const std::vector<Point2>& patch, LegReplacement replacement,
+                              const SeenArea& view, std::size_t first_inside,
+                              std::size_t* last_inside, std::vector<Point2>* waypoints,
+                              VisibilityGraph::PointCache* routes) const {
+  std::vector<Point2>& path = *waypoints;
+  // A patch is driven from and back to the area the graph routes in.
+  const BoundaryGrid& area = graph_.boundary();
+  if (!area.contains(patch.front()) || !area.contains(patch.back())) return false;
+  const std::vector<std::size_t> legs = nearestLegs(patch, path, first_inside, *last_inside);
+  if (legs.empty()) return false;
+  const Insertion best = cheapestInsertion(patch, replacement, view, legs, path, routes);
+  if (!std::isfinite(best.cost)) return false;
+  const std::vector<Point2> inserted = insertedPoints(best, patch, path, routes);
+  if (inserted.empty()) return false;
+  path.insert(path.begin() + static_cast<std::ptrdiff_t>(best.leg) + 1, inserted.begin(),
               inserted.end());
   *last_inside += inserted.size();
   return true;

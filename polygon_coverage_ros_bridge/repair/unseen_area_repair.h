@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -143,15 +144,37 @@ class UnseenAreaRepair {
     Point2 rejoin;
   };
 
-  /// The cheapest bump of the leg from a to b through `apex`, if one keeps the distance.
+  /// The widest bump of the leg from a to b through `apex` that keeps the distance, if any.
   std::optional<Bump> bump(const Point2& apex, const Point2& a, const Point2& b) const;
 
   /// Which legs a patch's detour may replace instead of leaving them as they are.
   enum class LegReplacement { kAnyLeg, kUnneededLeg, kNone };
 
-  /// Inserts `patch` (either way round) where the detour costs least: as a spur, or as a
-  /// detour instead of a leg that `replacement` allows (legNeeded on the path's `view`);
-  /// false when no leg can reach the patch. `routes` keeps the points priced so far.
+  /// Where and how a patch joins the path, with what that adds to its cost: after waypoint
+  /// `leg`, as a spur from `anchor`, a detour instead of the leg (no anchor), or a bump.
+  struct Insertion {
+    double cost = std::numeric_limits<double>::infinity();
+    std::size_t leg = 0;
+    std::optional<Point2> anchor;
+    bool reversed = false;  ///< the patch driven from its back to its front
+    std::optional<Bump> bump;
+  };
+
+  /// The cheapest insertion of `patch` at one of `legs` of `path` that `replacement` allows
+  /// (legNeeded on the path's `view`); an infinite cost when none can reach it.
+  Insertion cheapestInsertion(const std::vector<Point2>& patch, LegReplacement replacement,
+                              const SeenArea& view, const std::vector<std::size_t>& legs,
+                              const std::vector<Point2>& path,
+                              VisibilityGraph::PointCache* routes) const;
+
+  /// The points that `insertion` puts after its leg's first waypoint (none when the patch
+  /// adds nothing to the path).
+  std::vector<Point2> insertedPoints(const Insertion& insertion, const std::vector<Point2>& patch,
+                                     const std::vector<Point2>& path,
+                                     VisibilityGraph::PointCache* routes) const;
+
+  /// Inserts `patch` where cheapestInsertion puts it; false when no leg can reach the patch.
+  /// `routes` keeps the points priced so far.
   bool insert(const std::vector<Point2>& patch, LegReplacement replacement, const SeenArea& view,
               std::size_t first_inside, std::size_t* last_inside, std::vector<Point2>* waypoints,
               VisibilityGraph::PointCache* routes) const;

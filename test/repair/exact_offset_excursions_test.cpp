@@ -102,6 +102,40 @@ TEST(ExactOffsetExcursions, TowardASlotsMouthEndsWhereItsCornersAreTheWallDistan
   EXPECT_FALSE(excursions.toward({10, 9}, {0, 0}));
 }
 
+// Random segments in the room with the slot (fixed seed): keepsDistance agrees with the
+// distance to the walls sampled a centimetre apart wherever that is clear of the wall
+// distance by more than the sampling can miss (half a centimetre); a segment into the slot
+// never keeps it.
+TEST(ExactOffsetExcursions, KeepsDistanceAgreesWithTheDistanceToTheWalls) {
+  constexpr double kSampling = 0.006;
+  const PolygonWithHoles room{
+      {{0, 0}, {20, 0}, {20, 10}, {10.8, 10}, {10.8, 15}, {9.2, 15}, {9.2, 10}, {0, 10}}, {}};
+  const ExactOffsetExcursions excursions(room, 1.0, 0.05, 5.0);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> x(5.0, 15.0);
+  std::uniform_real_distribution<double> y(6.0, 12.0);
+  int kept = 0;
+  int refused = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Point2 a(x(random), y(random));
+    const Point2 b(x(random), y(random));
+    if (!contains(room, a) || !contains(room, b)) continue;
+    const double distance = testing::sampledWallDistance(room, {a, b});
+    if (distance > 1.0 + kSampling) {
+      EXPECT_TRUE(excursions.keepsDistance(a, b)) << a.transpose() << " " << b.transpose();
+      ++kept;
+    } else if (distance < 1.0 - kSampling) {
+      EXPECT_FALSE(excursions.keepsDistance(a, b)) << a.transpose() << " " << b.transpose();
+      ++refused;
+    }
+  }
+  EXPECT_GT(kept, 20);
+  EXPECT_GT(refused, 200);
+  EXPECT_FALSE(excursions.keepsDistance({10, 9}, {10, 14}));  // into the slot
+  EXPECT_TRUE(excursions.keepsDistance({2, 2}, {18, 8}));
+  EXPECT_TRUE(ExactOffsetExcursions().keepsDistance({10, 9}, {10, 14}));
+}
+
 // Random rooms of random convex holes (fixed seed): every excursion keeps the wall distance
 // along its whole length, and ends where the walls come that near (within the tracing's
 // tolerance) unless it is cut at the maximum.

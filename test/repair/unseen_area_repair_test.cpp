@@ -218,6 +218,45 @@ TEST(UnseenAreaRepair, ARoundCornerOfTheExactOffsetIsSeenFromAnExcursion) {
       keepsClearance(testing::sampledWallDistance(room, repaired.waypoints), wall_distance));
 }
 
+// A slot 1.6 m wide opens from the top wall at y = 10 (wall distance 1 m): the exact offset
+// bulges up to y = 9.4 at its mouth, out of sight of a lane along the mitred boundary at
+// y = 9. The repair bends the lane out through the bulge's tip instead of driving out and
+// back: no waypoint is turned back to, and every leg keeps the wall distance.
+TEST(UnseenAreaRepair, ASlotsMouthIsSeenByBendingTheLaneOutThroughIt) {
+  const PolygonWithHoles room{
+      {{0, 0}, {20, 0}, {20, 10}, {10.8, 10}, {10.8, 15}, {9.2, 15}, {9.2, 10}, {0, 10}}, {}};
+  const double wall_distance = 1.0;
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(room, wall_distance).parts;
+  const FrustumSensor sensor{1.0, 0.5, 0.0};
+  const PlannerParameters parameters;
+  const SegmentCost cost{segmentCostOf(parameters)};
+  const VisibilityGraph graph{parts.front(), cost};
+  // The lane sees y = 8.5 to 9.5; only the mouth above it counts.
+  const std::vector<PolygonWithHoles> near_mouth{{{{8, 8.6}, {12, 8.6}, {12, 10}, {8, 10}}, {}}};
+  const std::vector<Point2> lane = {{1, 9}, {19, 9}};
+  const RepairedPath repaired =
+      UnseenAreaRepair(room, wall_distance, parts, sensor, graph, cost, &near_mouth)
+          .repair(lane, 0, 1);
+  EXPECT_GT(repaired.unseen_before_m2, 0.01);
+  EXPECT_LT(repaired.unseen_after_m2, 0.1 * repaired.unseen_before_m2);
+  const std::vector<Point2>& path = repaired.waypoints;
+  ASSERT_GE(path.size(), 3u);
+  EXPECT_EQ(path.front(), lane.front());
+  EXPECT_EQ(path.back(), lane.back());
+  std::size_t beyond = 0;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    if (contains(parts.front(), path[k], 1e-6)) continue;
+    ++beyond;
+    ASSERT_GT(k, 0u);
+    ASSERT_LT(k + 1, path.size());
+    EXPECT_LT(path[k - 1].x(), path[k].x());
+    EXPECT_GT(path[k + 1].x(), path[k].x());
+  }
+  EXPECT_GE(beyond, 1u);
+  for (std::size_t k = 0; k + 1 < path.size(); ++k) EXPECT_LT(path[k].x(), path[k + 1].x());
+  EXPECT_TRUE(keepsClearance(testing::sampledWallDistance(room, path), wall_distance));
+}
+
 /// A mission planned as coverage_tool plans it, without and with coverage_repair, and the
 /// two waypoint paths.
 struct PlannedBothWays {
