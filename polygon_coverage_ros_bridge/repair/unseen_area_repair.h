@@ -36,8 +36,9 @@ struct RepairedPath {
 /// a corner of the boundary toward the round corner of the exact offset (ExactOffsetExcursions,
 /// where that passes nearer the region than the boundary does), or through it (deeper
 /// inside); each patch is driven where the detour costs least, as a
-/// spur from the path or instead of a leg whose view the path keeps (a round of patches
-/// that loses what the path saw is tried again with spurs only, which keep every leg).
+/// spur from the path, instead of a leg whose view the path keeps, or (an excursion) as a
+/// bump that bends a leg out through its far end (a round of patches that loses what the
+/// path saw is tried again with spurs only, which keep every leg).
 /// Rounds repeat while unseen regions remain and the last round saw more.
 class UnseenAreaRepair {
  public:
