@@ -745,19 +745,17 @@ std::future<ExactOffsetStage> exactOffsetInBackground(
     const std::vector<PolygonWithHoles>* coverage_region) {
   return std::async(std::launch::async, [&run, &offset, &sensor, coverage_region,
                                          offset_parts = run.plan.offset_parts] {
+    // With no wall distance the offset is exact: no round parts, and each part stays itself.
     const double wall_distance = run.parameters.wall_distance;
-    std::vector<PolygonWithHoles> round;
-    if (wall_distance > 0.0) {
-      round = WallOffset(run.free_area).at(wall_distance, OffsetCorners::kRound).parts;
-    }
-    const auto exact = [&](const std::vector<PolygonWithHoles>& parts) {
-      return wall_distance > 0.0 && !parts.empty() ? roundPartsHolding(round, parts) : parts;
-    };
+    const std::vector<PolygonWithHoles> round =
+        wall_distance > 0.0
+            ? WallOffset(run.free_area).at(wall_distance, OffsetCorners::kRound).parts
+            : std::vector<PolygonWithHoles>{};
     ExactOffsetStage stage;
-    stage.exact_offset_parts = exact(offset_parts);
+    stage.exact_offset_parts = roundPartsHolding(round, offset_parts);
     if (run.parameters.coverage_repair) {
       stage.measuring_raster = UnseenAreaRepair::measuringRaster(
-          run.free_area, exact(offset.planned_parts), sensor, coverage_region);
+          run.free_area, roundPartsHolding(round, offset.planned_parts), sensor, coverage_region);
     }
     return stage;
   });

@@ -188,6 +188,19 @@ TEST(UnseenAreaRepair, OnlyTheCoverageRegionIsPatched) {
   EXPECT_EQ(untouched.unseen_before_m2, 0.0);
 }
 
+/// One lane repaired alone in `room` by the walls' mitred offset (its first part), with a
+/// sensor 1 m wide and 0.5 m long, only the reachable area inside `region` counting.
+RepairedPath repairedLane(const PolygonWithHoles& room, double wall_distance,
+                          const std::vector<PolygonWithHoles>& region,
+                          const std::vector<Point2>& lane) {
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(room, wall_distance).parts;
+  const FrustumSensor sensor{1.0, 0.5, 0.0};
+  const SegmentCost cost{segmentCostOf(PlannerParameters{})};
+  const VisibilityGraph graph{parts.front(), cost};
+  return UnseenAreaRepair(room, wall_distance, parts, sensor, graph, cost, &region)
+      .repair(lane, 0, lane.size() - 1);
+}
+
 // A corner of a triangular obstacle bulges into the free area by 120 degrees: the mitred
 // offset by the wall distance (2 m) stops 2 m short of the exact offset's round corner, and
 // with a 1 m x 0.5 m footprint the reachable area around that corner is out of sight of the
@@ -199,16 +212,10 @@ TEST(UnseenAreaRepair, ARoundCornerOfTheExactOffsetIsSeenFromAnExcursion) {
                               {{{17, 13}, {20, 13 + height}, {23, 13}}}};
   const double wall_distance = 2.0;
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(room, wall_distance).parts;
-  const FrustumSensor sensor{1.0, 0.5, 0.0};
-  const PlannerParameters parameters;
-  const SegmentCost cost{segmentCostOf(parameters)};
-  const VisibilityGraph graph{parts.front(), cost};
   // Where the obstacle's lower left corner bulges; a lane below it sees up to y = 11.
   const std::vector<PolygonWithHoles> near_corner{{{{13, 10}, {18, 10}, {18, 14}, {13, 14}}, {}}};
-  const std::vector<Point2> lane = {{3, 10.5}, {37, 10.5}};
   const RepairedPath repaired =
-      UnseenAreaRepair(room, wall_distance, parts, sensor, graph, cost, &near_corner)
-          .repair(lane, 0, 1);
+      repairedLane(room, wall_distance, near_corner, {{3, 10.5}, {37, 10.5}});
   EXPECT_GT(repaired.unseen_before_m2, 5.0);
   EXPECT_LT(repaired.unseen_after_m2, 0.01 * repaired.unseen_before_m2);
   std::size_t beyond = 0;
@@ -227,16 +234,10 @@ TEST(UnseenAreaRepair, ASlotsMouthIsSeenByBendingTheLaneOutThroughIt) {
       {{0, 0}, {20, 0}, {20, 10}, {10.8, 10}, {10.8, 15}, {9.2, 15}, {9.2, 10}, {0, 10}}, {}};
   const double wall_distance = 1.0;
   const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(room, wall_distance).parts;
-  const FrustumSensor sensor{1.0, 0.5, 0.0};
-  const PlannerParameters parameters;
-  const SegmentCost cost{segmentCostOf(parameters)};
-  const VisibilityGraph graph{parts.front(), cost};
   // The lane sees y = 8.5 to 9.5; only the mouth above it counts.
   const std::vector<PolygonWithHoles> near_mouth{{{{8, 8.6}, {12, 8.6}, {12, 10}, {8, 10}}, {}}};
   const std::vector<Point2> lane = {{1, 9}, {19, 9}};
-  const RepairedPath repaired =
-      UnseenAreaRepair(room, wall_distance, parts, sensor, graph, cost, &near_mouth)
-          .repair(lane, 0, 1);
+  const RepairedPath repaired = repairedLane(room, wall_distance, near_mouth, lane);
   EXPECT_GT(repaired.unseen_before_m2, 0.01);
   EXPECT_LT(repaired.unseen_after_m2, 0.1 * repaired.unseen_before_m2);
   const std::vector<Point2>& path = repaired.waypoints;
