@@ -1,7 +1,7 @@
 // libFuzzer target: mission YAML loading (MissionFileReader::parse, parseUpdatedPolygon) on
 // arbitrary text, then what planMission does before planning: PolygonValidator on the
 // polygon, start and goal, and PolygonCleaner. Properties: the parameters of a parsed
-// mission pass ParameterValidator; the cleaned free area has a counter-clockwise simple
+// mission pass checkParameters; the cleaned free area has a counter-clockwise simple
 // hull, clockwise simple holes and a positive area no larger than the raw hull's
 // (docs/REFERENCE.md, Geometry and input rules).
 
@@ -13,7 +13,7 @@
 #include "fuzz/fuzz_check.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
@@ -54,7 +54,7 @@ void checkCleaned(const PolygonWithHoles& raw, const CleanedPolygon& cleaned) {
 /// planMission's steps before planning.
 void validateAndClean(const Mission& mission) {
   try {
-    kinematic_coverage::core::ParameterValidator().validate(mission.parameters);
+    kinematic_coverage::core::checkParameters(mission.parameters);
   } catch (const InvalidInputError& error) {
     fuzzCheck(false, std::string("reader accepted invalid parameters: ") + error.what());
   }

@@ -1,5 +1,5 @@
 // libFuzzer target: CoveragePlanner through the path `coverage_tool plan` takes
-// (ParameterValidator as the mission loader applies it, then planMission: validate, clean,
+// (checkParameters as the mission loader applies it, then planMission: validate, clean,
 // plan, with or without coverage_repair, decomposing the exact or a simplified boundary) on
 // small fuzzed polygons with holes: at most kMaxHullVertices hull vertices and kMaxHoles holes
 // of at most kMaxHoleVertices vertices, coordinates within [-5, 35] m, parameters in range or,
@@ -27,7 +27,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 
 namespace {
 
@@ -83,7 +83,7 @@ Ring ring(FuzzedDataProvider& input, int vertices, const Point2& centre, double 
   return result;
 }
 
-/// A value that ParameterValidator must reject for most parameters.
+/// A value that checkParameters must reject for most parameters.
 double outOfRange(FuzzedDataProvider& input) {
   const double values[] = {
       0.0,  -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
@@ -235,7 +235,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Mission m = mission(input);
   if (const char* path = std::getenv("KC_FUZZ_PRINT_MISSION")) printMission(m, path);
   kinematic_coverage::fuzz::runExpectingOnlyInvalidInput([&] {
-    kinematic_coverage::core::ParameterValidator().validate(m.parameters);
+    kinematic_coverage::core::checkParameters(m.parameters);
     const kinematic_coverage::core::PlannedMission planned =
         kinematic_coverage::core::planMission(m);
     checkPlan(m, planned);

@@ -25,6 +25,6 @@ target_compile_definitions(${PROJECT_NAME}_planner_reference PRIVATE KC_SOURCE_D
 # child process per map).
 kc_add_executable(scaling_benchmark bench/planner/scaling_benchmark.cpp
   bench/support/log_log_plot.cpp test/support/hard_map_generator.cpp)
-target_link_libraries(${PROJECT_NAME}_scaling_benchmark PRIVATE kc_validation kc_geometry
+target_link_libraries(${PROJECT_NAME}_scaling_benchmark PRIVATE kc_validation kc_geometry kc_parameters
   PkgConfig::CAIRO)
 add_dependencies(${PROJECT_NAME}_scaling_benchmark ${PROJECT_NAME}_coverage_tool)

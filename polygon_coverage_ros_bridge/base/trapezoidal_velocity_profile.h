@@ -12,7 +12,7 @@ namespace kinematic_coverage::core {
 /// arc speed on an arc), so a piece is driven accelerate-cruise-brake, a trapezoid. The
 /// planner's segment cost, the smoother's corner times and the trajectory's time stamps
 /// all come from this one class. It does not check its limits: the stages that take
-/// VehicleLimits from the user check them (ParameterValidator).
+/// VehicleLimits from the user check them (the parameter schema, checkParameters).
 class TrapezoidalVelocityProfile {
  public:
   explicit TrapezoidalVelocityProfile(const VehicleLimits& limits)

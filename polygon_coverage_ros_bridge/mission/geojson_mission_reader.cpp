@@ -6,12 +6,15 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/region_intersection.h"
 #include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "polygon_coverage_ros_bridge/mission/yaml_parameter_reader.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -29,7 +32,8 @@ struct GeoFeatures {
   std::optional<GeoPoint> goal;
   std::optional<GeoPoint> datum;
   std::string frame_id = "map";
-  std::vector<std::string> parameters;  ///< "name=value", from the polygon properties
+  /// The polygon properties that are parameters: name, value and where it is.
+  std::vector<std::tuple<std::string, YAML::Node, std::string>> parameters;
 };
 
 class GeoJsonParser {
@@ -112,7 +116,7 @@ class GeoJsonParser {
         if (!value.IsScalar()) {
           fail(where + ".properties." + key, "a parameter must be a number, a name or a boolean");
         }
-        found.parameters.push_back(key + "=" + value.Scalar());
+        found.parameters.emplace_back(key, value, source_ + ": " + where + ".properties");
       }
     }
   }
@@ -234,12 +238,17 @@ Mission GeoJsonMissionReader::parse(const std::string& text, const std::string& 
   }
   mission.start = frame.toLocal(*features.start, source_name + ": the start");
   mission.goal = frame.toLocal(*features.goal, source_name + ": the goal");
-  try {
-    mission.parameters = MissionFileReader().withOverrides(base, features.parameters);
-  } catch (const InvalidInputError& error) {
-    parser.fail("the polygon's properties", error.what());
+  mission.parameters = base;
+  ParameterOrigins origins;
+  YamlParameterReader parameters(mission.parameters, origins);
+  for (const auto& [name, value, where] : features.parameters) {
+    const ParameterDeclaration* declaration = findParameter(name);
+    if (declaration == nullptr)
+      throw InvalidInputError(where + ": unknown parameter '" + name + "'");
+    parameters.set(*declaration, value, where);
   }
-  mission.parameters = MissionFileReader().withOverrides(mission.parameters, overrides);
+  for (const std::string& assignment : overrides) parameters.setAssignment(assignment);
+  checkParameters(mission.parameters, origins);
   return mission;
 }
 

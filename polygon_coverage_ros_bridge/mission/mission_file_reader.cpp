@@ -7,107 +7,15 @@
 #include <fstream>
 #include <set>
 #include <sstream>
-#include <type_traits>
-#include <variant>
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/mission/yaml_parameter_reader.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 
 namespace kinematic_coverage::core {
 namespace {
-
-/// One parameter: its name and where PlannerParameters holds it.
-struct ParameterField {
-  const char* name;
-  std::variant<double PlannerParameters::*, bool PlannerParameters::*,
-               std::string PlannerParameters::*>
-      member;
-  /// A clearance that may also be the word `wall_distance` (kClearanceOfWallDistance).
-  bool takes_wall_distance = false;
-};
-
-/// The word that stands for the wall distance as a clearance's value.
-constexpr const char* kWallDistanceWord = "wall_distance";
-
-const std::vector<ParameterField>& parameterFields() {
-  using P = PlannerParameters;
-  static const std::vector<ParameterField> fields = {
-      {"decomposition_type", &P::decomposition_type},
-      {"cell_joining", &P::cell_joining},
-      {"cost_function", &P::cost_function},
-      {"v_max", &P::v_max},
-      {"a_max", &P::a_max},
-      {"yaw_rate_max", &P::yaw_rate_max},
-      {"wall_distance", &P::wall_distance},
-      {"offset_parts", &P::offset_parts},
-      {"gap_clearance", &P::gap_clearance, true},
-      {"boundary_simplification", &P::boundary_simplification},
-      {"sensor_model", &P::sensor_model},
-      {"lateral_fov", &P::lateral_fov},
-      {"onward_fov", &P::onward_fov},
-      {"lateral_footprint", &P::lateral_footprint},
-      {"sensor_distance", &P::sensor_distance},
-      {"lateral_overlap", &P::lateral_overlap},
-      {"coverage_repair", &P::coverage_repair},
-      {"smoothing", &P::smoothing},
-      {"turning_radius", &P::turning_radius},
-      {"smoothing_strategy", &P::smoothing_strategy},
-      {"min_turning_radius", &P::min_turning_radius},
-      {"max_turning_radius", &P::max_turning_radius},
-      {"coverage_preserving", &P::coverage_preserving},
-      {"segment_sampling_distance", &P::segment_sampling_distance},
-      {"arc_sampling_distance", &P::arc_sampling_distance},
-      {"rotation_sampling_angle", &P::rotation_sampling_angle},
-      {"turn_curve", &P::turn_curve},
-      {"coverage_safe_area", &P::coverage_safe_area},
-      {"smoothing_clearance", &P::smoothing_clearance, true},
-      {"curvature_rate_max", &P::curvature_rate_max},
-      {"replanning_method", &P::replanning_method},
-      {"replanning_sliver_fraction", &P::replanning_sliver_fraction},
-      {"replanning_min_area", &P::replanning_min_area},
-      {"replanning_simplify_tolerance", &P::replanning_simplify_tolerance},
-      {"alpha", &P::alpha},
-      {"vehicle_model", &P::vehicle_model},
-      {"mass", &P::mass},
-      {"added_mass_surge", &P::added_mass_surge},
-      {"added_mass_sway", &P::added_mass_sway},
-      {"inertia_yaw", &P::inertia_yaw},
-      {"added_inertia_yaw", &P::added_inertia_yaw},
-      {"damping_surge_linear", &P::damping_surge_linear},
-      {"damping_sway_linear", &P::damping_sway_linear},
-      {"damping_yaw_linear", &P::damping_yaw_linear},
-      {"damping_surge_quadratic", &P::damping_surge_quadratic},
-      {"damping_sway_quadratic", &P::damping_sway_quadratic},
-      {"damping_yaw_quadratic", &P::damping_yaw_quadratic},
-      {"thrust_max", &P::thrust_max},
-      {"yaw_torque_max", &P::yaw_torque_max},
-      {"surge_loop_gain", &P::surge_loop_gain},
-      {"yaw_rate_loop_gain", &P::yaw_rate_loop_gain},
-      {"yaw_gain", &P::yaw_gain},
-      {"position_gain", &P::position_gain},
-      {"position_tolerance", &P::position_tolerance},
-      {"yaw_tolerance", &P::yaw_tolerance},
-      {"current_x", &P::current_x},
-      {"current_y", &P::current_y},
-      {"current_sigma", &P::current_sigma},
-      {"current_time_constant", &P::current_time_constant},
-      {"navigation_sigma", &P::navigation_sigma},
-      {"navigation_time_constant", &P::navigation_time_constant},
-      {"disturbance_seed", &P::disturbance_seed},
-      {"sim_dt", &P::sim_dt},
-      {"sim_time_limit", &P::sim_time_limit},
-  };
-  return fields;
-}
-
-const ParameterField* findParameter(const std::string& name) {
-  for (const ParameterField& field : parameterFields()) {
-    if (name == field.name) return &field;
-  }
-  return nullptr;
-}
 
 /// Reads YAML nodes, naming the source and line of each problem.
 class NodeReader {
@@ -229,34 +137,9 @@ class NodeReader {
     return result;
   }
 
-  void setParameter(PlannerParameters& parameters, const ParameterField& field,
-                    const YAML::Node& node) const {
-    const std::string name = field.name;
-    if (auto number_member = std::get_if<double PlannerParameters::*>(&field.member)) {
-      const bool word =
-          field.takes_wall_distance && node.IsScalar() && node.Scalar() == kWallDistanceWord;
-      if (word) {
-        parameters.*(*number_member) = kClearanceOfWallDistance;
-        return;
-      }
-      const double value = number(node, name, "the value");
-      // A negative clearance would read as the word's stand-in.
-      if (field.takes_wall_distance && value < 0.0) {
-        fail(node, name,
-             "the value " + kindOf(node) + " is negative: it must be a distance >= 0 (m) or " +
-                 kWallDistanceWord);
-      }
-      parameters.*(*number_member) = value;
-    } else if (auto flag_member = std::get_if<bool PlannerParameters::*>(&field.member)) {
-      bool value = false;
-      if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value)) {
-        fail(node, name, "the value " + kindOf(node) + " is not true or false");
-      }
-      parameters.*(*flag_member) = value;
-    } else {
-      if (!node.IsScalar()) fail(node, name, "the value must be a name, not " + kindOf(node));
-      parameters.*std::get<std::string PlannerParameters::*>(field.member) = node.Scalar();
-    }
+  /// Where `node` is: the source and its line.
+  std::string location(const YAML::Node& node) const {
+    return node.Mark().line >= 0 ? source_ + ":" + std::to_string(node.Mark().line + 1) : source_;
   }
 
  private:
@@ -281,19 +164,6 @@ YAML::Node rootMap(const std::string& text, const std::string& source_name) {
                             NodeReader::kindOf(root));
   }
   return root;
-}
-
-void applyOverride(PlannerParameters& parameters, const std::string& assignment) {
-  const std::string source = "--set " + assignment;
-  const std::size_t equals = assignment.find('=');
-  if (equals == std::string::npos || equals == 0) {
-    throw InvalidInputError(source + ": expected name=value");
-  }
-  const std::string name = assignment.substr(0, equals);
-  const ParameterField* field = findParameter(name);
-  if (field == nullptr) throw InvalidInputError(source + ": unknown parameter '" + name + "'");
-  const YAML::Node value = loadYaml(assignment.substr(equals + 1), source);
-  NodeReader(source).setParameter(parameters, *field, value);
 }
 
 }  // namespace
@@ -331,6 +201,8 @@ Mission MissionFileReader::parse(const std::string& yaml_text, const std::string
   const NodeReader reader(source_name);
   Mission mission;
   mission.parameters = base;
+  ParameterOrigins origins;
+  YamlParameterReader parameters(mission.parameters, origins);
   bool has_polygon = false, has_start = false, has_goal = false;
   for (const auto& [key, value] : reader.entries(root, "")) {
     if (key == "frame_id") {
@@ -347,8 +219,8 @@ Mission MissionFileReader::parse(const std::string& yaml_text, const std::string
     } else if (key == "goal") {
       mission.goal = reader.point(value, key);
       has_goal = true;
-    } else if (const ParameterField* field = findParameter(key)) {
-      reader.setParameter(mission.parameters, *field, value);
+    } else if (const ParameterDeclaration* declaration = findParameter(key)) {
+      parameters.set(*declaration, value, reader.location(value));
     } else {
       reader.fail(value, key,
                   "unknown key (a mission has frame_id, polygon, start, goal and the "
@@ -358,8 +230,8 @@ Mission MissionFileReader::parse(const std::string& yaml_text, const std::string
   if (!has_polygon) throw InvalidInputError(source_name + ": the polygon is missing");
   if (!has_start) throw InvalidInputError(source_name + ": the start is missing");
   if (!has_goal) throw InvalidInputError(source_name + ": the goal is missing");
-  for (const std::string& assignment : overrides) applyOverride(mission.parameters, assignment);
-  ParameterValidator().validate(mission.parameters);
+  for (const std::string& assignment : overrides) parameters.setAssignment(assignment);
+  checkParameters(mission.parameters, origins);
   return mission;
 }
 
@@ -389,47 +261,38 @@ PlannerParameters MissionFileReader::readParameters(const std::string& path) con
   const YAML::Node root = rootMap(readText(path), path);
   const NodeReader reader(path);
   PlannerParameters parameters;
+  ParameterOrigins origins;
+  YamlParameterReader parameter_reader(parameters, origins);
   for (const auto& [key, value] : reader.entries(root, "")) {
-    const ParameterField* field = findParameter(key);
-    if (field == nullptr) reader.fail(value, key, "unknown parameter");
-    reader.setParameter(parameters, *field, value);
+    const ParameterDeclaration* declaration = findParameter(key);
+    if (declaration == nullptr) reader.fail(value, key, "unknown parameter");
+    parameter_reader.set(*declaration, value, reader.location(value));
   }
-  ParameterValidator().validate(parameters);
+  checkParameters(parameters, origins);
   return parameters;
 }
 
 PlannerParameters MissionFileReader::withOverrides(
     PlannerParameters parameters, const std::vector<std::string>& overrides) const {
-  for (const std::string& assignment : overrides) applyOverride(parameters, assignment);
-  ParameterValidator().validate(parameters);
+  ParameterOrigins origins;
+  YamlParameterReader parameter_reader(parameters, origins);
+  for (const std::string& assignment : overrides) parameter_reader.setAssignment(assignment);
+  checkParameters(parameters, origins);
   return parameters;
 }
 
 std::string MissionFileReader::parameterText(const PlannerParameters& parameters,
                                              const std::string& name) {
-  const ParameterField* field = findParameter(name);
-  if (field == nullptr) throw InvalidInputError("unknown parameter '" + name + "'");
-  return std::visit(
-      [&parameters, field](auto member) -> std::string {
-        const auto& value = parameters.*member;
-        using Value = std::decay_t<decltype(value)>;
-        if constexpr (std::is_same_v<Value, double>) {
-          if (field->takes_wall_distance && value == kClearanceOfWallDistance) {
-            return kWallDistanceWord;
-          }
-          return formatRoundTrip(value);
-        } else if constexpr (std::is_same_v<Value, bool>) {
-          return value ? "true" : "false";
-        } else {
-          return value;
-        }
-      },
-      field->member);
+  const ParameterDeclaration* declaration = findParameter(name);
+  if (declaration == nullptr) throw InvalidInputError("unknown parameter '" + name + "'");
+  return parameterValueText(*declaration, parameterValue(parameters, *declaration));
 }
 
 std::vector<std::string> MissionFileReader::parameterNames() {
   std::vector<std::string> names;
-  for (const ParameterField& field : parameterFields()) names.emplace_back(field.name);
+  for (const ParameterDeclaration& declaration : parameterSchema()) {
+    names.emplace_back(declaration.name);
+  }
   return names;
 }
 

@@ -23,8 +23,8 @@ namespace kinematic_coverage::core {
 /// InvalidInputError naming where it is, e.g. "lake.yaml:7: polygon.holes[1][3]: the x
 /// coordinate 'abc' is not a number": unknown keys (a typo must not be silently
 /// ignored), duplicate keys, wrong shapes, non-numeric or non-finite numbers, parameters
-/// out of range (ParameterValidator). Points are `[x, y]`; holes and vertices are
-/// numbered from 0. Limits: files of at most kMaxMissionFileBytes; at most
+/// out of range (checkParameters, naming where the value came from). Points are `[x, y]`; holes and
+/// vertices are numbered from 0. Limits: files of at most kMaxMissionFileBytes; at most
 /// kMaxTotalVertices vertices and kMaxHoles holes (polygon_validator.h); coordinates within
 /// +-kMaxCoordinateMagnitude. Geometry (simplicity, holes outside the hull, ...) is left to
 /// PolygonValidator.

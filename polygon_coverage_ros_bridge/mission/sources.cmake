@@ -8,8 +8,11 @@ kc_add_stage_library(kc_mission
     polygon_coverage_ros_bridge/mission/pose_csv_reader.cpp
     polygon_coverage_ros_bridge/mission/read_mission.cpp
     polygon_coverage_ros_bridge/mission/trajectory_coverage.cpp
+    polygon_coverage_ros_bridge/mission/trajectory_pipeline.cpp
     polygon_coverage_ros_bridge/mission/wall_clearance_warning.cpp
-  DEPENDS kc_geometry kc_validation kc_sweeps kc_coverage kc_parameters kc_planner yaml-cpp)
+    polygon_coverage_ros_bridge/mission/yaml_parameter_reader.cpp
+  DEPENDS kc_geometry kc_validation kc_sweeps kc_coverage kc_trajectory kc_parameters kc_planner
+    yaml-cpp)
 # GeographicLib (the local east-north frame of GeoJSON missions) stays out of the headers.
 target_include_directories(kc_mission PRIVATE ${GeographicLib_INCLUDE_DIRS})
 target_link_libraries(kc_mission PRIVATE ${GeographicLib_LIBRARIES})

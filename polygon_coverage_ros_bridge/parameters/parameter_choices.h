@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "polygon_coverage_ros_bridge/decomposition/sweep_line_decomposition.h"
-#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/sweeps/sensor_options.h"
@@ -17,8 +17,8 @@
 namespace kinematic_coverage::core {
 
 /// The names of a name-valued parameter (docs/REFERENCE.md, Parameters) and the stage
-/// option each stands for: the one list of them, which both the range check and the
-/// mapping to stage options read.
+/// option each stands for: the one list of them, which both the parameter schema (the
+/// names allowed) and the mapping to stage options read.
 template <typename Value, std::size_t N>
 using ParameterChoices = std::array<std::pair<const char*, Value>, N>;
 
@@ -51,18 +51,24 @@ inline constexpr ParameterChoices<ReplanningMethod, 3> kReplanningMethods{
      {"concave_hull", ReplanningMethod::kConcaveHull},
      {"footprint", ReplanningMethod::kFootprint}}};
 
-/// The option that parameter `name`'s `value` names. Throws InvalidInputError naming the
-/// parameter, the value and the names allowed, e.g. "sensor_model = 'sonar' is not one of:
-/// frustum, line".
+/// The option that `value` names, one of `choices` (checked against the parameter schema
+/// before). Throws InternalError for a name that is not one of them.
 template <typename Value, std::size_t N>
-Value choiceOf(const char* name, const std::string& value,
-               const ParameterChoices<Value, N>& choices) {
-  std::string list;
+Value choiceOf(const std::string& value, const ParameterChoices<Value, N>& choices) {
   for (const auto& [choice_name, choice] : choices) {
     if (value == choice_name) return choice;
-    list += (list.empty() ? "" : ", ") + std::string(choice_name);
   }
-  throw InvalidInputError(std::string(name) + " = '" + value + "' is not one of: " + list);
+  throw InternalError("parameters", "'" + value + "' names no option");
+}
+
+/// The name of `value` among `choices`, for log lines. Throws InternalError for a value
+/// none of them names.
+template <typename Value, std::size_t N>
+const char* nameOf(Value value, const ParameterChoices<Value, N>& choices) {
+  for (const auto& [choice_name, choice] : choices) {
+    if (value == choice) return choice_name;
+  }
+  throw InternalError("parameters", "an option without a name");
 }
 
 }  // namespace kinematic_coverage::core

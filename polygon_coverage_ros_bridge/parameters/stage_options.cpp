@@ -4,13 +4,13 @@
 #include <cstdint>
 
 #include "polygon_coverage_ros_bridge/parameters/parameter_choices.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 
 namespace kinematic_coverage::core {
 namespace {
 
 // The mappings of a parameter set already checked: each public function below checks the
-// set once (ParameterValidator), then maps with these.
+// set once (checkParameters), then maps with these.
 
 VehicleLimits vehicleLimits(const PlannerParameters& p) {
   return VehicleLimits{p.v_max, p.a_max, p.yaw_rate_max, p.turning_radius};
@@ -27,7 +27,7 @@ double gapClearance(const PlannerParameters& p) {
 
 SensorOptions sensorOptions(const PlannerParameters& p) {
   SensorOptions options;
-  options.model = choiceOf("sensor_model", p.sensor_model, kSensorModels);
+  options.model = choiceOf(p.sensor_model, kSensorModels);
   options.lateral_fov = p.lateral_fov;
   options.onward_fov = p.onward_fov;
   options.lateral_footprint = p.lateral_footprint;
@@ -43,11 +43,9 @@ GlobalSmoothingOptions globalSmoothingOptions(const PlannerParameters& p) {
   options.clearance = smoothingClearance(p);
   const FrustumSensor sensor = FrustumSensor::fromOptions(sensorOptions(p));
   if (p.coverage_preserving) options.preserved_sensor = sensor;
-  if (choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies) ==
-      SmoothingStrategy::kCoverageSafe) {
+  if (choiceOf(p.smoothing_strategy, kSmoothingStrategies) == SmoothingStrategy::kCoverageSafe) {
     options.makeCoverageSafe(sensor, p.wall_distance);
-    options.coverage_safe_area =
-        choiceOf("coverage_safe_area", p.coverage_safe_area, kCoverageSafeAreas);
+    options.coverage_safe_area = choiceOf(p.coverage_safe_area, kCoverageSafeAreas);
     options.max_turning_radius = p.max_turning_radius > 0.0
                                      ? p.max_turning_radius
                                      : std::max(p.turning_radius, p.v_max / p.yaw_rate_max);
@@ -56,11 +54,28 @@ GlobalSmoothingOptions globalSmoothingOptions(const PlannerParameters& p) {
 }
 
 const PlannerParameters& validated(const PlannerParameters& parameters) {
-  ParameterValidator().validate(parameters);
+  checkParameters(parameters);
   return parameters;
 }
 
 }  // namespace
+
+PlanningOptions planningOptionsOf(const PlannerParameters& parameters) {
+  const PlannerParameters& p = validated(parameters);
+  PlanningOptions options;
+  options.vehicle = vehicleLimits(p);
+  options.sensor = sensorOptions(p);
+  options.decomposition_type = choiceOf(p.decomposition_type, kDecompositionTypes);
+  options.cell_joining = choiceOf(p.cell_joining, kCellJoinings);
+  options.boundary_simplification =
+      p.boundary_simplification * options.frustumSensor().sweepDistance();
+  options.cost_function = choiceOf(p.cost_function, kCostFunctions);
+  options.wall_distance = p.wall_distance;
+  options.offset_parts = choiceOf(p.offset_parts, kOffsetParts);
+  options.gap_clearance = gapClearance(p);
+  options.coverage_repair = p.coverage_repair;
+  return options;
+}
 
 VehicleLimits vehicleLimitsOf(const PlannerParameters& parameters) {
   return vehicleLimits(validated(parameters));
@@ -87,21 +102,20 @@ double boundarySimplificationOf(const PlannerParameters& parameters) {
 }
 
 DecompositionType decompositionTypeOf(const PlannerParameters& parameters) {
-  return choiceOf("decomposition_type", validated(parameters).decomposition_type,
-                  kDecompositionTypes);
+  return choiceOf(validated(parameters).decomposition_type, kDecompositionTypes);
 }
 
 CellJoining cellJoiningOf(const PlannerParameters& parameters) {
-  return choiceOf("cell_joining", validated(parameters).cell_joining, kCellJoinings);
+  return choiceOf(validated(parameters).cell_joining, kCellJoinings);
 }
 
 OffsetParts offsetPartsOf(const PlannerParameters& parameters) {
-  return choiceOf("offset_parts", validated(parameters).offset_parts, kOffsetParts);
+  return choiceOf(validated(parameters).offset_parts, kOffsetParts);
 }
 
 SegmentCost segmentCostOf(const PlannerParameters& parameters) {
   const PlannerParameters& p = validated(parameters);
-  return SegmentCost(choiceOf("cost_function", p.cost_function, kCostFunctions), vehicleLimits(p));
+  return SegmentCost(choiceOf(p.cost_function, kCostFunctions), vehicleLimits(p));
 }
 
 GlobalSmoothingOptions globalSmoothingOptionsOf(const PlannerParameters& parameters) {
@@ -113,12 +127,12 @@ TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters) {
   TrajectoryOptions options;
   options.vehicle = vehicleLimits(p);
   options.smoothing = p.smoothing;
-  options.strategy = choiceOf("smoothing_strategy", p.smoothing_strategy, kSmoothingStrategies);
+  options.strategy = choiceOf(p.smoothing_strategy, kSmoothingStrategies);
   options.global = globalSmoothingOptions(p);
   options.segment_sampling_distance = p.segment_sampling_distance;
   options.arc_sampling_distance = p.arc_sampling_distance;
   options.rotation_sampling_angle = p.rotation_sampling_angle;
-  options.turn_curve = choiceOf("turn_curve", p.turn_curve, kTurnCurves);
+  options.turn_curve = choiceOf(p.turn_curve, kTurnCurves);
   options.curvature_rate_max = p.curvature_rate_max;
   options.wall_distance = p.wall_distance;
   return options;
@@ -134,7 +148,7 @@ TrajectoryOptions trajectoryOptionsOf(const PlannerParameters& parameters,
 RobotModel robotModelOf(const PlannerParameters& parameters) {
   const PlannerParameters& p = validated(parameters);
   RobotModel model;
-  model.vehicle_model = choiceOf("vehicle_model", p.vehicle_model, kVehicleModels);
+  model.vehicle_model = choiceOf(p.vehicle_model, kVehicleModels);
   model.vehicle = vehicleLimits(p);
   RigidBodyParameters& body = model.body;
   body.mass = p.mass;
@@ -171,7 +185,7 @@ RobotModel robotModelOf(const PlannerParameters& parameters) {
 RemainingAreaOptions remainingAreaOptionsOf(const PlannerParameters& parameters) {
   const PlannerParameters& p = validated(parameters);
   RemainingAreaOptions options;
-  options.method = choiceOf("replanning_method", p.replanning_method, kReplanningMethods);
+  options.method = choiceOf(p.replanning_method, kReplanningMethods);
   options.sensor = sensorOptions(p);
   options.sliver_fraction = p.replanning_sliver_fraction;
   options.min_area = p.replanning_min_area;

@@ -3,6 +3,7 @@
 #include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
 #include "polygon_coverage_ros_bridge/decomposition/sweep_line_decomposition.h"
 #include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/planning_options.h"
 #include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
@@ -16,9 +17,13 @@ namespace kinematic_coverage::core {
 
 // The one place where the flat parameter set of mission files, `--set`, config/*.yaml and
 // the nodes' private parameters (PlannerParameters) becomes the options each stage reads.
-// Every function first checks the whole set (ParameterValidator), so a stage is only
+// Every function first checks the whole set (checkParameters), so a stage is only
 // ever handed options in range; each throws InvalidInputError naming the first parameter
 // out of range.
+
+/// The planner's options: the vehicle limits, the sensor, the decomposition, the route and
+/// the repair.
+PlanningOptions planningOptionsOf(const PlannerParameters& parameters);
 
 /// v_max, a_max, yaw_rate_max and turning_radius.
 VehicleLimits vehicleLimitsOf(const PlannerParameters& parameters);

@@ -19,6 +19,7 @@
 #include "polygon_coverage_ros_bridge/geometry/region_intersection.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_choices.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/planner/reachable_offset_parts.h"
 #include "polygon_coverage_ros_bridge/repair/unseen_area_repair.h"
@@ -200,7 +201,7 @@ std::string passageText(const SealedPart& sealed, double gap_clearance) {
 /// plan->unreachable_parts, each with its passageText in `passages`; a goal inside one is
 /// refused.
 std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
-                                          const PlannerParameters& parameters, const Point2& start,
+                                          const PlanningOptions& options, const Point2& start,
                                           const Point2& goal, double tolerance, CoveragePlan* plan,
                                           std::vector<std::string>* passages) {
   const std::vector<PolygonWithHoles> parts = plan->offset_parts;
@@ -208,7 +209,7 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
     plan->route_area = parts.front();
     return parts;
   }
-  if (offsetPartsOf(parameters) == OffsetParts::kLargest) {
+  if (options.offset_parts == OffsetParts::kLargest) {
     for (std::size_t k = 1; k < parts.size(); ++k) {
       plan->warnings.push_back("the wall offset splits the free area: " + partName(parts[k]) +
                                " is not planned (offset_parts: largest)");
@@ -216,8 +217,8 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
     plan->route_area = parts.front();
     return {parts.front()};
   }
-  const double gap_clearance = gapClearanceOf(parameters);
-  JoinedOffsetArea joined = joinOffsetParts(free_area, parameters, parts, start);
+  const double gap_clearance = options.gap_clearance;
+  JoinedOffsetArea joined = joinOffsetParts(free_area, options, parts, start);
   for (const SealedPart& sealed : joined.sealed_parts) {
     const PolygonWithHoles& part = parts[sealed.part];
     const std::string passage = passageText(sealed, gap_clearance);
@@ -240,12 +241,12 @@ std::vector<PolygonWithHoles> partsToPlan(const PolygonWithHoles& free_area,
     plan->offset_parts.push_back(parts[k]);
   }
   for (OffsetGap& gap : joined.gaps) {
-    if (!keepsClearance(gap.clearance_m, parameters.wall_distance)) {
+    if (!keepsClearance(gap.clearance_m, options.wall_distance)) {
       std::ostringstream warning;
       warning << "the wall offset splits the free area: transits to "
               << partName(parts[gap.to_part]) << " pass a gap at "
               << formatPoint(gap.narrowest_point) << " with " << gap.clearance_m
-              << " m clearance, nearer than wall_distance " << parameters.wall_distance
+              << " m clearance, nearer than wall_distance " << options.wall_distance
               << " m (gap_clearance " << gap_clearance << " m allows it)";
       plan->warnings.push_back(warning.str());
     }
@@ -323,7 +324,7 @@ std::vector<Point2> simplifiedPath(const std::vector<Point2>& path, const std::v
 /// What the stages of one planning run share: the request, the plan being built and the
 /// listener that hears of each stage as it finishes.
 struct PlanningRun {
-  const PlannerParameters& parameters;
+  const PlanningOptions& options;
   const PolygonWithHoles& free_area;
   const Point2& start;
   const Point2& goal;
@@ -351,12 +352,12 @@ struct OffsetStage {
 OffsetStage offsetStage(const PlanningRun& run) {
   const Clock::time_point t = Clock::now();
   CoveragePlan& plan = run.plan;
-  plan.offset_parts = computeOffsetFreeArea(run.free_area, run.parameters.wall_distance).parts;
+  plan.offset_parts = computeOffsetFreeArea(run.free_area, run.options.wall_distance).parts;
   const std::size_t part_count = plan.offset_parts.size();
   OffsetStage offset;
   std::vector<std::string> passages;  // one per plan.unreachable_parts
-  offset.planned_parts = partsToPlan(run.free_area, run.parameters, run.start, run.goal,
-                                     run.tolerance, &plan, &passages);
+  offset.planned_parts =
+      partsToPlan(run.free_area, run.options, run.start, run.goal, run.tolerance, &plan, &passages);
   offset.start_inside = entryPoint(run.free_area, plan.route_area, offset.planned_parts, run.start,
                                    "start", run.tolerance);
   try {
@@ -394,7 +395,7 @@ std::vector<PolygonWithHoles> regionStage(const PlanningRun& run,
                                           const std::vector<PolygonWithHoles>& planned_parts,
                                           const std::vector<PolygonWithHoles>& coverage_region) {
   const Clock::time_point t = Clock::now();
-  const FrustumSensor region_sensor = sensorOf(run.parameters);
+  const FrustumSensor region_sensor = run.options.frustumSensor();
   std::vector<PolygonWithHoles> parts;
   for (const PolygonWithHoles& part : planned_parts) {
     for (PolygonWithHoles& inside : intersectWithRegions(
@@ -440,7 +441,7 @@ std::vector<Decomposition> decomposeStage(const PlanningRun& run,
                                           const std::vector<PolygonWithHoles>& parts,
                                           CellJoining joining) {
   const Clock::time_point t = Clock::now();
-  const DecompositionType type = decompositionTypeOf(run.parameters);
+  const DecompositionType type = run.options.decomposition_type;
   DecompositionOptions options;
   options.joining = joining;
   std::vector<Decomposition> decompositions;
@@ -453,20 +454,20 @@ std::vector<Decomposition> decomposeStage(const PlanningRun& run,
     for (const Cell& cell : decompositions.back().cells) run.plan.cells.push_back(cell.polygon);
   }
   std::ostringstream summary;
-  summary << cell_count << " " << run.parameters.decomposition_type << " cells"
+  summary << cell_count << " " << nameOf(type, kDecompositionTypes) << " cells"
           << (joining == CellJoining::kLongestOverlap ? " (joined across critical points)" : "")
           << ", best of " << directions_tried << " directions";
   run.stage("decompose", t, summary.str());
 
   // Size limits, before anything of their size is built.
-  checkCellLimit(decompositions, run.parameters);
+  checkCellLimit(decompositions, type);
   if (const std::size_t dropped = fitDirectionsToGtspLimit(decompositions); dropped > 0) {
     run.plan.warnings.push_back(
         "kept only the best lane directions of the cells: " + std::to_string(dropped) +
         " of their other directions would have taken the generalized TSP over " +
         std::to_string(kMaxGtspNodes) + " nodes");
   }
-  checkLaneLimit(decompositions, run.parameters);
+  checkLaneLimit(decompositions, run.options.sensor);
   return decompositions;
 }
 
@@ -508,9 +509,9 @@ SweepStage sweepStage(const PlanningRun& run, Clock::time_point since, const Dec
   generators.reserve(parts.exact.size());
   std::vector<std::pair<std::size_t, const Cell*>> cells;  // part, cell
   for (std::size_t k = 0; k < parts.exact.size(); ++k) {
-    generators.emplace_back(
-        sensor, SweepPatternGenerator::laneEndInset(sensor, run.parameters.wall_distance),
-        parts.decomposed[k], parts.exact[k]);
+    generators.emplace_back(sensor,
+                            SweepPatternGenerator::laneEndInset(sensor, run.options.wall_distance),
+                            parts.decomposed[k], parts.exact[k]);
     for (const Cell& cell : decompositions[k].cells) cells.emplace_back(k, &cell);
   }
   // The cells' patterns on every hardware thread, each cell's transitions routed with its
@@ -633,7 +634,7 @@ void chosetAlternativeStage(const PlanningRun& run, const std::vector<PolygonWit
     return;
   }
   CoveragePlan scratch;
-  const PlanningRun quiet{run.parameters,  run.free_area, run.start,    run.goal,
+  const PlanningRun quiet{run.options,     run.free_area, run.start,    run.goal,
                           StageCallback(), scratch,       run.tolerance};
   const std::vector<Decomposition> decompositions =
       decomposeStage(quiet, parts, CellJoining::kAtCriticalPoints);
@@ -746,14 +747,14 @@ std::future<ExactOffsetStage> exactOffsetInBackground(
   return std::async(std::launch::async, [&run, &offset, &sensor, coverage_region,
                                          offset_parts = run.plan.offset_parts] {
     // With no wall distance the offset is exact: no round parts, and each part stays itself.
-    const double wall_distance = run.parameters.wall_distance;
+    const double wall_distance = run.options.wall_distance;
     const std::vector<PolygonWithHoles> round =
         wall_distance > 0.0
             ? WallOffset(run.free_area).at(wall_distance, OffsetCorners::kRound).parts
             : std::vector<PolygonWithHoles>{};
     ExactOffsetStage stage;
     stage.exact_offset_parts = roundPartsHolding(round, offset_parts);
-    if (run.parameters.coverage_repair) {
+    if (run.options.coverage_repair) {
       stage.measuring_raster = UnseenAreaRepair::measuringRaster(
           run.free_area, roundPartsHolding(round, offset.planned_parts), sensor, coverage_region);
     }
@@ -771,7 +772,7 @@ std::string repairStage(const PlanningRun& run, const OffsetStage& offset,
   // Patches run along the route area's boundary: the planned parts and the gaps between
   // them, whose necks the exact offset's reachable area holds too.
   const UnseenAreaRepair repair(std::move(measuring_raster), run.free_area,
-                                run.parameters.wall_distance, {plan.route_area}, sensor, graph,
+                                run.options.wall_distance, {plan.route_area}, sensor, graph,
                                 segment_cost);
   // Jogs whose removal shifted a lane off what it had to see are put back first: near
   // a wall that the lane's footprint reaches exactly, any shift inward leaves a band.
@@ -815,8 +816,10 @@ std::string repairStage(const PlanningRun& run, const OffsetStage& offset,
 
 }  // namespace
 
-CoveragePlanner::CoveragePlanner(PlannerParameters parameters)
-    : parameters_(std::move(parameters)) {}
+CoveragePlanner::CoveragePlanner(PlanningOptions options) : options_(std::move(options)) {}
+
+CoveragePlanner::CoveragePlanner(const PlannerParameters& parameters)
+    : CoveragePlanner(planningOptionsOf(parameters)) {}
 
 CoveragePlan CoveragePlanner::plan(const PolygonWithHoles& free_area, const Point2& start,
                                    const Point2& goal, const StageCallback& on_stage) const {
@@ -839,7 +842,7 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   double scale = 1.0;
   for (const Point2& p : free_area.hull) scale = std::max(scale, p.cwiseAbs().maxCoeff());
   const PlanningRun run{
-      parameters_, free_area, start, goal, on_stage, plan, kRelativeInsideTolerance * scale};
+      options_, free_area, start, goal, on_stage, plan, kRelativeInsideTolerance * scale};
 
   const OffsetStage offset = offsetStage(run);
   // The parts to cover: the planned parts of the offset free area, or their parts inside
@@ -852,22 +855,22 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
   // over a size limit.
   const char* failing_stage = "simplify";
   try {
-    const FrustumSensor sensor = sensorOf(parameters_);
+    const FrustumSensor sensor = options_.frustumSensor();
     // Joined before `sensor` goes out of scope, even when a stage throws.
     std::future<ExactOffsetStage> exact_offset =
         exactOffsetInBackground(run, offset, sensor, coverage_region);
-    const double simplification = boundarySimplificationOf(parameters_);
+    const double simplification = options_.boundary_simplification;
     const std::vector<PolygonWithHoles> simplified = simplifyStage(run, parts, simplification);
     const DecomposedParts decomposed{parts, simplified};
 
     failing_stage = "decompose";
     const CellJoining joining =
-        appliedCellJoining(decompositionTypeOf(parameters_), cellJoiningOf(parameters_));
+        appliedCellJoining(options_.decomposition_type, options_.cell_joining);
     const std::vector<Decomposition> decompositions = decomposeStage(run, simplified, joining);
 
     const Clock::time_point sweeps_start = Clock::now();
     failing_stage = "sweeps";
-    const SegmentCost segment_cost = segmentCostOf(parameters_);
+    const SegmentCost segment_cost = options_.segmentCost();
     const VisibilityGraph graph(plan.route_area, segment_cost);
     Tour tour;
     tour.sweeps = sweepStage(run, sweeps_start, decomposed, decompositions, sensor, graph);
@@ -887,10 +890,10 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     // Jogs shorter than a turning radius would stay sharp turns in smoothing; a shift within
     // half the lateral overlap keeps what the neighbouring lanes rely on seen.
     const double max_jog_shift = 0.5 * (sensor.width() - sensor.sweepDistance());
-    const JogRemoval jog_removal(graph, parameters_.turning_radius, max_jog_shift);
+    const JogRemoval jog_removal(graph, options_.vehicle.turning_radius, max_jog_shift);
     WaypointRoute route =
         pathStage(run, offset, tour.sweeps, tour.solution, graph, jog_removal, scale);
-    const SegmentCost time_cost(CostFunction::kTime, vehicleLimitsOf(parameters_));
+    const SegmentCost time_cost(CostFunction::kTime, options_.vehicle);
     run.stage("path", t, pathSummary(route.waypoints, time_cost));
 
     ExactOffsetStage exact = exact_offset.get();

@@ -7,6 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/planning_options.h"
 #include "polygon_coverage_ros_bridge/planner/planning_limits.h"
 #include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 
@@ -67,7 +68,12 @@ struct CoveragePlan {
 /// and a generalized TSP over them from start to goal.
 class CoveragePlanner {
  public:
-  explicit CoveragePlanner(PlannerParameters parameters);
+  /// A planner with these options; each stage is handed its part of them.
+  explicit CoveragePlanner(PlanningOptions options);
+
+  /// A planner with the options of `parameters` (planningOptionsOf, which checks them once).
+  /// Throws InvalidInputError for parameters out of range.
+  explicit CoveragePlanner(const PlannerParameters& parameters);
 
   /// Plans over `free_area` (cleaned: CCW hull, CW holes, no crossings).
   /// Throws InvalidInputError for an impossible request (empty offset free area, a
@@ -94,7 +100,7 @@ class CoveragePlanner {
                          const Point2& goal, const StageCallback& on_stage) const;
 
  private:
-  PlannerParameters parameters_;
+  PlanningOptions options_;
 };
 
 }  // namespace kinematic_coverage::core

@@ -8,7 +8,6 @@
 #include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
 
@@ -34,8 +33,7 @@ std::size_t gtspNodeCount(const std::vector<Decomposition>& decompositions) {
   return nodes;
 }
 
-void checkCellLimit(const std::vector<Decomposition>& decompositions,
-                    const PlannerParameters& parameters) {
+void checkCellLimit(const std::vector<Decomposition>& decompositions, DecompositionType type) {
   std::size_t cells = 0;
   for (const Decomposition& decomposition : decompositions) cells += decomposition.cells.size();
   if (cells <= kMaxCells) return;
@@ -46,7 +44,7 @@ void checkCellLimit(const std::vector<Decomposition>& decompositions,
              "turns back across the sweep, adds cells: merge or drop small holes, smooth the "
              "boundary), use a larger wall_distance (it closes narrow gaps and rounds off small "
              "bumps), or plan the area in parts";
-  if (decompositionTypeOf(parameters) == DecompositionType::kTrapezoidal) {
+  if (type == DecompositionType::kTrapezoidal) {
     message << "; the boustrophedon decomposition makes fewer cells than the trapezoidal one";
   }
   throw SizeLimitError(message.str());
@@ -101,9 +99,8 @@ double minimumLaneCount(const std::vector<Decomposition>& decompositions, double
   return lanes;
 }
 
-void checkLaneLimit(const std::vector<Decomposition>& decompositions,
-                    const PlannerParameters& parameters) {
-  const double spacing = sensorOf(parameters).sweepDistance();
+void checkLaneLimit(const std::vector<Decomposition>& decompositions, const SensorOptions& sensor) {
+  const double spacing = FrustumSensor::fromOptions(sensor).sweepDistance();
   const double lanes = minimumLaneCount(decompositions, spacing);
   const double limit = static_cast<double>(kMaxSweeps);
   if (lanes <= limit) return;
@@ -115,7 +112,7 @@ void checkLaneLimit(const std::vector<Decomposition>& decompositions,
           << " m, which is (1 - lateral_overlap) x the footprint width): the sweep distance must "
              "grow about "
           << lanes / limit << " times: ";
-  if (sensorOptionsOf(parameters).model == SensorModel::kLine) {
+  if (sensor.model == SensorModel::kLine) {
     message << "a larger lateral_footprint";
   } else {
     message << "a larger sensor_distance (the sensor's height above the bottom) or lateral_fov";

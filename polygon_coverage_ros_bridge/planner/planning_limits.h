@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
-#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/sweeps/sensor_options.h"
 
 namespace kinematic_coverage::core {
 
@@ -26,8 +26,7 @@ std::size_t gtspNodeCount(const std::vector<Decomposition>& decompositions);
 
 /// Throws InvalidInputError when the decompositions have more than kMaxCells cells in all,
 /// saying by how many and what reduces them.
-void checkCellLimit(const std::vector<Decomposition>& decompositions,
-                    const PlannerParameters& parameters);
+void checkCellLimit(const std::vector<Decomposition>& decompositions, DecompositionType type);
 
 /// Keeps the cells' best lane directions so that gtspNodeCount stays within kMaxGtspNodes:
 /// every cell's best direction, then every cell's second best while they fit, and so on
@@ -42,7 +41,6 @@ double minimumLaneCount(const std::vector<Decomposition>& decompositions, double
 
 /// Throws InvalidInputError when minimumLaneCount exceeds kMaxSweeps, saying by how much and
 /// which parameters widen the sweep distance.
-void checkLaneLimit(const std::vector<Decomposition>& decompositions,
-                    const PlannerParameters& parameters);
+void checkLaneLimit(const std::vector<Decomposition>& decompositions, const SensorOptions& sensor);
 
 }  // namespace kinematic_coverage::core

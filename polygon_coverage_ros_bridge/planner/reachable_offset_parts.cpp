@@ -7,7 +7,6 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
 
@@ -24,12 +23,11 @@ std::size_t nearestPart(const std::vector<PolygonWithHoles>& parts, const Point2
   return best;
 }
 
-JoinedOffsetArea joinOffsetParts(const PolygonWithHoles& free_area,
-                                 const PlannerParameters& parameters,
+JoinedOffsetArea joinOffsetParts(const PolygonWithHoles& free_area, const PlanningOptions& options,
                                  const std::vector<PolygonWithHoles>& parts, const Point2& start) {
   JoinedOffsetArea joined;
   try {
-    joined = OffsetPartJoiner(free_area, parameters.wall_distance, gapClearanceOf(parameters))
+    joined = OffsetPartJoiner(free_area, options.wall_distance, options.gap_clearance)
                  .join(parts, nearestPart(parts, start));
   } catch (const SizeLimitError&) {
     throw;
@@ -43,22 +41,22 @@ JoinedOffsetArea joinOffsetParts(const PolygonWithHoles& free_area,
 }
 
 std::vector<PolygonWithHoles> reachableOffsetParts(const PolygonWithHoles& free_area,
-                                                   const PlannerParameters& parameters,
+                                                   const PlanningOptions& options,
                                                    const Point2& start) {
   std::vector<PolygonWithHoles> parts =
-      computeOffsetFreeArea(free_area, parameters.wall_distance).parts;
-  if (parts.size() == 1 || offsetPartsOf(parameters) == OffsetParts::kLargest) return parts;
-  const JoinedOffsetArea joined = joinOffsetParts(free_area, parameters, parts, start);
+      computeOffsetFreeArea(free_area, options.wall_distance).parts;
+  if (parts.size() == 1 || options.offset_parts == OffsetParts::kLargest) return parts;
+  const JoinedOffsetArea joined = joinOffsetParts(free_area, options, parts, start);
   std::vector<PolygonWithHoles> reachable;
   for (std::size_t k : joined.joined_parts) reachable.push_back(parts[k]);
   return reachable;
 }
 
-ReachableOffset reachableOffset(const PolygonWithHoles& free_area,
-                                const PlannerParameters& parameters, const Point2& start) {
+ReachableOffset reachableOffset(const PolygonWithHoles& free_area, const PlanningOptions& options,
+                                const Point2& start) {
   ReachableOffset offset;
-  offset.parts = reachableOffsetParts(free_area, parameters, start);
-  offset.exact_parts = exactOffsetParts(free_area, parameters.wall_distance, offset.parts);
+  offset.parts = reachableOffsetParts(free_area, options, start);
+  offset.exact_parts = exactOffsetParts(free_area, options.wall_distance, offset.parts);
   return offset;
 }
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/planning_options.h"
 #include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 
 namespace kinematic_coverage::core {
@@ -14,12 +14,11 @@ namespace kinematic_coverage::core {
 std::size_t nearestPart(const std::vector<PolygonWithHoles>& parts, const Point2& p);
 
 /// The offset free area's `parts` (several, of a cleaned `free_area`) joined for a robot
-/// starting at `start`: OffsetPartJoiner with the parameters' wall distance and gap
+/// starting at `start`: OffsetPartJoiner with the options' wall distance and gap
 /// clearance, anchored at the part nearest the start. The planner and
 /// reachableOffsetParts join alike. Throws SizeLimitError over the joiner's limits, and
 /// InternalError when joining valid parts fails (not the user's error).
-JoinedOffsetArea joinOffsetParts(const PolygonWithHoles& free_area,
-                                 const PlannerParameters& parameters,
+JoinedOffsetArea joinOffsetParts(const PolygonWithHoles& free_area, const PlanningOptions& options,
                                  const std::vector<PolygonWithHoles>& parts, const Point2& start);
 
 /// The parts of the offset free area of a cleaned `free_area` that count as reachable for a
@@ -29,7 +28,7 @@ JoinedOffsetArea joinOffsetParts(const PolygonWithHoles& free_area,
 /// trajectory node measure the reachable area as `plan` does. Throws InvalidInputError as
 /// computeOffsetFreeArea.
 std::vector<PolygonWithHoles> reachableOffsetParts(const PolygonWithHoles& free_area,
-                                                   const PlannerParameters& parameters,
+                                                   const PlanningOptions& options,
                                                    const Point2& start);
 
 /// The reachable parts (reachableOffsetParts) and the exact offset around them
@@ -41,7 +40,7 @@ struct ReachableOffset {
 };
 
 /// ReachableOffset of a cleaned `free_area` for a robot starting at `start`.
-ReachableOffset reachableOffset(const PolygonWithHoles& free_area,
-                                const PlannerParameters& parameters, const Point2& start);
+ReachableOffset reachableOffset(const PolygonWithHoles& free_area, const PlanningOptions& options,
+                                const Point2& start);
 
 }  // namespace kinematic_coverage::core

@@ -3,11 +3,14 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_choices.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 
@@ -51,8 +54,11 @@ Point2 replanStart(const PolygonWithHoles& free_area, const Point2& last, double
 
 }  // namespace
 
+Replanner::Replanner(PlanningOptions planning, RemainingAreaOptions remaining)
+    : planning_options_(std::move(planning)), remaining_options_(std::move(remaining)) {}
+
 Replanner::Replanner(const PlannerParameters& parameters)
-    : parameters_(parameters), remaining_options_(remainingAreaOptionsOf(parameters)) {}
+    : Replanner(planningOptionsOf(parameters), remainingAreaOptionsOf(parameters)) {}
 
 ReplannedMission Replanner::replan(const PolygonWithHoles& updated_polygon,
                                    const std::vector<Pose2>& visited, const Point2& goal,
@@ -98,7 +104,7 @@ ReplannedMission Replanner::replanFrom(
   if (!std::isfinite(last.x) || !std::isfinite(last.y)) {
     throw InvalidInputError("the last visited pose has a non-finite coordinate");
   }
-  BuiltFreeArea built = FreeAreaBuilder(boundarySimplificationOf(parameters_))
+  BuiltFreeArea built = FreeAreaBuilder(planning_options_.boundary_simplification)
                             .build(updated_polygon, {{"goal", goal}});
   stage_took("validate", built.validate_s,
              "updated polygon and goal valid, " + std::to_string(visited_count) + " visited poses");
@@ -106,7 +112,7 @@ ReplannedMission Replanner::replanFrom(
   Clock::time_point t = Clock::now();
   result.free_area = std::move(built.cleaned.free_area);
   result.warnings = std::move(built.cleaned.warnings);
-  result.start = replanStart(result.free_area, last.position(), parameters_.wall_distance);
+  result.start = replanStart(result.free_area, last.position(), planning_options_.wall_distance);
   {
     std::ostringstream summary;
     summary << "free area " << area(result.free_area) << " m^2, " << result.free_area.holes.size()
@@ -120,15 +126,15 @@ ReplannedMission Replanner::replanFrom(
     const RemainingArea& remaining = result.remaining;
     std::ostringstream summary;
     summary.precision(4);
-    summary << parameters_.replanning_method << ": " << remaining.seen_area_m2 << " m^2 seen, "
-            << remaining.remaining_area_m2 << " m^2 left, " << remaining.parts.size()
-            << " parts kept (" << remaining.kept_area_m2 << " m^2), " << remaining.dropped_parts
-            << " small parts dropped";
+    summary << nameOf(remaining_options_.method, kReplanningMethods) << ": "
+            << remaining.seen_area_m2 << " m^2 seen, " << remaining.remaining_area_m2
+            << " m^2 left, " << remaining.parts.size() << " parts kept (" << remaining.kept_area_m2
+            << " m^2), " << remaining.dropped_parts << " small parts dropped";
     stage("remaining", t, summary.str());
   }
 
   result.plan =
-      CoveragePlanner(parameters_)
+      CoveragePlanner(planning_options_)
           .planRegion(result.free_area, result.remaining.parts, result.start, goal, on_stage);
   result.plan.stages.insert(result.plan.stages.begin(), stages.begin(), stages.end());
   result.warnings.insert(result.warnings.end(), result.plan.warnings.begin(),

@@ -7,6 +7,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
+#include "polygon_coverage_ros_bridge/parameters/planning_options.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "trajectory_generation_tools/replanning/remaining_area.h"
 #include "trajectory_generation_tools/replanning/visited_history.h"
@@ -31,7 +32,11 @@ struct ReplannedMission {
 /// (docs/REFERENCE.md, Geometry and input rules).
 class Replanner {
  public:
-  /// Throws InvalidInputError for parameters out of range.
+  /// A replanner that plans with `planning` and takes the remaining area with `remaining`.
+  Replanner(PlanningOptions planning, RemainingAreaOptions remaining);
+
+  /// The same with the options of `parameters` (checked once). Throws InvalidInputError
+  /// for parameters out of range.
   explicit Replanner(const PlannerParameters& parameters);
 
   /// Throws InvalidInputError for an invalid polygon, no or non-finite visited poses, a
@@ -52,7 +57,7 @@ class Replanner {
       const Point2& goal, const StageCallback& on_stage,
       const std::function<RemainingArea(const PolygonWithHoles&)>& remaining_of) const;
 
-  PlannerParameters parameters_;
+  PlanningOptions planning_options_;
   RemainingAreaOptions remaining_options_;
 };
 

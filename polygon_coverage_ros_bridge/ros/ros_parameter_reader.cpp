@@ -3,32 +3,31 @@
 #include <xmlrpcpp/XmlRpcValue.h>
 
 #include <optional>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/read_mission.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 
 namespace kinematic_coverage::nodes {
 namespace {
 
-/// A parameter server value as the YAML scalar a mission file would hold.
-std::string asYamlScalar(const std::string& name, XmlRpc::XmlRpcValue& value) {
+/// A parameter server value as a parameter's value: a boolean, a number (an integer or a
+/// double) or a name.
+core::ParameterValue parameterValueOf(const std::string& where, XmlRpc::XmlRpcValue& value) {
   switch (value.getType()) {
     case XmlRpc::XmlRpcValue::TypeBoolean:
-      return static_cast<bool>(value) ? "true" : "false";
+      return static_cast<bool>(value);
     case XmlRpc::XmlRpcValue::TypeInt:
-      return std::to_string(static_cast<int>(value));
+      return static_cast<double>(static_cast<int>(value));
     case XmlRpc::XmlRpcValue::TypeDouble:
-      return core::formatRoundTrip(static_cast<double>(value));
+      return static_cast<double>(value);
     case XmlRpc::XmlRpcValue::TypeString:
       return static_cast<std::string>(value);
     default:
-      throw core::InvalidInputError("parameter ~" + name +
-                                    " must be a number, a name or true/false");
+      throw core::InvalidInputError(where + " must be a number, a name or true/false");
   }
 }
 
@@ -105,18 +104,21 @@ std::optional<core::GeoPoint> readGeoPointParameter(const ros::NodeHandle& node,
 }
 
 core::PlannerParameters readPlannerParameters(const ros::NodeHandle& private_node) {
-  core::PlannerParameters base;
+  core::PlannerParameters parameters;
   const std::string config = readStringParameter(private_node, "config", "");
-  if (!config.empty()) base = core::MissionFileReader().readParameters(config);
+  if (!config.empty()) parameters = core::MissionFileReader().readParameters(config);
   const std::string mission = readStringParameter(private_node, "mission", "");
-  if (!mission.empty()) base = core::readMission(mission, {}, base).parameters;
-  std::vector<std::string> overrides;
-  for (const std::string& name : core::MissionFileReader::parameterNames()) {
+  if (!mission.empty()) parameters = core::readMission(mission, {}, parameters).parameters;
+  core::ParameterOrigins origins;
+  for (const core::ParameterDeclaration& declaration : core::parameterSchema()) {
     XmlRpc::XmlRpcValue value;
-    if (!private_node.getParam(name, value)) continue;
-    overrides.push_back(name + "=" + asYamlScalar(name, value));
+    if (!private_node.getParam(declaration.name, value)) continue;
+    const std::string where = "parameter " + private_node.resolveName(declaration.name);
+    core::assignParameter(parameters, declaration, parameterValueOf(where, value), where);
+    origins[declaration.name] = where;
   }
-  return core::MissionFileReader().withOverrides(base, overrides);
+  core::checkParameters(parameters, origins);
+  return parameters;
 }
 
 }  // namespace kinematic_coverage::nodes

@@ -13,12 +13,12 @@ namespace kinematic_coverage::core {
 SegmentCost::SegmentCost(CostFunction cost_function, const VehicleLimits& limits)
     : cost_function_(cost_function), limits_(limits) {
   if (cost_function_ != CostFunction::kTime) return;
-  for (const auto& [name, value] : {std::pair<const char*, double>{"v_max", limits.v_max},
-                                    std::pair<const char*, double>{"a_max", limits.a_max}}) {
+  for (const auto& [name, value] : {std::pair<const char*, double>{"speed", limits.v_max},
+                                    std::pair<const char*, double>{"acceleration", limits.a_max}}) {
     if (!std::isfinite(value) || value <= 0.0) {
       std::ostringstream message;
-      message << "parameter " << name << " must be a positive number for cost_function "
-              << "'time', got " << value;
+      message << "SegmentCost: the " << name << " limit must be a positive number for the time "
+              << "cost, got " << value;
       throw InvalidInputError(message.str());
     }
   }

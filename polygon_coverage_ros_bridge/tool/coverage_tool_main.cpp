@@ -13,6 +13,7 @@
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_command.h"
 #include "polygon_coverage_ros_bridge/tool/evaluate_command.h"
 #include "polygon_coverage_ros_bridge/tool/export_command.h"
+#include "polygon_coverage_ros_bridge/tool/parameters_command.h"
 #include "polygon_coverage_ros_bridge/tool/plan_command.h"
 #include "polygon_coverage_ros_bridge/tool/replan_command.h"
 #include "polygon_coverage_ros_bridge/tool/simulate_command.h"
@@ -39,6 +40,8 @@ const char* const kUsage =
     "      a robot model follows a trajectory: DIR/actual.csv, metrics.json, plot.png\n"
     "  export MISSION.yaml --datum LAT,LON --out FILE.geojson\n"
     "      the mission as a geo-referenced GeoJSON (WGS84), which plan reads back\n"
+    "  parameters [--markdown]\n"
+    "      every parameter with its default, unit, valid values and description\n"
     "  gtsp INSTANCE.gtsp [--seed N] [--time-limit S]\n"
     "      solve a GTSPLIB instance; prints one JSON line\n"
     "--config FILE: parameters from FILE (e.g. config/thesis.yaml, the thesis's settings)\n"
@@ -79,6 +82,10 @@ int runCommand(const std::vector<std::string>& args) {
   }
   if (command == "simulate") {
     SimulateCommand().run(rest, std::cout, std::cerr);
+    return kExitSuccess;
+  }
+  if (command == "parameters") {
+    ParametersCommand().run(rest, std::cout);
     return kExitSuccess;
   }
   if (command == "export") {

@@ -74,7 +74,7 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   // The parts that a robot starting where the trajectory starts reaches, as `plan` counts
   // them: a part beyond a gap narrower than gap_clearance counts as unreachable.
   const ReachableOffset offset =
-      reachableOffset(cleaned.free_area, mission.parameters,
+      reachableOffset(cleaned.free_area, planningOptionsOf(mission.parameters),
                       poses.empty() ? mission.start : Point2(poses.front().position()));
   out << "offset: offset free area " << area(offset.parts) << " m^2 in " << offset.parts.size()
       << (offset.parts.size() == 1 ? " part (" : " parts (")

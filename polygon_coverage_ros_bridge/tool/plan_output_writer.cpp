@@ -1,19 +1,16 @@
 #include "polygon_coverage_ros_bridge/tool/plan_output_writer.h"
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <optional>
 #include <sstream>
 
-#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/base/text_file_writer.h"
-#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
-#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "polygon_coverage_ros_bridge/mission/wall_clearance_warning.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
@@ -24,85 +21,23 @@
 #include "polygon_coverage_ros_bridge/tool/trajectory_csv_writer.h"
 #include "polygon_coverage_ros_bridge/tool/waypoint_csv_writer.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
-#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {
 
 namespace {
 
-/// The smoothed (or segment-only) trajectory of the plan, with its progress line. The
-/// plan and the parameters are valid here: a failure is the package's.
-GeneratedTrajectory generateTrajectory(const PlanOutputRequest& request, std::ostream& out) {
-  const PlannerParameters& parameters = *request.parameters;
-  const auto stage_start = std::chrono::steady_clock::now();
-  GeneratedTrajectory trajectory;
-  try {
-    trajectory =
-        TrajectoryGenerator(trajectoryOptionsOf(parameters, request.plan->exact_offset_parts))
-            .generate(request.plan->waypoints, *request.free_area);
-  } catch (const SizeLimitError&) {
-    throw;
-  } catch (const InvalidInputError& error) {
-    throw InternalError(parameters.smoothing ? "smooth" : "trajectory", error.what());
-  }
+/// The progress line of the trajectory stage.
+void writeTrajectoryLine(const PlannerParameters& parameters, const MeasuredTrajectory& measured,
+                         std::ostream& out) {
+  const GeneratedTrajectory& trajectory = measured.trajectory;
   const SmoothingStatistics& turns = trajectory.statistics;
   out << (parameters.smoothing ? "smooth: " : "trajectory: ") << turns.turns_smoothed << " of "
       << turns.turns_total << " turns smoothed (inner " << turns.inner << ", outer bisector "
       << turns.outer_bisector << ", outer tangent " << turns.outer_tangent << ", reverse curve "
       << turns.reverse_curve << ", bulb " << turns.bulb << "; kept sharp for coverage "
       << turns.kept_for_coverage << "), " << trajectory.poses.size() << " poses, "
-      << formatNumber(trajectory.traversal_time_s) << " s ("
-      << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
-  return trajectory;
-}
-
-/// The poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so that
-/// `coverage_tool evaluate` of that file reports the figures measured on them.
-std::vector<Pose2> writtenPoses(const std::vector<TrajectoryPose>& trajectory) {
-  std::vector<Pose2> poses;
-  poses.reserve(trajectory.size());
-  for (const TrajectoryPose& pose : trajectory) {
-    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
-  }
-  return poses;
-}
-
-/// The plan's unsmoothed trajectory, the reference of what smoothing may lose; none when
-/// the trajectory is unsmoothed itself. A failure is the package's.
-std::optional<std::vector<Pose2>> unsmoothedPoses(const PlanOutputRequest& request) {
-  if (!request.parameters->smoothing) return std::nullopt;
-  PlannerParameters unsmoothed = *request.parameters;
-  unsmoothed.smoothing = false;
-  try {
-    return writtenPoses(
-        TrajectoryGenerator(trajectoryOptionsOf(unsmoothed, request.plan->exact_offset_parts))
-            .generate(request.plan->waypoints, *request.free_area)
-            .poses);
-  } catch (const SizeLimitError&) {
-    throw;
-  } catch (const InvalidInputError& error) {
-    throw InternalError("coverage", error.what());
-  }
-}
-
-/// The coverage of `poses` (with what they fail to see of `reference`'s), with its progress
-/// line; a failure is the package's.
-TrajectoryCoverage measureCoverage(const PlanOutputRequest& request,
-                                   const std::vector<Pose2>& poses,
-                                   const std::optional<std::vector<Pose2>>& reference,
-                                   std::ostream& out) {
-  TrajectoryCoverage coverage;
-  try {
-    coverage = measureTrajectoryCoverage(*request.free_area, request.plan->exact_offset_parts,
-                                         *request.parameters, poses, reference);
-  } catch (const SizeLimitError&) {
-    throw;
-  } catch (const InvalidInputError& error) {
-    throw InternalError("coverage", error.what());
-  }
-  out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
+      << formatNumber(trajectory.traversal_time_s) << " s (" << formatSeconds(measured.generation_s)
       << ")" << std::endl;
-  return coverage;
 }
 
 /// metrics.json (docs/REFERENCE.md, Metrics).
@@ -208,23 +143,28 @@ CoveragePlotData planPlot(const PlanOutputRequest& request, const std::vector<Po
 
 PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string& out_dir,
                              std::ostream& out) {
-  const GeneratedTrajectory trajectory = generateTrajectory(request, out);
-
-  const std::vector<Pose2> poses = writtenPoses(trajectory.poses);
-  const std::optional<std::vector<Pose2>> unsmoothed = unsmoothedPoses(request);
-  const TrajectoryCoverage coverage =
-      measureCoverage(request, poses, request.visited ? std::nullopt : unsmoothed, out);
+  const TrajectoryPipeline pipeline(*request.parameters, request.plan->exact_offset_parts);
+  // Replanning measures the new trajectory alone, and against its sharp path together with
+  // the visited poses.
+  const MeasuredTrajectory measured =
+      pipeline.run(request.plan->waypoints, *request.free_area, !request.visited);
+  writeTrajectoryLine(*request.parameters, measured, out);
+  const GeneratedTrajectory& trajectory = measured.trajectory;
+  const std::vector<Pose2>& poses = measured.poses;
+  const TrajectoryCoverage& coverage = measured.coverage;
+  out << "coverage: " << coverageSummary(coverage) << " (" << formatSeconds(coverage.duration_s)
+      << ")" << std::endl;
   std::optional<TrajectoryCoverage> combined;
   if (request.visited) {
     std::vector<Pose2> all = *request.visited;
     all.insert(all.end(), poses.begin(), poses.end());
     std::optional<std::vector<Pose2>> all_unsmoothed;
-    if (unsmoothed) {
+    if (measured.sharp_poses) {
       all_unsmoothed = *request.visited;
-      all_unsmoothed->insert(all_unsmoothed->end(), unsmoothed->begin(), unsmoothed->end());
+      all_unsmoothed->insert(all_unsmoothed->end(), measured.sharp_poses->begin(),
+                             measured.sharp_poses->end());
     }
-    combined = measureTrajectoryCoverage(*request.free_area, request.plan->exact_offset_parts,
-                                         *request.parameters, all, all_unsmoothed);
+    combined = pipeline.measure(*request.free_area, all, all_unsmoothed);
     out << "combined coverage: visited and new trajectory: " << coverageSummary(*combined) << " ("
         << formatSeconds(combined->duration_s) << ")" << std::endl;
   }

@@ -238,7 +238,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const CleanedPolygon cleaned =
       FreeAreaBuilder(boundarySimplificationOf(mission.parameters)).build(mission.polygon).cleaned;
   const ReachableOffset offset =
-      reachableOffset(cleaned.free_area, mission.parameters,
+      reachableOffset(cleaned.free_area, planningOptionsOf(mission.parameters),
                       desired.empty() ? mission.start : Point2(desired.front().position()));
   out << "area: free area " << area(cleaned.free_area) << " m^2, offset free area "
       << area(offset.parts) << " m^2 (" << formatSeconds(secondsSince(stage_start)) << ")"

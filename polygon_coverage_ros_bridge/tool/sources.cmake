@@ -8,6 +8,7 @@ kc_add_stage_library(kc_tool
     polygon_coverage_ros_bridge/tool/export_command.cpp
     polygon_coverage_ros_bridge/tool/geojson_writer.cpp
     polygon_coverage_ros_bridge/tool/json_object.cpp
+    polygon_coverage_ros_bridge/tool/parameters_command.cpp
     polygon_coverage_ros_bridge/tool/plan_command.cpp
     polygon_coverage_ros_bridge/tool/plan_output_writer.cpp
     polygon_coverage_ros_bridge/tool/replan_command.cpp

@@ -4,4 +4,4 @@ kc_add_gtest(test_geometry
   test/geometry/wall_offset_test.cpp
   test/geometry/edge_grid_test.cpp
   test/support/hard_map_generator.cpp
-  LIBRARIES kc_geometry kc_validation)
+  LIBRARIES kc_geometry kc_validation kc_parameters)

@@ -88,7 +88,13 @@ TEST(GeoJsonMissionReader, NamesEachProblem) {
   EXPECT_NE(errorOf(R"({"type": "FeatureCollection", "features": []})").find("no Polygon"),
             std::string::npos);
   EXPECT_NE(errorOf(lake(R"({"depth": 2})")).find("unknown parameter 'depth'"), std::string::npos);
-  EXPECT_NE(errorOf(lake(R"({"turning_radius": -1})")).find("turning_radius"), std::string::npos);
+  // A parameter's error names the feature whose properties hold it.
+  EXPECT_EQ(errorOf(lake(R"({"turning_radius": -1})")),
+            "lake.geojson: features[0].properties: turning_radius = -1 is out of range: it must "
+            "be a finite number > 0 (m)");
+  EXPECT_EQ(errorOf(lake(R"({"smoothing": "often"})")),
+            "lake.geojson: features[0].properties: smoothing: the value 'often' is not true or "
+            "false");
   EXPECT_NE(errorOf(lake(R"({"datum": [47.3760]})")).find("[latitude, longitude]"),
             std::string::npos);
   std::string line = lake("{}");

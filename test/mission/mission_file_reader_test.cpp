@@ -211,13 +211,14 @@ TEST(MissionFileReader, AppliesOverridesAfterTheFile) {
             "--set turnig_radius=2: unknown parameter 'turnig_radius'");
   EXPECT_EQ(errorOf(kMission, {"turning_radius"}), "--set turning_radius: expected name=value");
   EXPECT_EQ(errorOf(kMission, {"turning_radius=abc"}),
-            "--set turning_radius=abc:1: turning_radius: the value 'abc' is not a number");
+            "--set turning_radius=abc: turning_radius: the value 'abc' is not a number");
   EXPECT_EQ(errorOf(kMission, {"turning_radius="}),
             "--set turning_radius=: turning_radius: the value must be a number, not nothing");
   EXPECT_EQ(errorOf(kMission, {"smoothing=maybe"}),
-            "--set smoothing=maybe:1: smoothing: the value 'maybe' is not true or false");
+            "--set smoothing=maybe: smoothing: the value 'maybe' is not true or false");
   EXPECT_EQ(errorOf(kMission, {"turning_radius=-1"}),
-            "turning_radius = -1 is out of range: it must be a finite number > 0 (m)");
+            "--set turning_radius=-1: turning_radius = -1 is out of range: it must be a finite "
+            "number > 0 (m)");
 }
 
 TEST(MissionFileReader, RejectsUnknownAndDuplicateKeys) {
@@ -294,22 +295,23 @@ TEST(MissionFileReader, EnforcesTheSizeLimits) {
 
 TEST(MissionFileReader, RejectsParametersOutOfRange) {
   EXPECT_EQ(errorOf(missionWith("turning_radius", "lateral_overlap: 1.0")),
-            "lateral_overlap = 1 is out of range: it must be in [0, 1)");
+            "m.yaml:9: lateral_overlap = 1 is out of range: it must be in [0, 1)");
   EXPECT_EQ(errorOf(missionWith("turning_radius", "lateral_fov: 3.2")),
-            "lateral_fov = 3.2 is out of range: it must be in (0, pi) rad");
+            "m.yaml:9: lateral_fov = 3.2 is out of range: it must be in (0, pi) (rad)");
   EXPECT_EQ(errorOf(missionWith("turning_radius", "sensor_distance: 0")),
-            "sensor_distance = 0 is out of range: it must be a finite number > 0 (m)");
+            "m.yaml:9: sensor_distance = 0 is out of range: it must be a finite number > 0 (m)");
   EXPECT_EQ(errorOf(missionWith("turning_radius", "decomposition_type: grid")),
-            "decomposition_type = 'grid' is not one of: boustrophedon, trapezoidal");
+            "m.yaml:9: decomposition_type = 'grid' is not one of: boustrophedon, trapezoidal");
   EXPECT_EQ(errorOf(missionWith("turning_radius", "turning_radius: fast")),
             "m.yaml:9: turning_radius: the value 'fast' is not a number");
   EXPECT_EQ(errorOf(missionWith("turning_radius", "smoothing: 1.5")),
             "m.yaml:9: smoothing: the value '1.5' is not true or false");
   EXPECT_EQ(errorOf(missionWith("turning_radius", "smoothing_clearance: -1")),
-            "m.yaml:9: smoothing_clearance: the value '-1' is negative: it must be a distance "
-            ">= 0 (m) or wall_distance");
+            "m.yaml:9: smoothing_clearance = -1 is out of range: it must be a finite number >= 0 "
+            "(m), or the word wall_distance");
   EXPECT_EQ(errorOf(missionWith("turning_radius", "smoothing_clearance: wall")),
-            "m.yaml:9: smoothing_clearance: the value 'wall' is not a number");
+            "m.yaml:9: smoothing_clearance: the value 'wall' is not a number or the word "
+            "wall_distance");
 }
 
 TEST(MissionFileReader, ReadsTheWordWallDistanceAsAClearance) {

@@ -6,6 +6,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -66,9 +67,9 @@ TEST(PlanningLimits, MinimumLaneCountIsTheWidthOverTheSweepDistance) {
 
 TEST(PlanningLimits, CellAndLaneLimitsRefuseWithWhatToChange) {
   PlannerParameters parameters;
-  EXPECT_NO_THROW(checkCellLimit(rectangles(kMaxCells, 1), parameters));
+  EXPECT_NO_THROW(checkCellLimit(rectangles(kMaxCells, 1), DecompositionType::kBoustrophedon));
   try {
-    checkCellLimit(rectangles(kMaxCells + 5, 1), parameters);
+    checkCellLimit(rectangles(kMaxCells + 5, 1), DecompositionType::kBoustrophedon);
     ADD_FAILURE() << "accepted " << kMaxCells + 5 << " cells";
   } catch (const InvalidInputError& error) {
     EXPECT_NE(std::string(error.what())
@@ -84,9 +85,9 @@ TEST(PlanningLimits, CellAndLaneLimitsRefuseWithWhatToChange) {
   parameters.lateral_footprint = 0.02;
   parameters.lateral_overlap = 0.5;
   const std::size_t fitting = kMaxSweeps / 400;
-  EXPECT_NO_THROW(checkLaneLimit(rectangles(fitting, 1), parameters));
+  EXPECT_NO_THROW(checkLaneLimit(rectangles(fitting, 1), sensorOptionsOf(parameters)));
   try {
-    checkLaneLimit(rectangles(2 * fitting, 1), parameters);
+    checkLaneLimit(rectangles(2 * fitting, 1), sensorOptionsOf(parameters));
     ADD_FAILURE() << "accepted " << 2 * fitting * 400 << " lanes";
   } catch (const InvalidInputError& error) {
     const std::string message = error.what();

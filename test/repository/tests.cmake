@@ -29,3 +29,6 @@ if(KINEMATIC_COVERAGE_TOP_LEVEL)
     ${CMAKE_BINARY_DIR})
   set_tests_properties(function_size PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900)
 endif()
+# Each parameter's name is a literal of one product file, the parameter schema.
+add_test(NAME parameter_literals COMMAND ${Python3_EXECUTABLE}
+  ${PROJECT_SOURCE_DIR}/test/repository/parameter_literals_test.py)

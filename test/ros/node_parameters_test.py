@@ -127,6 +127,12 @@ class NodeParametersTest(RejectionChecks, unittest.TestCase):
         self.assert_rejected(SIMULATOR, status, [pose], lambda: publisher.publish(trajectory(lane)),
                              ('v_max', 'fast'))
         rospy.set_param('auv_simulator/v_max', 0.5)
+        # A value out of range names the parameter on the server it came from.
+        rospy.set_param('auv_simulator/lateral_overlap', 1)
+        self.assert_rejected(SIMULATOR, status, [pose], lambda: publisher.publish(trajectory(lane)),
+                             ('parameter /auv_simulator/lateral_overlap: lateral_overlap = 1 is '
+                              'out of range: it must be in [0, 1)',))
+        rospy.delete_param('auv_simulator/lateral_overlap')
         for bad, expected in (((0, 0, 0, 0), 'trajectory pose 0'),
                               ((0, 0, math.nan, 1), 'unit quaternion')):
             self.assert_rejected(SIMULATOR, status, [pose],

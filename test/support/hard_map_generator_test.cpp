@@ -8,7 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
@@ -70,7 +70,7 @@ TEST_P(HardMapGeneratorTest, MapsAreValidDeterministicAndInRange) {
     EXPECT_NO_THROW(PolygonValidator().validateEndpoint("goal", m.goal, m.polygon));
 
     const PlannerParameters& p = m.parameters;
-    EXPECT_NO_THROW(ParameterValidator().validate(p));
+    EXPECT_NO_THROW(checkParameters(p));
     const FrustumSensor sensor = sensorOf(p);
     EXPECT_NEAR(sensor.width(), map.footprint_width_m, 1e-9);
     EXPECT_NEAR(sensor.length(), map.footprint_length_m, 1e-9);

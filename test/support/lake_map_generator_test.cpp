@@ -4,7 +4,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_validator.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "test/support/random_polygons.h"
 
@@ -32,7 +32,7 @@ TEST(LakeMapGenerator, MapsAreValidDeterministicAndPlan) {
     EXPECT_GT(ringDistance(m.polygon.holes[0], m.polygon.holes[1]), 2.5);
     EXPECT_NO_THROW(PolygonValidator().validateEndpoint("start", m.start, m.polygon));
     EXPECT_NO_THROW(PolygonValidator().validateEndpoint("goal", m.goal, m.polygon));
-    EXPECT_NO_THROW(ParameterValidator().validate(m.parameters));
+    EXPECT_NO_THROW(checkParameters(m.parameters));
     const Mission again = generator.generate(seed);
     EXPECT_EQ(again.polygon.holes, m.polygon.holes);
     PlannedMission planned;

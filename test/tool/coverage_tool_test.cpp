@@ -122,10 +122,10 @@ TEST(CoverageTool, RejectsEachInvalidInputClassWithOneLine) {
   expectInvalidMission(mission(kSquare, "lateral_overlap: 1\n"),
                        "lateral_overlap = 1 is out of range: it must be in [0, 1)");
   expectInvalidMission(mission(kSquare, "onward_fov: 3.5\n"),
-                       "onward_fov = 3.5 is out of range: it must be in (0, pi) rad");
+                       "onward_fov = 3.5 is out of range: it must be in (0, pi) (rad)");
   expectInvalidMission(mission(kSquare, "turnig_radius: 2\n"), "turnig_radius: unknown key");
   expectInvalidMission(mission(kSquare), "--set x=1: unknown parameter 'x'",
-                       "--set sensor_distance=-3 --set x=1");
+                       "--set x=1 --set sensor_distance=-3");
   expectInvalidMission(mission(kSquare), "sensor_distance = -3 is out of range",
                        "--set sensor_distance=-3");
   expectInvalidMission(mission("  hull: [[0, 0], [30, 0], [30, 30], [0, 30]]\n"
@@ -350,8 +350,8 @@ TEST(CoverageTool, DoesNotEnterAPartBeyondAGapNarrowerThanTheGapClearance) {
                 "goal (29, 10) lies in a part of 144 m^2 near");
   // A gap clearance outside (0, wall_distance] is refused, named.
   expectInvalid("plan '" + mission + "' --out '" + out_dir + "' --set gap_clearance=1.5",
-                "gap_clearance = 1.5 is out of range: it must be in (0, wall_distance = 1] (m), "
-                "or wall_distance");
+                "--set gap_clearance=1.5: gap_clearance = 1.5 is out of range: it must be in (0, "
+                "wall_distance = 1] (m), or the word wall_distance");
   expectInvalid("plan '" + mission + "' --out '" + out_dir + "' --set gap_clearance=0",
                 "gap_clearance = 0 is out of range");
 
@@ -768,11 +768,12 @@ TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {
            "simulate_empty.csv: the file has no rows");
   simulate(good, "--set sim_dt=0", "sim_dt = 0 is out of range: it must be a finite number > 0");
   simulate(good, "--set yaw_gain=20",
-           "yaw_gain = 20 with sim_dt = 0.1 is out of range: yaw_gain * sim_dt must be <= 1");
+           "--set yaw_gain=20: yaw_gain = 20 is out of range: it must be a finite number > 0 "
+           "(1/s), and yaw_gain * sim_dt <= 1 (sim_dt = 0.1)");
   simulate(good, "--set current_x=.nan", "current_x: the value '.nan' is not finite");
   simulate(good, "--set sim_time_limit=1e9",
-           "sim_time_limit = 1000000000 s with sim_dt = 0.1 s is more than the limit of 5000000 "
-           "simulation steps");
+           "sim_time_limit = 1000000000 is out of range: it must be a finite number > 0 (s), and "
+           "sim_time_limit / sim_dt <= 5000000 (sim_dt = 0.1)");
   // An impossible request: a current faster than the robot, against its way.
   simulate(good, "--set current_x=-1 --set sim_time_limit=60",
            "did not reach the last pose within sim_time_limit = 60 s (it was driving to pose 2 "

@@ -25,8 +25,7 @@ using AlphaShape = CGAL::Alpha_shape_2<Triangulation>;
 std::vector<std::array<Point2, 3>> alphaShapeTriangles(const std::vector<Point2>& points,
                                                        double alpha) {
   if (!std::isfinite(alpha) || alpha <= 0.0) {
-    throw InvalidInputError("alpha = " + std::to_string(alpha) +
-                            " is out of range: it must be > 0");
+    throw InvalidInputError("the alpha-shape parameter must be > 0, got " + std::to_string(alpha));
   }
   std::vector<Kernel::Point_2> cgal_points;
   cgal_points.reserve(points.size());

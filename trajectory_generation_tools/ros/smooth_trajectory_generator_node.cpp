@@ -14,6 +14,7 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "polygon_coverage_ros_bridge/mission/wall_clearance_warning.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/planner/reachable_offset_parts.h"
@@ -23,34 +24,10 @@
 #include "polygon_coverage_ros_bridge/ros/trajectory_markers.h"
 #include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
-#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::nodes {
-namespace {
 
 using core::secondsSince;
-
-std::vector<core::Pose2> posesOf(const std::vector<core::TrajectoryPose>& trajectory) {
-  std::vector<core::Pose2> poses;
-  poses.reserve(trajectory.size());
-  for (const core::TrajectoryPose& pose : trajectory) poses.push_back({pose.x, pose.y, pose.yaw});
-  return poses;
-}
-
-/// The unsmoothed trajectory of `waypoints`, the reference of what smoothing may lose;
-/// none when `parameters` do not smooth.
-std::optional<std::vector<core::Pose2>> unsmoothedPoses(const core::PlannerParameters& parameters,
-                                                        const std::vector<core::Pose2>& waypoints,
-                                                        const core::PolygonWithHoles& free_area) {
-  if (!parameters.smoothing) return std::nullopt;
-  core::PlannerParameters unsmoothed = parameters;
-  unsmoothed.smoothing = false;
-  return posesOf(core::TrajectoryGenerator(core::trajectoryOptionsOf(unsmoothed))
-                     .generate(waypoints, free_area)
-                     .poses);
-}
-
-}  // namespace
 
 SmoothTrajectoryGeneratorNode::SmoothTrajectoryGeneratorNode(const ros::NodeHandle& node,
                                                              const ros::NodeHandle& private_node)
@@ -134,9 +111,16 @@ void SmoothTrajectoryGeneratorNode::generate() {
                                     "' but the polygon is in frame '" + polygon_frame_ + "'");
     }
     const core::PlannerParameters parameters = readPlannerParameters(private_node_);
-    const core::GeneratedTrajectory trajectory =
-        core::TrajectoryGenerator(core::trajectoryOptionsOf(parameters))
-            .generate(waypoints, *free_area_);
+    // What the trajectory leaves unseen of the area it could search is measured as
+    // `coverage_tool plan` measures it, and said as loudly.
+    const std::vector<core::PolygonWithHoles> exact_parts =
+        core::reachableOffset(*free_area_, core::planningOptionsOf(parameters),
+                              waypoints.front().position())
+            .exact_parts;
+    const core::MeasuredTrajectory measured =
+        core::TrajectoryPipeline(parameters, exact_parts, core::WaypointOrigin::kUser)
+            .run(waypoints, *free_area_);
+    const core::GeneratedTrajectory& trajectory = measured.trajectory;
     std_msgs::Header header;
     header.frame_id = polygon_frame_;
     header.stamp = ros::Time::now();
@@ -149,9 +133,8 @@ void SmoothTrajectoryGeneratorNode::generate() {
                                  parameters.wall_distance, header);
       markers.markers.insert(markers.markers.end(), closest.markers.begin(), closest.markers.end());
     }
-    const std::vector<core::Pose2> poses = posesOf(trajectory.poses);
     marker_publisher_.publish(markers);
-    heatmap_publisher_.publish(heatmapGrid(*free_area_, poses, parameters, header));
+    heatmap_publisher_.publish(heatmapGrid(*free_area_, measured.poses, parameters, header));
     const core::SmoothingStatistics& turns = trajectory.statistics;
     std::ostringstream summary;
     summary << turns.turns_smoothed << " of " << turns.turns_total << " turns smoothed (inner "
@@ -160,12 +143,7 @@ void SmoothTrajectoryGeneratorNode::generate() {
             << turns.bulb << "; kept sharp for coverage " << turns.kept_for_coverage << "), "
             << trajectory.poses.size() << " poses, " << trajectory.trajectory_length_m << " m, "
             << trajectory.traversal_time_s << " s";
-    // What the trajectory leaves unseen of the area it could search, measured as
-    // `coverage_tool plan` measures it, and said as loudly.
-    const core::TrajectoryCoverage coverage = core::measureTrajectoryCoverage(
-        *free_area_,
-        core::reachableOffset(*free_area_, parameters, waypoints.front().position()).exact_parts,
-        parameters, poses, unsmoothedPoses(parameters, waypoints, *free_area_));
+    const core::TrajectoryCoverage& coverage = measured.coverage;
     summary << "; " << core::coverageSummary(coverage);
     for (const std::optional<std::string>& warning :
          {core::reachableCoverageWarning(coverage), core::smoothingLossWarning(coverage),

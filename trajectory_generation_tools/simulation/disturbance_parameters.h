@@ -7,7 +7,7 @@ namespace kinematic_coverage::core {
 /// What the simulated lake does to the robot beyond the constant current (parameters
 /// current_sigma, current_time_constant, navigation_sigma, navigation_time_constant,
 /// disturbance_seed; docs/REFERENCE.md). All off by default: a run is then the ideal,
-/// noise-free one. Ranges are ParameterValidator's.
+/// noise-free one. Ranges are the parameter schema's.
 struct DisturbanceParameters {
   /// m/s: stationary standard deviation of the current's fluctuation about (current_x,
   /// current_y), per axis; the controller does not know it.

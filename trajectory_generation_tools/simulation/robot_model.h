@@ -15,7 +15,7 @@ enum class VehicleModel {
 /// The simulated robot of `coverage_tool simulate` and auv_simulator (TrajectoryFollower,
 /// docs/REFERENCE.md, Parameters): its vehicle, limits, controllers' gains and tolerances,
 /// the water current, its disturbances and the simulation step. Its ranges are
-/// ParameterValidator's.
+/// parameter schema's (checkParameters).
 struct RobotModel {
   VehicleModel vehicle_model = VehicleModel::kDynamic;
   VehicleLimits vehicle;              ///< v_max, a_max and yaw_rate_max bound the commands

@@ -15,8 +15,8 @@ namespace kinematic_coverage::core {
 
 RobotSimulator::RobotSimulator(const RobotModel& model) : model_(model) {
   if (!(model_.sim_time_limit / model_.sim_dt <= static_cast<double>(kMaxSteps))) {
-    throw InvalidInputError("sim_time_limit = " + formatNumber(model_.sim_time_limit) +
-                            " s with sim_dt = " + formatNumber(model_.sim_dt) +
+    throw InvalidInputError("the simulated time limit " + formatNumber(model_.sim_time_limit) +
+                            " s at a time step of " + formatNumber(model_.sim_dt) +
                             " s is more than the limit of " + std::to_string(kMaxSteps) +
                             " simulation steps");
   }

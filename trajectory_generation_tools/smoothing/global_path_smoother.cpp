@@ -77,18 +77,18 @@ void requirePositive(const char* name, double value) {
 GlobalPathSmoother::GlobalPathSmoother(const PolygonWithHoles& free_area,
                                        const GlobalSmoothingOptions& options)
     : free_area_(free_area), index_(free_area, options.clearance), options_(options) {
-  requirePositive("turning_radius", options.vehicle.turning_radius);
-  requirePositive("min_turning_radius", options.min_turning_radius);
-  requirePositive("v_max", options.vehicle.v_max);
-  requirePositive("a_max", options.vehicle.a_max);
-  requirePositive("yaw_rate_max", options.vehicle.yaw_rate_max);
+  requirePositive("the turning radius", options.vehicle.turning_radius);
+  requirePositive("the smallest turning radius", options.min_turning_radius);
+  requirePositive("the speed limit", options.vehicle.v_max);
+  requirePositive("the acceleration limit", options.vehicle.a_max);
+  requirePositive("the yaw rate limit", options.vehicle.yaw_rate_max);
   if (options.min_turning_radius > options.vehicle.turning_radius) {
     throw InvalidInputError(
-        "min_turning_radius = " + std::to_string(options.min_turning_radius) +
-        " must not exceed turning_radius = " + std::to_string(options.vehicle.turning_radius));
+        "the smallest turning radius " + std::to_string(options.min_turning_radius) +
+        " must not exceed the turning radius " + std::to_string(options.vehicle.turning_radius));
   }
   if (!std::isfinite(options.max_turning_radius) || options.max_turning_radius < 0.0) {
-    throw InvalidInputError("max_turning_radius must be a finite number >= 0, got " +
+    throw InvalidInputError("the largest turning radius must be a finite number >= 0, got " +
                             std::to_string(options.max_turning_radius));
   }
   const double span = options.vehicle.turning_radius - options.min_turning_radius;

@@ -13,7 +13,7 @@ PathSmoother::PathSmoother(const PolygonWithHoles& free_area, double turning_rad
                            double clearance)
     : index_(free_area, clearance), radius_(turning_radius) {
   if (!std::isfinite(turning_radius) || turning_radius <= 0.0) {
-    throw InvalidInputError("turning_radius must be a positive finite number, got " +
+    throw InvalidInputError("the turning radius must be a positive finite number, got " +
                             std::to_string(turning_radius));
   }
 }

@@ -38,8 +38,8 @@ ContinuousCurvatureTurns::ContinuousCurvatureTurns(const PolygonWithHoles& free_
                                                    double curvature_rate_max)
     : free_area_(free_area), curvature_rate_max_(curvature_rate_max) {
   if (!std::isfinite(curvature_rate_max) || !(curvature_rate_max > 0.0)) {
-    throw InvalidInputError("curvature_rate_max = " + formatNumber(curvature_rate_max) +
-                            " is out of range: it must be a finite number > 0 (1/m^2)");
+    throw InvalidInputError("the curvature rate limit must be a finite number > 0 (1/m^2), got " +
+                            formatNumber(curvature_rate_max));
   }
 }
 

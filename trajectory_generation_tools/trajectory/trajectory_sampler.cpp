@@ -35,10 +35,11 @@ double wrapNear(double angle) {
 TrajectorySampler::TrajectorySampler(double segment_sampling_distance, double arc_sampling_distance,
                                      double rotation_sampling_angle)
     : segment_sampling_distance_(
-          checkedInterval(segment_sampling_distance, "segment_sampling_distance")),
-      arc_sampling_distance_(checkedInterval(arc_sampling_distance, "arc_sampling_distance")),
+          checkedInterval(segment_sampling_distance, "the sampling distance along segments")),
+      arc_sampling_distance_(
+          checkedInterval(arc_sampling_distance, "the sampling distance along arcs")),
       rotation_sampling_angle_(
-          checkedInterval(rotation_sampling_angle, "rotation_sampling_angle")) {}
+          checkedInterval(rotation_sampling_angle, "the sampling angle of rotations")) {}
 
 std::size_t TrajectorySampler::pieces(const PathPrimitive& primitive) const {
   double ratio = 0.0;

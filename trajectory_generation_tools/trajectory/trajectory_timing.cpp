@@ -26,9 +26,9 @@ double uniformChangeTime(double distance, double from, double to) {
 }  // namespace
 
 TrajectoryTiming::TrajectoryTiming(const VehicleLimits& limits) : limits_(limits) {
-  checkRate(limits.v_max, "v_max");
-  checkRate(limits.a_max, "a_max");
-  checkRate(limits.yaw_rate_max, "yaw_rate_max");
+  checkRate(limits.v_max, "the speed limit");
+  checkRate(limits.a_max, "the acceleration limit");
+  checkRate(limits.yaw_rate_max, "the yaw rate limit");
 }
 
 TrajectoryTiming::TrajectoryTiming(double v_max, double a_max, double yaw_rate_max)

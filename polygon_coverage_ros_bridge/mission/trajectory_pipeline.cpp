@@ -1,0 +1,82 @@
+#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
+
+#include <chrono>
+#include <string>
+
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/geometry/internal_error.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+
+namespace kinematic_coverage::core {
+namespace {
+
+/// The poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so that
+/// `coverage_tool evaluate` of that file reports the figures measured on them.
+std::vector<Pose2> writtenPoses(const std::vector<TrajectoryPose>& trajectory) {
+  std::vector<Pose2> poses;
+  poses.reserve(trajectory.size());
+  for (const TrajectoryPose& pose : trajectory) {
+    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
+  }
+  return poses;
+}
+
+}  // namespace
+
+template <typename Step>
+auto TrajectoryPipeline::failingAs(const char* stage, const Step& step) const {
+  if (origin_ == WaypointOrigin::kUser) return step();
+  try {
+    return step();
+  } catch (const SizeLimitError&) {
+    throw;
+  } catch (const InvalidInputError& error) {
+    throw InternalError(stage, error.what());
+  }
+}
+
+TrajectoryPipeline::TrajectoryPipeline(const PlannerParameters& parameters,
+                                       const std::vector<PolygonWithHoles>& exact_parts,
+                                       WaypointOrigin origin)
+    : parameters_(parameters),
+      exact_parts_(exact_parts),
+      origin_(origin),
+      options_(trajectoryOptionsOf(parameters, exact_parts)) {
+  if (options_.smoothing) {
+    sharp_options_ = options_;
+    sharp_options_->smoothing = false;
+  }
+}
+
+MeasuredTrajectory TrajectoryPipeline::run(const std::vector<Pose2>& waypoints,
+                                           const PolygonWithHoles& free_area,
+                                           bool against_sharp_path) const {
+  MeasuredTrajectory measured;
+  const auto start = std::chrono::steady_clock::now();
+  measured.trajectory = failingAs(options_.smoothing ? "smooth" : "trajectory", [&] {
+    return TrajectoryGenerator(options_).generate(waypoints, free_area);
+  });
+  measured.generation_s = secondsSince(start);
+  measured.poses = writtenPoses(measured.trajectory.poses);
+  if (sharp_options_) {
+    measured.sharp_poses = failingAs("coverage", [&] {
+      return writtenPoses(
+          TrajectoryGenerator(*sharp_options_).generate(waypoints, free_area).poses);
+    });
+  }
+  measured.coverage =
+      measure(free_area, measured.poses, against_sharp_path ? measured.sharp_poses : std::nullopt);
+  return measured;
+}
+
+TrajectoryCoverage TrajectoryPipeline::measure(
+    const PolygonWithHoles& free_area, const std::vector<Pose2>& poses,
+    const std::optional<std::vector<Pose2>>& reference) const {
+  return failingAs("coverage", [&] {
+    return measureTrajectoryCoverage(free_area, exact_parts_, parameters_, poses, reference);
+  });
+}
+
+}  // namespace kinematic_coverage::core

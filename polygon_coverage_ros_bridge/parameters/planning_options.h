@@ -1,0 +1,33 @@
+#pragma once
+
+#include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
+#include "polygon_coverage_ros_bridge/decomposition/sweep_line_decomposition.h"
+#include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
+#include "polygon_coverage_ros_bridge/route/segment_cost.h"
+#include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
+
+namespace kinematic_coverage::core {
+
+/// What the planner (Chapter 3's pipeline, and the replanner's planning of the remaining
+/// area) reads: composed once from a checked parameter set (planningOptionsOf), so that the
+/// planner hands each stage its part and checks nothing again.
+struct PlanningOptions {
+  VehicleLimits vehicle;
+  SensorOptions sensor;
+  DecompositionType decomposition_type = DecompositionType::kBoustrophedon;
+  CellJoining cell_joining = CellJoining::kLongestOverlap;
+  /// m: how far the offset free area's boundary may move inward before it is decomposed.
+  double boundary_simplification = 0.0;
+  CostFunction cost_function = CostFunction::kTime;
+  /// m kept from the hull and the holes.
+  double wall_distance = 1.0;
+  OffsetParts offset_parts = OffsetParts::kAll;
+  /// m: the least clearance of a gap that transits pass (the wall distance resolved).
+  double gap_clearance = 1.0;
+  bool coverage_repair = true;
+
+  FrustumSensor frustumSensor() const { return FrustumSensor::fromOptions(sensor); }
+  SegmentCost segmentCost() const { return SegmentCost(cost_function, vehicle); }
+};
+
+}  // namespace kinematic_coverage::core
