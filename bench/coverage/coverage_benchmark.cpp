@@ -18,10 +18,10 @@
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
-#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace {
 
@@ -41,9 +41,9 @@ double median(std::vector<double> times) {
 void benchmark(const char* name, const kinematic_coverage::core::Mission& mission,
                const kinematic_coverage::core::PlannedMission& planned, int runs) {
   using namespace kinematic_coverage::core;
+  const TrajectoryPipeline pipeline(mission.parameters, planned.plan.exact_offset_parts);
   const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, planned.plan.exact_offset_parts))
-          .generate(planned.plan.waypoints, planned.free_area);
+      pipeline.trajectory(planned.plan.waypoints, planned.free_area);
   std::vector<Pose2> poses;
   for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
   const FrustumSensor sensor = sensorOf(mission.parameters);
@@ -71,8 +71,7 @@ void benchmark(const char* name, const kinematic_coverage::core::Mission& missio
     cells = evaluator.raster().cellCount();
   }
   // The tool's own call, once, to check that the stages above are what it measures.
-  const TrajectoryCoverage tool = measureTrajectoryCoverage(
-      planned.free_area, planned.plan.exact_offset_parts, mission.parameters, poses);
+  const TrajectoryCoverage tool = pipeline.measure(planned.free_area, poses, std::nullopt);
   if (tool.report.coverage_percent != report.coverage_percent) {
     std::fprintf(stderr, "coverage_benchmark: the stages disagree with the tool\n");
     std::exit(1);

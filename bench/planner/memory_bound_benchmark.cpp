@@ -23,6 +23,7 @@
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
@@ -191,9 +192,8 @@ int run(const BenchmarkOptions& options) {
   if (options.smoothing) {
     const auto started = std::chrono::steady_clock::now();
     const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(
-            trajectoryOptionsOf(mission.parameters, planned.plan.exact_offset_parts))
-            .generate(planned.plan.waypoints, planned.free_area);
+        TrajectoryPipeline(mission.parameters, planned.plan.exact_offset_parts)
+            .trajectory(planned.plan.waypoints, planned.free_area);
     const double seconds = secondsSince(started);
     std::printf("| smoothing | %.3f | %.1f | %zu primitives, %zu poses, %.1f m, %.0f s |\n",
                 seconds, peakRssMiB(), trajectory.path.size(), trajectory.poses.size(),

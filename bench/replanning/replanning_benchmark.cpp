@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "polygon_coverage_ros_bridge/planner/replanner.h"
 #include "test/replanning/drift_scenario.h"
 
@@ -50,8 +50,8 @@ int main(int argc, char** argv) {
         replan_ms.push_back(1000.0 * secondsSince(start));
         const Clock::time_point smooth_start = Clock::now();
         const GeneratedTrajectory trajectory =
-            TrajectoryGenerator(trajectoryOptionsOf(parameters))
-                .generate(replanned.plan.waypoints, replanned.free_area);
+            TrajectoryPipeline(parameters, replanned.plan.exact_offset_parts)
+                .trajectory(replanned.plan.waypoints, replanned.free_area);
         smooth_ms.push_back(1000.0 * secondsSince(smooth_start));
         total_ms.push_back(1000.0 * secondsSince(start));
       }

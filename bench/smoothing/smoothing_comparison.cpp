@@ -25,9 +25,8 @@
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "test/support/random_missions.h"
-#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -67,13 +66,13 @@ std::vector<StrategyFigures> compare(const Mission& mission) {
   std::vector<StrategyFigures> figures;
   for (int strategy = 0; strategy < kStrategies; ++strategy) {
     const PlannerParameters parameters = withStrategy(mission.parameters, strategy);
-    const GeneratedTrajectory trajectory = TrajectoryGenerator(trajectoryOptionsOf(parameters))
-                                               .generate(planned.plan.waypoints, planned.free_area);
+    const TrajectoryPipeline pipeline(parameters, planned.plan.exact_offset_parts);
+    const GeneratedTrajectory trajectory =
+        pipeline.trajectory(planned.plan.waypoints, planned.free_area);
     std::vector<Pose2> poses;
     poses.reserve(trajectory.poses.size());
     for (const TrajectoryPose& pose : trajectory.poses) poses.push_back(pose.pose());
-    const TrajectoryCoverage coverage = measureTrajectoryCoverage(
-        planned.free_area, planned.plan.exact_offset_parts, parameters, poses);
+    const TrajectoryCoverage coverage = pipeline.measure(planned.free_area, poses, std::nullopt);
     figures.push_back({trajectory.statistics.turns_smoothed, trajectory.statistics.turns_total,
                        trajectory.traversal_time_s, trajectory.trajectory_length_m,
                        coverage.report.coverage_loss_percent});

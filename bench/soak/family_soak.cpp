@@ -59,11 +59,10 @@
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "test/coverage/exact_coverage_oracle.h"
 #include "test/support/hard_map_generator.h"
 #include "trajectory_generation_tools/smoothing/boundary_edge_index.h"
-#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -174,9 +173,8 @@ std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
                                          const std::string& label, MapResult* result,
                                          TrajectoryFigures* figures) {
   std::vector<std::string> failures;
-  const GeneratedTrajectory trajectory =
-      TrajectoryGenerator(trajectoryOptionsOf(parameters, plan.exact_offset_parts))
-          .generate(plan.waypoints, free_area);
+  const TrajectoryPipeline pipeline(parameters, plan.exact_offset_parts);
+  const GeneratedTrajectory trajectory = pipeline.trajectory(plan.waypoints, free_area);
   figures->clearance_m = trajectory.min_obstacle_clearance_m;
   figures->traversal_time_s = trajectory.traversal_time_s;
   figures->turns_smoothed = trajectory.statistics.turns_smoothed;
@@ -212,8 +210,7 @@ std::vector<std::string> checkTrajectory(const PolygonWithHoles& free_area,
     failures.push_back("curvature " + std::to_string(trajectory.max_curvature) + " above 1/r");
   }
   if (!failures.empty() || !with_oracle) return failures;
-  const TrajectoryCoverage reported =
-      measureTrajectoryCoverage(free_area, plan.exact_offset_parts, parameters, poses);
+  const TrajectoryCoverage reported = pipeline.measure(free_area, poses, std::nullopt);
   // The oracle measures the reachable area that the report does: the exact offset around
   // the planner's mitred parts.
   testing::ExactCoverage exact;

@@ -29,12 +29,12 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
+#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "test/support/random_missions.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
-#include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -125,21 +125,17 @@ SoakOutcome runSeed(std::uint64_t seed, int holes_max, std::vector<double>& plan
     const CoveragePlan plan =
         CoveragePlanner(mission.parameters).plan(mission.polygon, mission.start, mission.goal);
     planning_times_s.push_back(secondsSince(started));
-    const GeneratedTrajectory trajectory =
-        TrajectoryGenerator(trajectoryOptionsOf(mission.parameters, plan.exact_offset_parts))
-            .generate(plan.waypoints, mission.polygon);
+    const TrajectoryPipeline pipeline(mission.parameters, plan.exact_offset_parts);
+    const GeneratedTrajectory trajectory = pipeline.trajectory(plan.waypoints, mission.polygon);
     if (!(trajectory.min_obstacle_clearance_m > 0.0)) {
       return fail("collision: min_obstacle_clearance_m " +
                   std::to_string(trajectory.min_obstacle_clearance_m));
     }
     // The smoothed trajectory keeps the wall distance, or comes no nearer than the
     // unsmoothed one (which passes gaps narrower than two wall distances).
-    PlannerParameters unsmoothed = mission.parameters;
-    unsmoothed.smoothing = false;
-    const double sharp_clearance =
-        TrajectoryGenerator(trajectoryOptionsOf(unsmoothed, plan.exact_offset_parts))
-            .generate(plan.waypoints, mission.polygon)
-            .min_obstacle_clearance_m;
+    const std::optional<GeneratedTrajectory> sharp =
+        pipeline.sharpTrajectory(plan.waypoints, mission.polygon);
+    const double sharp_clearance = (sharp ? *sharp : trajectory).min_obstacle_clearance_m;
     const double least = std::min(mission.parameters.wall_distance, sharp_clearance);
     if (!keepsClearance(trajectory.min_obstacle_clearance_m, least)) {
       return fail("clearance: min_obstacle_clearance_m " +

@@ -10,20 +10,6 @@
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
-namespace {
-
-/// The poses as trajectory.csv holds them (yaw wrapped into (-pi, pi]), so that
-/// `coverage_tool evaluate` of that file reports the figures measured on them.
-std::vector<Pose2> writtenPoses(const std::vector<TrajectoryPose>& trajectory) {
-  std::vector<Pose2> poses;
-  poses.reserve(trajectory.size());
-  for (const TrajectoryPose& pose : trajectory) {
-    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
-  }
-  return poses;
-}
-
-}  // namespace
 
 template <typename Step>
 auto TrajectoryPipeline::failingAs(const char* stage, const Step& step) const {
@@ -55,20 +41,38 @@ MeasuredTrajectory TrajectoryPipeline::run(const std::vector<Pose2>& waypoints,
                                            bool against_sharp_path) const {
   MeasuredTrajectory measured;
   const auto start = std::chrono::steady_clock::now();
-  measured.trajectory = failingAs(options_.smoothing ? "smooth" : "trajectory", [&] {
-    return TrajectoryGenerator(options_).generate(waypoints, free_area);
-  });
+  measured.trajectory = trajectory(waypoints, free_area);
   measured.generation_s = secondsSince(start);
   measured.poses = writtenPoses(measured.trajectory.poses);
-  if (sharp_options_) {
-    measured.sharp_poses = failingAs("coverage", [&] {
-      return writtenPoses(
-          TrajectoryGenerator(*sharp_options_).generate(waypoints, free_area).poses);
-    });
+  if (const std::optional<GeneratedTrajectory> sharp = sharpTrajectory(waypoints, free_area)) {
+    measured.sharp_poses = writtenPoses(sharp->poses);
   }
   measured.coverage =
       measure(free_area, measured.poses, against_sharp_path ? measured.sharp_poses : std::nullopt);
   return measured;
+}
+
+GeneratedTrajectory TrajectoryPipeline::trajectory(const std::vector<Pose2>& waypoints,
+                                                   const PolygonWithHoles& free_area) const {
+  return failingAs(options_.smoothing ? "smooth" : "trajectory",
+                   [&] { return TrajectoryGenerator(options_).generate(waypoints, free_area); });
+}
+
+std::optional<GeneratedTrajectory> TrajectoryPipeline::sharpTrajectory(
+    const std::vector<Pose2>& waypoints, const PolygonWithHoles& free_area) const {
+  if (!sharp_options_) return std::nullopt;
+  return failingAs("coverage", [&] {
+    return TrajectoryGenerator(*sharp_options_).generate(waypoints, free_area);
+  });
+}
+
+std::vector<Pose2> TrajectoryPipeline::writtenPoses(const std::vector<TrajectoryPose>& trajectory) {
+  std::vector<Pose2> poses;
+  poses.reserve(trajectory.size());
+  for (const TrajectoryPose& pose : trajectory) {
+    poses.push_back({pose.x, pose.y, wrapAngle(pose.yaw)});
+  }
+  return poses;
 }
 
 TrajectoryCoverage TrajectoryPipeline::measure(

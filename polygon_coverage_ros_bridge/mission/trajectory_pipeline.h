@@ -45,9 +45,22 @@ class TrajectoryPipeline {
                      WaypointOrigin origin = WaypointOrigin::kPlanner);
 
   /// The trajectory through `waypoints` in the cleaned `free_area`, measured against its
-  /// sharp path when `against_sharp_path`.
+  /// sharp path when `against_sharp_path`: trajectory(), sharpTrajectory(), measure().
   MeasuredTrajectory run(const std::vector<Pose2>& waypoints, const PolygonWithHoles& free_area,
                          bool against_sharp_path = true) const;
+
+  /// The trajectory through `waypoints`: smoothed (or segment-only), sampled and timed.
+  GeneratedTrajectory trajectory(const std::vector<Pose2>& waypoints,
+                                 const PolygonWithHoles& free_area) const;
+
+  /// The sharp path's (unsmoothed) trajectory through `waypoints`; none when the
+  /// parameters do not smooth.
+  std::optional<GeneratedTrajectory> sharpTrajectory(const std::vector<Pose2>& waypoints,
+                                                     const PolygonWithHoles& free_area) const;
+
+  /// The poses of a trajectory as trajectory.csv holds them (yaw wrapped into (-pi, pi]),
+  /// so that `coverage_tool evaluate` of that file reports the figures measured on them.
+  static std::vector<Pose2> writtenPoses(const std::vector<TrajectoryPose>& trajectory);
 
   /// The coverage of `poses` (with what they fail to see of `reference`'s), as run() measures.
   TrajectoryCoverage measure(const PolygonWithHoles& free_area, const std::vector<Pose2>& poses,
