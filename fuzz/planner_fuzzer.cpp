@@ -7,7 +7,8 @@
 // Properties of every plan: waypoints are finite and distinct, each yaw is its leg's heading, the
 // path starts at the start and ends at the goal, every leg between first_inside and last_inside
 // lies in the route area (the offset free area's parts joined through their gaps; the planner
-// test's tolerance), and the inside range and path
+// test's tolerance) or, out of it toward the exact offset's boundary (the repair's
+// excursions), keeps the wall distance, and the inside range and path
 // length are consistent.
 
 #include <fuzzer/FuzzedDataProvider.h>
@@ -28,6 +29,7 @@
 #include "polygon_coverage_ros_bridge/mission/mission.h"
 #include "polygon_coverage_ros_bridge/mission/mission_planner.h"
 #include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
+#include "test/support/sampled_wall_distance.h"
 
 namespace {
 
@@ -217,9 +219,15 @@ void checkPlan(const Mission& m, const PlannedMission& planned) {
     const double heading = std::atan2(b.y() - a.y(), b.x() - a.x());
     fuzzCheck(std::abs(std::remainder(waypoints[i].yaw - heading, 2.0 * M_PI)) <= kYawTolerance,
               "the yaw of waypoint " + std::to_string(i) + " is not its leg's heading");
+    // Inside the route area, or out of it toward the exact offset's boundary (the repair's
+    // excursions), keeping the wall distance.
     if (i >= plan.first_inside && i + 1 <= plan.last_inside) {
-      fuzzCheck(kinematic_coverage::core::segmentInside(plan.route_area, a, b, kInsideTolerance),
-                leg + " leaves the offset free area");
+      fuzzCheck(
+          kinematic_coverage::core::segmentInside(plan.route_area, a, b, kInsideTolerance) ||
+              kinematic_coverage::core::keepsClearance(
+                  kinematic_coverage::core::testing::sampledWallDistance(planned.free_area, {a, b}),
+                  m.parameters.wall_distance),
+          leg + " leaves the route area and comes nearer the walls than the wall distance");
     }
   }
   fuzzCheck(std::isfinite(plan.path_length_m) &&

@@ -9,8 +9,9 @@
 namespace kinematic_coverage::core {
 namespace {
 
-// The mappings of a parameter set already checked: each public function below checks the
-// set once (checkParameters), then maps with these.
+// The mappings of a parameter set: the composers of a stage's whole options
+// (planningOptionsOf, globalSmoothingOptionsOf, trajectoryOptionsOf, robotModelOf,
+// remainingAreaOptionsOf) check the set once (checkParameters), then map with these.
 
 VehicleLimits vehicleLimits(const PlannerParameters& p) {
   return VehicleLimits{p.v_max, p.a_max, p.yaw_rate_max, p.turning_radius};
@@ -78,11 +79,11 @@ PlanningOptions planningOptionsOf(const PlannerParameters& parameters) {
 }
 
 VehicleLimits vehicleLimitsOf(const PlannerParameters& parameters) {
-  return vehicleLimits(validated(parameters));
+  return vehicleLimits(parameters);
 }
 
 SensorOptions sensorOptionsOf(const PlannerParameters& parameters) {
-  return sensorOptions(validated(parameters));
+  return sensorOptions(parameters);
 }
 
 FrustumSensor sensorOf(const PlannerParameters& parameters) {
@@ -90,32 +91,29 @@ FrustumSensor sensorOf(const PlannerParameters& parameters) {
 }
 
 double smoothingClearanceOf(const PlannerParameters& parameters) {
-  return smoothingClearance(validated(parameters));
+  return smoothingClearance(parameters);
 }
 
-double gapClearanceOf(const PlannerParameters& parameters) {
-  return gapClearance(validated(parameters));
-}
+double gapClearanceOf(const PlannerParameters& parameters) { return gapClearance(parameters); }
 
 double boundarySimplificationOf(const PlannerParameters& parameters) {
-  return validated(parameters).boundary_simplification * sensorOf(parameters).sweepDistance();
+  return parameters.boundary_simplification * sensorOf(parameters).sweepDistance();
 }
 
 DecompositionType decompositionTypeOf(const PlannerParameters& parameters) {
-  return choiceOf(validated(parameters).decomposition_type, kDecompositionTypes);
+  return choiceOf(parameters.decomposition_type, kDecompositionTypes);
 }
 
 CellJoining cellJoiningOf(const PlannerParameters& parameters) {
-  return choiceOf(validated(parameters).cell_joining, kCellJoinings);
+  return choiceOf(parameters.cell_joining, kCellJoinings);
 }
 
 OffsetParts offsetPartsOf(const PlannerParameters& parameters) {
-  return choiceOf(validated(parameters).offset_parts, kOffsetParts);
+  return choiceOf(parameters.offset_parts, kOffsetParts);
 }
 
 SegmentCost segmentCostOf(const PlannerParameters& parameters) {
-  const PlannerParameters& p = validated(parameters);
-  return SegmentCost(choiceOf(p.cost_function, kCostFunctions), vehicleLimits(p));
+  return SegmentCost(choiceOf(parameters.cost_function, kCostFunctions), vehicleLimits(parameters));
 }
 
 GlobalSmoothingOptions globalSmoothingOptionsOf(const PlannerParameters& parameters) {

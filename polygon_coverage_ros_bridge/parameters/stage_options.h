@@ -17,9 +17,11 @@ namespace kinematic_coverage::core {
 
 // The one place where the flat parameter set of mission files, `--set`, config/*.yaml and
 // the nodes' private parameters (PlannerParameters) becomes the options each stage reads.
-// Every function first checks the whole set (checkParameters), so a stage is only
-// ever handed options in range; each throws InvalidInputError naming the first parameter
-// out of range.
+// The composers of a stage's whole options (planningOptionsOf, globalSmoothingOptionsOf,
+// trajectoryOptionsOf, robotModelOf, remainingAreaOptionsOf) check the set once
+// (checkParameters) and throw InvalidInputError naming the first parameter out of range;
+// the single mappings below them (vehicleLimitsOf, sensorOf, ...) take a set the readers
+// have checked and check nothing again.
 
 /// The planner's options: the vehicle limits, the sensor, the decomposition, the route and
 /// the repair.

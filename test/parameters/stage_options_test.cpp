@@ -13,15 +13,10 @@
 namespace kinematic_coverage::core {
 namespace {
 
-/// Every mapping, so that each can be asked to reject the same parameter set.
+/// Every composer of a stage's whole options, so that each can be asked to reject the same
+/// parameter set.
 std::vector<std::function<void(const PlannerParameters&)>> everyMapping() {
-  return {[](const PlannerParameters& p) { vehicleLimitsOf(p); },
-          [](const PlannerParameters& p) { sensorOptionsOf(p); },
-          [](const PlannerParameters& p) { sensorOf(p); },
-          [](const PlannerParameters& p) { decompositionTypeOf(p); },
-          [](const PlannerParameters& p) { cellJoiningOf(p); },
-          [](const PlannerParameters& p) { offsetPartsOf(p); },
-          [](const PlannerParameters& p) { segmentCostOf(p); },
+  return {[](const PlannerParameters& p) { planningOptionsOf(p); },
           [](const PlannerParameters& p) { globalSmoothingOptionsOf(p); },
           [](const PlannerParameters& p) { trajectoryOptionsOf(p); },
           [](const PlannerParameters& p) { robotModelOf(p); },

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
@@ -86,7 +87,8 @@ TEST(SegmentCost, MonotoneAndSubadditiveOnRandomLengths) {
 }
 
 TEST(SegmentCost, RejectsBadParameters) {
-  EXPECT_THROW(segmentCostOf(withCost("energy")), InvalidInputError);
+  // The parameter set is checked where it is read; the mapping takes a checked one.
+  EXPECT_THROW(checkParameters(withCost("energy")), InvalidInputError);
   PlannerParameters parameters = withCost("time");
   parameters.v_max = 0.0;
   EXPECT_THROW(segmentCostOf(parameters), InvalidInputError);
