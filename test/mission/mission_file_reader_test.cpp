@@ -7,8 +7,11 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <variant>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
@@ -131,7 +134,6 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
       {"disturbance_seed", "7"},
       {"sim_dt", "0.2"},
       {"sim_time_limit", "600"}};
-  EXPECT_EQ(values.size(), MissionFileReader::parameterNames().size());
   std::string yaml = base;
   for (const auto& [key, value] : values) yaml += key + ": " + value + "\n";
   const PlannerParameters p = MissionFileReader().parse(yaml, "m.yaml").parameters;
@@ -199,6 +201,52 @@ TEST(MissionFileReader, ReadsEveryParameterKey) {
   EXPECT_EQ(p.disturbance_seed, 7.0);
   EXPECT_EQ(p.sim_dt, 0.2);
   EXPECT_EQ(p.sim_time_limit, 600.0);
+}
+
+/// A value of `declaration` other than its default that passes the checks with every other
+/// parameter at its default.
+std::string otherValidValue(const ParameterDeclaration& declaration) {
+  if (!declaration.choices.empty()) {
+    for (const std::string& choice : declaration.choices) {
+      if (choice != std::get<std::string>(declaration.default_value)) return choice;
+    }
+  }
+  if (const bool* flag = std::get_if<bool>(&declaration.default_value)) {
+    return *flag ? "false" : "true";
+  }
+  const double value = std::get<double>(declaration.default_value);
+  for (const double candidate :
+       {value * 1.25, value * 0.8, value + 0.125, value - 0.125, 0.5, 1.0, 2.0, 0.0}) {
+    PlannerParameters p;
+    try {
+      assignParameter(p, declaration, candidate, "");
+      checkParameters(p);
+      if (candidate != value) return formatRoundTrip(candidate);
+    } catch (const InvalidInputError&) {
+    }
+  }
+  ADD_FAILURE() << "no other valid value of " << declaration.name;
+  return "";
+}
+
+// Every declared parameter is a mission file key that sets its own value and no other.
+TEST(MissionFileReader, EveryDeclaredParameterIsAKeyThatSetsItAlone) {
+  const std::string base = missionWith("turning_radius", "");
+  const PlannerParameters defaults;
+  for (const ParameterDeclaration& declaration : parameterSchema()) {
+    SCOPED_TRACE(declaration.name);
+    const std::string value = otherValidValue(declaration);
+    const PlannerParameters p = MissionFileReader()
+                                    .parse(base + declaration.name + ": " + value + "\n", "m.yaml")
+                                    .parameters;
+    EXPECT_EQ(MissionFileReader::parameterText(p, declaration.name), value);
+    for (const ParameterDeclaration& other : parameterSchema()) {
+      if (&other == &declaration) continue;
+      EXPECT_EQ(MissionFileReader::parameterText(p, other.name),
+                MissionFileReader::parameterText(defaults, other.name))
+          << other.name;
+    }
+  }
 }
 
 TEST(MissionFileReader, AppliesOverridesAfterTheFile) {
