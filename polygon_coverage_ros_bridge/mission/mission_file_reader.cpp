@@ -17,6 +17,9 @@
 namespace kinematic_coverage::core {
 namespace {
 
+/// A YAML value as messages name it.
+constexpr auto kindOf = &YamlParameterReader::kindOf;
+
 /// Reads YAML nodes, naming the source and line of each problem.
 class NodeReader {
  public:
@@ -27,19 +30,6 @@ class NodeReader {
     std::string location = source_;
     if (node.Mark().line >= 0) location += ":" + std::to_string(node.Mark().line + 1);
     throw InvalidInputError(location + ": " + where + ": " + problem);
-  }
-
-  static std::string kindOf(const YAML::Node& node) {
-    switch (node.Type()) {
-      case YAML::NodeType::Sequence:
-        return "a list";
-      case YAML::NodeType::Map:
-        return "a map";
-      case YAML::NodeType::Scalar:
-        return "'" + node.Scalar() + "'";
-      default:
-        return "nothing";
-    }
   }
 
   double number(const YAML::Node& node, const std::string& where, const std::string& what) const {
@@ -160,8 +150,7 @@ YAML::Node rootMap(const std::string& text, const std::string& source_name) {
   const YAML::Node root = loadYaml(text, source_name);
   if (root.IsNull()) throw InvalidInputError(source_name + ": the file is empty");
   if (!root.IsMap()) {
-    throw InvalidInputError(source_name + ": the file must be a map of keys, not " +
-                            NodeReader::kindOf(root));
+    throw InvalidInputError(source_name + ": the file must be a map of keys, not " + kindOf(root));
   }
   return root;
 }
@@ -207,7 +196,7 @@ Mission MissionFileReader::parse(const std::string& yaml_text, const std::string
   for (const auto& [key, value] : reader.entries(root, "")) {
     if (key == "frame_id") {
       if (!value.IsScalar() || value.Scalar().empty()) {
-        reader.fail(value, key, "must be a frame name, not " + NodeReader::kindOf(value));
+        reader.fail(value, key, "must be a frame name, not " + kindOf(value));
       }
       mission.frame_id = value.Scalar();
     } else if (key == "polygon") {

@@ -7,19 +7,6 @@
 namespace kinematic_coverage::core {
 namespace {
 
-std::string kindOf(const YAML::Node& node) {
-  switch (node.Type()) {
-    case YAML::NodeType::Sequence:
-      return "a list";
-    case YAML::NodeType::Map:
-      return "a map";
-    case YAML::NodeType::Scalar:
-      return "'" + node.Scalar() + "'";
-    default:
-      return "nothing";
-  }
-}
-
 /// `node` as the value of `declaration`; throws InvalidInputError naming `where` for a
 /// value of the wrong kind.
 ParameterValue valueOf(const ParameterDeclaration& declaration, const YAML::Node& node,
@@ -31,28 +18,43 @@ ParameterValue valueOf(const ParameterDeclaration& declaration, const YAML::Node
     if (declaration.word != nullptr && node.IsScalar() && node.Scalar() == declaration.word) {
       return std::string(declaration.word);
     }
-    if (!node.IsScalar()) fail("the value must be a number, not " + kindOf(node));
+    if (!node.IsScalar())
+      fail("the value must be a number, not " + YamlParameterReader::kindOf(node));
     double value = 0.0;
     if (!YAML::convert<double>::decode(node, value)) {
-      fail("the value " + kindOf(node) + " is not a number" +
+      fail("the value " + YamlParameterReader::kindOf(node) + " is not a number" +
            (declaration.word != nullptr ? std::string(" or the word ") + declaration.word
                                         : std::string()));
     }
-    if (!std::isfinite(value)) fail("the value " + kindOf(node) + " is not finite");
+    if (!std::isfinite(value))
+      fail("the value " + YamlParameterReader::kindOf(node) + " is not finite");
     return value;
   }
   if (std::holds_alternative<bool PlannerParameters::*>(declaration.member)) {
     bool value = false;
     if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value)) {
-      fail("the value " + kindOf(node) + " is not true or false");
+      fail("the value " + YamlParameterReader::kindOf(node) + " is not true or false");
     }
     return value;
   }
-  if (!node.IsScalar()) fail("the value must be a name, not " + kindOf(node));
+  if (!node.IsScalar()) fail("the value must be a name, not " + YamlParameterReader::kindOf(node));
   return node.Scalar();
 }
 
 }  // namespace
+
+std::string YamlParameterReader::kindOf(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a map";
+    case YAML::NodeType::Scalar:
+      return "'" + node.Scalar() + "'";
+    default:
+      return "nothing";
+  }
+}
 
 void YamlParameterReader::set(const ParameterDeclaration& declaration, const YAML::Node& value,
                               const std::string& origin) {

@@ -22,6 +22,9 @@ class YamlParameterReader {
   void set(const ParameterDeclaration& declaration, const YAML::Node& value,
            const std::string& origin);
 
+  /// A YAML value as messages name it: "'abc'", "a list", "a map" or "nothing".
+  static std::string kindOf(const YAML::Node& node);
+
   /// Applies "name=value" (the value read as a YAML scalar), whose origin is `--set` and
   /// the assignment.
   void setAssignment(const std::string& assignment);
