@@ -76,6 +76,20 @@ Mission loadMission(const CommandArguments& arguments, std::ostream& out) {
   return mission;
 }
 
+std::optional<MissionCommandInput> startMissionCommand(const std::string& command,
+                                                       const std::vector<std::string>& args,
+                                                       const std::vector<RequiredOption>& required,
+                                                       const std::string& usage,
+                                                       std::ostream& out) {
+  CommandArguments arguments = parseCommandArguments(command, args, required);
+  if (arguments.help) {
+    out << usage;
+    return std::nullopt;
+  }
+  Mission mission = loadMission(arguments, out);
+  return MissionCommandInput{std::move(arguments), std::move(mission)};
+}
+
 void createOutputDirectory(const std::string& dir) {
   std::error_code code;
   std::filesystem::create_directories(dir, code);

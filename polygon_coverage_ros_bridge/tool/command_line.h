@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -43,6 +44,20 @@ CommandArguments parseCommandArguments(const std::string& command,
 /// (MissionFileReader), and prints the "load: ..." progress line to `out`. Throws
 /// InvalidInputError as the reader.
 Mission loadMission(const CommandArguments& arguments, std::ostream& out);
+
+/// What a command on a mission file starts from: its arguments and its mission.
+struct MissionCommandInput {
+  CommandArguments arguments;
+  Mission mission;
+};
+
+/// The common start of the commands on a mission file: parses `args` (parseCommandArguments)
+/// and loads the mission (loadMission, its "load: ..." line on `out`); with `--help`, prints
+/// `usage` to `out` and returns none. Throws InvalidInputError as those.
+std::optional<MissionCommandInput> startMissionCommand(const std::string& command,
+                                                       const std::vector<std::string>& args,
+                                                       const std::vector<RequiredOption>& required,
+                                                       const std::string& usage, std::ostream& out);
 
 /// Creates the output directory `dir` and its parents; InvalidInputError when it cannot.
 void createOutputDirectory(const std::string& dir);

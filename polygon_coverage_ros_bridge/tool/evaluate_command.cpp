@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
@@ -34,17 +35,14 @@ std::string EvaluateCommand::usage() {
 
 void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& out,
                           std::ostream& err) const {
-  const CommandArguments arguments =
-      parseCommandArguments("evaluate", args, {{"--trajectory", "FILE.csv"}, {"--out", "DIR"}});
-  if (arguments.help) {
-    out << usage();
-    return;
-  }
-  const std::string& trajectory_path = arguments.values.at("--trajectory");
-  const std::string& out_dir = arguments.values.at("--out");
   // Progress goes to `out` as each stage finishes; warnings and notes go to `err` only
   // once the command has succeeded, so that a failure prints just its one error line.
-  const Mission mission = loadMission(arguments, out);
+  const std::optional<MissionCommandInput> input = startMissionCommand(
+      "evaluate", args, {{"--trajectory", "FILE.csv"}, {"--out", "DIR"}}, usage(), out);
+  if (!input) return;
+  const std::string& trajectory_path = input->arguments.values.at("--trajectory");
+  const std::string& out_dir = input->arguments.values.at("--out");
+  const Mission& mission = input->mission;
 
   auto stage_start = std::chrono::steady_clock::now();
   const PoseTable table = PoseCsvReader().read(trajectory_path);

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <filesystem>
+#include <optional>
 
 #include "polygon_coverage_ros_bridge/base/text_file_writer.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -41,14 +42,12 @@ std::string ExportCommand::usage() {
 
 void ExportCommand::run(const std::vector<std::string>& args, std::ostream& out,
                         std::ostream&) const {
-  const CommandArguments arguments =
-      parseCommandArguments("export", args, {{"--datum", "LAT,LON"}, {"--out", "FILE.geojson"}});
-  if (arguments.help) {
-    out << usage();
-    return;
-  }
+  std::optional<MissionCommandInput> input = startMissionCommand(
+      "export", args, {{"--datum", "LAT,LON"}, {"--out", "FILE.geojson"}}, usage(), out);
+  if (!input) return;
+  const CommandArguments& arguments = input->arguments;
   const GeoPoint datum = parseDatum(arguments.values.at("--datum"));
-  Mission mission = loadMission(arguments, out);
+  Mission& mission = input->mission;
   const LocalEastNorthFrame frame(datum);
   // Every point within the local frame's reach, as the reader will ask.
   auto check = [&](const Point2& p, const std::string& what) {

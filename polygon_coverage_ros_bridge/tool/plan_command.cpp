@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
@@ -32,15 +33,13 @@ std::string PlanCommand::usage() {
 
 void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
                       std::ostream& err) const {
-  const CommandArguments arguments = parseCommandArguments("plan", args, {{"--out", "DIR"}});
-  if (arguments.help) {
-    out << usage();
-    return;
-  }
-  const std::string& out_dir = arguments.values.at("--out");
   // Progress goes to `out` as each stage finishes; warnings and notes go to `err` only
   // once the command has succeeded, so that a failure prints just its one error line.
-  const Mission mission = loadMission(arguments, out);
+  const std::optional<MissionCommandInput> input =
+      startMissionCommand("plan", args, {{"--out", "DIR"}}, usage(), out);
+  if (!input) return;
+  const std::string& out_dir = input->arguments.values.at("--out");
+  const Mission& mission = input->mission;
 
   const PlannedMission planned = planMission(mission, [&](const PlanningStage& stage) {
     out << stage.name << ": " << stage.summary << " (" << formatSeconds(stage.duration_s) << ")"
@@ -61,7 +60,7 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
   request.frame_id = mission.frame_id;
   request.datum = mission.datum;
   request.title =
-      "Coverage plan: " + std::filesystem::path(arguments.mission_path).filename().string() +
+      "Coverage plan: " + std::filesystem::path(input->arguments.mission_path).filename().string() +
       (mission.parameters.smoothing ? " (smoothed)" : " (unsmoothed)");
   const PlanOutputs outputs = writePlanOutputs(request, out_dir, out);
   for (const std::string& warning : outputs.warnings) notes << "warning: " << warning << "\n";

@@ -1,6 +1,7 @@
 #include "polygon_coverage_ros_bridge/tool/replan_command.h"
 
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/number_format.h"
@@ -53,13 +54,12 @@ std::string ReplanCommand::usage() {
 
 void ReplanCommand::run(const std::vector<std::string>& args, std::ostream& out,
                         std::ostream& err) const {
-  const CommandArguments arguments = parseCommandArguments(
-      "replan", args, {{"--updated", "UPDATED.yaml"}, {"--visited", "FILE.csv"}, {"--out", "DIR"}});
-  if (arguments.help) {
-    out << usage();
-    return;
-  }
-  const Mission mission = loadMission(arguments, out);
+  const std::optional<MissionCommandInput> input = startMissionCommand(
+      "replan", args, {{"--updated", "UPDATED.yaml"}, {"--visited", "FILE.csv"}, {"--out", "DIR"}},
+      usage(), out);
+  if (!input) return;
+  const CommandArguments& arguments = input->arguments;
+  const Mission& mission = input->mission;
   const PolygonWithHoles updated =
       MissionFileReader().readUpdatedPolygon(arguments.values.at("--updated"));
   const PoseTable table = PoseCsvReader().read(arguments.values.at("--visited"));

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
@@ -214,15 +215,12 @@ std::string SimulateCommand::usage() {
 
 void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& out,
                           std::ostream& err) const {
-  const CommandArguments arguments =
-      parseCommandArguments("simulate", args, {{"--trajectory", "FILE.csv"}, {"--out", "DIR"}});
-  if (arguments.help) {
-    out << usage();
-    return;
-  }
-  const std::string& trajectory_path = arguments.values.at("--trajectory");
-  const std::string& out_dir = arguments.values.at("--out");
-  const Mission mission = loadMission(arguments, out);
+  const std::optional<MissionCommandInput> input = startMissionCommand(
+      "simulate", args, {{"--trajectory", "FILE.csv"}, {"--out", "DIR"}}, usage(), out);
+  if (!input) return;
+  const std::string& trajectory_path = input->arguments.values.at("--trajectory");
+  const std::string& out_dir = input->arguments.values.at("--out");
+  const Mission& mission = input->mission;
 
   auto stage_start = std::chrono::steady_clock::now();
   const PoseTable table = PoseCsvReader().read(trajectory_path);
@@ -274,7 +272,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   writeSimulationFigures(
       dir,
       "Simulated robot on " + std::filesystem::path(trajectory_path).filename().string() + " (" +
-          std::filesystem::path(arguments.mission_path).filename().string() + ")",
+          std::filesystem::path(input->arguments.mission_path).filename().string() + ")",
       simulation, coverage, desired, cleaned, offset, mission.parameters.sim_dt);
 
   std::ostringstream notes;
