@@ -44,7 +44,7 @@ CoveragePlannerNode::CoveragePlannerNode(const ros::NodeHandle& node,
     : node_(node), private_node_(private_node), tf_listener_(tf_buffer_) {
   waypoint_publisher_ = node_.advertise<geometry_msgs::PoseArray>("waypoint_list", 1, true);
   marker_publisher_ = private_node_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
-  status_publisher_ = private_node_.advertise<kinematic_coverage::PlanStatus>("status", 10, true);
+  status_ = NodeStatus(private_node_, "coverage_planner", "plan");
   polygon_subscriber_ = node_.subscribe("polygon", 1, &CoveragePlannerNode::onPolygon, this);
   start_subscriber_ = node_.subscribe("start", 1, &CoveragePlannerNode::onStart, this);
   goal_subscriber_ = node_.subscribe("goal", 1, &CoveragePlannerNode::onGoal, this);
@@ -208,8 +208,8 @@ bool CoveragePlannerNode::plan(std::string& message) {
 
 void CoveragePlannerNode::publishStatus(const std::string& stage, bool success,
                                         const std::string& message, double duration_s) {
-  status_publisher_.publish(statusMessage(stage, success, message, duration_s,
-                                          polygon_ ? polygon_->header.frame_id : std::string()));
+  status_.publish(success, message, duration_s,
+                  polygon_ ? polygon_->header.frame_id : std::string(), stage);
 }
 
 }  // namespace kinematic_coverage::nodes

@@ -13,6 +13,7 @@
 #include "kinematic_coverage/PolygonWithHolesStamped.h"
 #include "kinematic_coverage/SaveMission.h"
 #include "polygon_coverage_ros_bridge/mission/mission.h"
+#include "polygon_coverage_ros_bridge/ros/node_status.h"
 
 namespace kinematic_coverage::nodes {
 
@@ -71,7 +72,7 @@ class CoveragePlannerNode {
   ros::Subscriber activate_subscriber_;
   ros::Publisher waypoint_publisher_;
   ros::Publisher marker_publisher_;
-  ros::Publisher status_publisher_;
+  NodeStatus status_;
   ros::ServiceServer plan_service_;
   ros::ServiceServer save_mission_service_;
   tf2_ros::Buffer tf_buffer_;

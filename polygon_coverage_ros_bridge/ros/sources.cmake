@@ -5,6 +5,7 @@ add_library(kc_ros_bridge STATIC
   polygon_coverage_ros_bridge/ros/coverage_planner_node.cpp
   polygon_coverage_ros_bridge/ros/heatmap_grid.cpp
   polygon_coverage_ros_bridge/ros/message_conversion.cpp
+  polygon_coverage_ros_bridge/ros/node_status.cpp
   polygon_coverage_ros_bridge/ros/plan_markers.cpp
   polygon_coverage_ros_bridge/ros/ros_parameter_reader.cpp
   polygon_coverage_ros_bridge/ros/trajectory_markers.cpp)

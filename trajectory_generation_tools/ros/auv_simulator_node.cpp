@@ -40,7 +40,7 @@ AuvSimulatorNode::AuvSimulatorNode(const ros::NodeHandle& node, const ros::NodeH
   pose_publisher_ = node_.advertise<geometry_msgs::PoseStamped>("pose", 10);
   estimated_pose_publisher_ = node_.advertise<geometry_msgs::PoseStamped>("estimated_pose", 10);
   visited_publisher_ = node_.advertise<geometry_msgs::PoseArray>("visited", 1, true);
-  status_publisher_ = private_node_.advertise<kinematic_coverage::PlanStatus>("status", 10, true);
+  status_ = NodeStatus(private_node_, "auv_simulator", "simulate");
   trajectory_subscriber_ = node_.subscribe("trajectory", 1, &AuvSimulatorNode::onTrajectory, this);
   timer_ = node_.createTimer(ros::Duration(1.0 / publish_rate), &AuvSimulatorNode::onTick, this);
   ROS_INFO("auv_simulator: waiting for a trajectory (real time factor %g, %g Hz)",
@@ -168,8 +168,7 @@ void AuvSimulatorNode::publishPose(bool moved) {
 }
 
 void AuvSimulatorNode::publishStatus(bool success, const std::string& message) {
-  status_publisher_.publish(
-      statusMessage("simulate", success, message, 0.0, visited_.header.frame_id));
+  status_.publish(success, message, 0.0, visited_.header.frame_id);
 }
 
 }  // namespace kinematic_coverage::nodes

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "polygon_coverage_ros_bridge/ros/node_status.h"
 #include "trajectory_generation_tools/simulation/trajectory_follower.h"
 
 namespace kinematic_coverage::nodes {
@@ -49,7 +50,7 @@ class AuvSimulatorNode {
   ros::Publisher pose_publisher_;
   ros::Publisher estimated_pose_publisher_;
   ros::Publisher visited_publisher_;
-  ros::Publisher status_publisher_;
+  NodeStatus status_;
   ros::Timer timer_;
   double real_time_factor_ = 10.0;
   std::optional<core::TrajectoryFollower> follower_;

@@ -47,7 +47,7 @@ ReplannerNode::ReplannerNode(const ros::NodeHandle& node, const ros::NodeHandle&
   waypoint_publisher_ = node_.advertise<geometry_msgs::PoseArray>("waypoint_list", 1, true);
   remaining_publisher_ =
       node_.advertise<visualization_msgs::MarkerArray>("remaining_polygon", 1, true);
-  status_publisher_ = private_node_.advertise<kinematic_coverage::PlanStatus>("status", 10, true);
+  status_ = NodeStatus(private_node_, "replanner", "replan");
   polygon_subscriber_ = node_.subscribe("polygon", 1, &ReplannerNode::onPolygon, this);
   updated_polygon_subscriber_ =
       node_.subscribe("updated_polygon", 1, &ReplannerNode::onUpdatedPolygon, this);
@@ -106,9 +106,10 @@ void ReplannerNode::onVisited(const geometry_msgs::PoseArray::ConstPtr& message)
     history_frame_ = frame;
     if (!message->poses.empty()) first_visited_ = message->poses.front();
   } catch (const core::InvalidInputError& error) {
-    reject(std::string("visited: ") + error.what(), secondsSince(start), frame);
+    status_.reject(std::string("visited: ") + error.what(), secondsSince(start), frame);
   } catch (const std::exception& error) {
-    reject(std::string("internal error: visited: ") + error.what(), secondsSince(start), frame);
+    status_.reject(std::string("internal error: visited: ") + error.what(), secondsSince(start),
+                   frame);
   }
 }
 
@@ -126,9 +127,10 @@ void ReplannerNode::onPose(const geometry_msgs::PoseStamped::ConstPtr& message) 
     if (history_->empty()) first_visited_ = message->pose;
     history_->add(pose);
   } catch (const core::InvalidInputError& error) {
-    reject(std::string("pose: ") + error.what(), secondsSince(start), frame);
+    status_.reject(std::string("pose: ") + error.what(), secondsSince(start), frame);
   } catch (const std::exception& error) {
-    reject(std::string("internal error: pose: ") + error.what(), secondsSince(start), frame);
+    status_.reject(std::string("internal error: pose: ") + error.what(), secondsSince(start),
+                   frame);
   }
 }
 
@@ -190,25 +192,14 @@ void ReplannerNode::onUpdatedPolygon(
             << " waypoints from the last of " << history_->count() << " visited poses";
     const double duration_s = secondsSince(start);
     ROS_INFO("replanner: replan: %s (%.3f s)", summary.str().c_str(), duration_s);
-    publishStatus(true, summary.str(), duration_s, frame);
+    status_.publish(true, summary.str(), duration_s, frame);
     return;
   } catch (const core::InvalidInputError& invalid) {
     error = invalid.what();
   } catch (const std::exception& internal) {
     error = std::string("internal error: ") + internal.what();
   }
-  reject(error, secondsSince(start), frame);
-}
-
-void ReplannerNode::reject(const std::string& message, double duration_s,
-                           const std::string& frame_id) {
-  ROS_ERROR("replanner: replan: %s", message.c_str());
-  publishStatus(false, message, duration_s, frame_id);
-}
-
-void ReplannerNode::publishStatus(bool success, const std::string& message, double duration_s,
-                                  const std::string& frame_id) {
-  status_publisher_.publish(statusMessage("replan", success, message, duration_s, frame_id));
+  status_.reject(error, secondsSince(start), frame);
 }
 
 }  // namespace kinematic_coverage::nodes

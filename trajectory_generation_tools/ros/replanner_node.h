@@ -10,6 +10,7 @@
 
 #include "kinematic_coverage/PolygonWithHolesStamped.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/ros/node_status.h"
 #include "trajectory_generation_tools/replanning/visited_history.h"
 
 namespace kinematic_coverage::nodes {
@@ -43,12 +44,6 @@ class ReplannerNode {
   /// growing `visited` sends it: then only the new poses need adding.
   bool extendsHistory(const geometry_msgs::PoseArray& message, const std::string& frame) const;
 
-  /// Reports a rejected message: one ROS_ERROR and a failed status.
-  void reject(const std::string& message, double duration_s, const std::string& frame_id);
-
-  void publishStatus(bool success, const std::string& message, double duration_s,
-                     const std::string& frame_id);
-
   ros::NodeHandle node_;
   ros::NodeHandle private_node_;
   ros::Subscriber polygon_subscriber_;
@@ -58,7 +53,7 @@ class ReplannerNode {
   ros::Subscriber goal_subscriber_;
   ros::Publisher waypoint_publisher_;
   ros::Publisher remaining_publisher_;
-  ros::Publisher status_publisher_;
+  NodeStatus status_;
   /// Frame of the newest `polygon` or `updated_polygon`.
   std::optional<std::string> polygon_frame_;
   /// The visited poses (with the parameters read when it began), their frame and the

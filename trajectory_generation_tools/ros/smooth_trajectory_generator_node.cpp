@@ -37,7 +37,7 @@ SmoothTrajectoryGeneratorNode::SmoothTrajectoryGeneratorNode(const ros::NodeHand
   marker_publisher_ = private_node_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
   heatmap_publisher_ =
       private_node_.advertise<nav_msgs::OccupancyGrid>("coverage_heatmap", 1, true);
-  status_publisher_ = private_node_.advertise<kinematic_coverage::PlanStatus>("status", 10, true);
+  status_ = NodeStatus(private_node_, "smooth_trajectory_generator", "smooth");
   polygon_subscriber_ =
       node_.subscribe("polygon", 1, &SmoothTrajectoryGeneratorNode::onPolygon, this);
   updated_polygon_subscriber_ =
@@ -68,10 +68,11 @@ void SmoothTrajectoryGeneratorNode::onPolygon(
     free_area_ = std::move(cleaned.free_area);
     polygon_frame_ = frame;
   } catch (const core::InvalidInputError& error) {
-    reject(std::string("polygon: ") + error.what(), secondsSince(start), frame);
+    status_.reject(std::string("polygon: ") + error.what(), secondsSince(start), frame);
     return;
   } catch (const std::exception& error) {
-    reject(std::string("internal error: polygon: ") + error.what(), secondsSince(start), frame);
+    status_.reject(std::string("internal error: polygon: ") + error.what(), secondsSince(start),
+                   frame);
     return;
   }
   if (waypoints_) generate();
@@ -90,7 +91,7 @@ void SmoothTrajectoryGeneratorNode::onWaypoints(const geometry_msgs::PoseArray::
     waypoints_ = checkedPoses(*message, "waypoint");
     waypoint_frame_ = frame;
   } catch (const core::InvalidInputError& error) {
-    reject(std::string("waypoint_list: ") + error.what(), secondsSince(start), frame);
+    status_.reject(std::string("waypoint_list: ") + error.what(), secondsSince(start), frame);
     return;
   }
   if (!free_area_) {
@@ -154,25 +155,14 @@ void SmoothTrajectoryGeneratorNode::generate() {
     }
     const double duration_s = secondsSince(start);
     ROS_INFO("smooth_trajectory_generator: smooth: %s (%.3f s)", summary.str().c_str(), duration_s);
-    publishStatus(true, summary.str(), duration_s, header.frame_id);
+    status_.publish(true, summary.str(), duration_s, header.frame_id);
     return;
   } catch (const core::InvalidInputError& error) {
     message = error.what();
   } catch (const std::exception& error) {
     message = std::string("internal error: ") + error.what();
   }
-  reject(message, secondsSince(start), waypoint_frame_);
-}
-
-void SmoothTrajectoryGeneratorNode::reject(const std::string& message, double duration_s,
-                                           const std::string& frame_id) {
-  ROS_ERROR("smooth_trajectory_generator: smooth: %s", message.c_str());
-  publishStatus(false, message, duration_s, frame_id);
-}
-
-void SmoothTrajectoryGeneratorNode::publishStatus(bool success, const std::string& message,
-                                                  double duration_s, const std::string& frame_id) {
-  status_publisher_.publish(statusMessage("smooth", success, message, duration_s, frame_id));
+  status_.reject(message, secondsSince(start), waypoint_frame_);
 }
 
 }  // namespace kinematic_coverage::nodes

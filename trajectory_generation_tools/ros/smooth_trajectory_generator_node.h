@@ -9,6 +9,7 @@
 
 #include "kinematic_coverage/PolygonWithHolesStamped.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "polygon_coverage_ros_bridge/ros/node_status.h"
 
 namespace kinematic_coverage::nodes {
 
@@ -35,12 +36,6 @@ class SmoothTrajectoryGeneratorNode {
   /// Smooths the pending waypoint list against the newest polygon and publishes.
   void generate();
 
-  /// Reports a rejected message: one ROS_ERROR and a failed status.
-  void reject(const std::string& message, double duration_s, const std::string& frame_id);
-
-  void publishStatus(bool success, const std::string& message, double duration_s,
-                     const std::string& frame_id);
-
   ros::NodeHandle node_;
   ros::NodeHandle private_node_;
   ros::Subscriber polygon_subscriber_;
@@ -50,7 +45,7 @@ class SmoothTrajectoryGeneratorNode {
   ros::Publisher path_publisher_;
   ros::Publisher marker_publisher_;
   ros::Publisher heatmap_publisher_;
-  ros::Publisher status_publisher_;
+  NodeStatus status_;
   /// The newest valid polygon, cleaned, and its frame (docs/REFERENCE.md, Messages).
   std::optional<core::PolygonWithHoles> free_area_;
   std::string polygon_frame_;
