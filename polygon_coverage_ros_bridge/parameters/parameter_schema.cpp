@@ -23,6 +23,7 @@ constexpr const char* kWallDistanceWord = "wall_distance";
 /// The width config/default.yaml's comments are wrapped at.
 constexpr std::size_t kCommentWidth = 92;
 
+/// Numbers > 0.
 NumberRange positive() {
   NumberRange range;
   range.lower = 0.0;
@@ -30,12 +31,14 @@ NumberRange positive() {
   return range;
 }
 
+/// Numbers >= 0.
 NumberRange nonNegative() {
   NumberRange range;
   range.lower = 0.0;
   return range;
 }
 
+/// Numbers between `lower` and `upper`, each end open or closed.
 NumberRange interval(double lower, bool lower_open, double upper, bool upper_open) {
   NumberRange range;
   range.lower = lower;
@@ -54,6 +57,7 @@ NumberRange loopGain() {
   return range;
 }
 
+/// The names of a name-valued parameter's choices.
 template <typename Value, std::size_t N>
 std::vector<std::string> namesOf(const ParameterChoices<Value, N>& choices) {
   std::vector<std::string> names;
@@ -61,6 +65,7 @@ std::vector<std::string> namesOf(const ParameterChoices<Value, N>& choices) {
   return names;
 }
 
+/// A number parameter.
 ParameterDeclaration number(const char* name, double P::*member, const char* unit,
                             double default_value, NumberRange range, ParameterStage stage,
                             const char* description, const char* source = "") {
@@ -74,11 +79,13 @@ ParameterDeclaration clearance(const char* name, double P::*member, NumberRange 
           description, "",     stage};
 }
 
+/// A true/false parameter.
 ParameterDeclaration flag(const char* name, bool P::*member, bool default_value,
                           ParameterStage stage, const char* description, const char* source = "") {
   return {name, member, "", default_value, {}, {}, nullptr, description, source, stage};
 }
 
+/// A name-valued parameter.
 ParameterDeclaration choice(const char* name, std::string P::*member, const char* default_value,
                             std::vector<std::string> choices, ParameterStage stage,
                             const char* description) {
@@ -86,7 +93,7 @@ ParameterDeclaration choice(const char* name, std::string P::*member, const char
           description, "",     stage};
 }
 
-/// The settings of the thesis's lake experiments.
+/// Where the thesis's settings come from.
 constexpr const char* kThesis = "the thesis's experiments (Chapter 4)";
 
 /// The decomposition, the vehicle's limits, the route and the wall offset.
@@ -357,6 +364,7 @@ std::vector<ParameterDeclaration> controllerDeclarations() {
   };
 }
 
+/// Every declaration, in the order of config/default.yaml.
 std::vector<ParameterDeclaration> allDeclarations() {
   std::vector<ParameterDeclaration> all = planningDeclarations();
   for (auto* part : {sensingDeclarations, trajectoryDeclarations, vehicleBodyDeclarations,
@@ -366,10 +374,12 @@ std::vector<ParameterDeclaration> allDeclarations() {
   return all;
 }
 
+/// `text` as code: in backticks for markdown.
 std::string code(const std::string& text, bool markdown) {
   return markdown ? "`" + text + "`" : text;
 }
 
+/// A range's end as the reference writes it ("pi" for pi).
 std::string boundText(double value) { return value == M_PI ? "pi" : formatNumber(value); }
 
 /// The numbers' part of validValuesText; with `parameters`, bounds by other parameters
@@ -416,6 +426,7 @@ std::string numberRangeText(const ParameterDeclaration& d, bool markdown,
   return text;
 }
 
+/// The value of the number parameter `name`.
 double numberOf(const PlannerParameters& parameters, const char* name) {
   return parameters.*std::get<double P::*>(findParameter(name)->member);
 }
@@ -456,6 +467,7 @@ std::string originOf(const ParameterDeclaration& d, const ParameterOrigins& orig
   return "";
 }
 
+/// Throws the InvalidInputError of `value` out of `d`'s range, naming its origin.
 [[noreturn]] void outOfRange(const ParameterDeclaration& d, const ParameterValue& value,
                              const std::string& origin, const PlannerParameters* parameters) {
   std::string must;
@@ -483,6 +495,7 @@ std::string kindOf(const ParameterValue& value) {
   return "'" + std::get<std::string>(value) + "'";
 }
 
+/// `text` as YAML comment lines of at most kCommentWidth characters.
 void wrapComment(std::ostringstream& out, const std::string& text) {
   std::istringstream words(text);
   std::string word, line = "#";
