@@ -100,18 +100,6 @@ double boundarySimplificationOf(const PlannerParameters& parameters) {
   return parameters.boundary_simplification * sensorOf(parameters).sweepDistance();
 }
 
-DecompositionType decompositionTypeOf(const PlannerParameters& parameters) {
-  return choiceOf(parameters.decomposition_type, kDecompositionTypes);
-}
-
-CellJoining cellJoiningOf(const PlannerParameters& parameters) {
-  return choiceOf(parameters.cell_joining, kCellJoinings);
-}
-
-OffsetParts offsetPartsOf(const PlannerParameters& parameters) {
-  return choiceOf(parameters.offset_parts, kOffsetParts);
-}
-
 SegmentCost segmentCostOf(const PlannerParameters& parameters) {
   return SegmentCost(choiceOf(parameters.cost_function, kCostFunctions), vehicleLimits(parameters));
 }

@@ -46,15 +46,6 @@ double gapClearanceOf(const PlannerParameters& parameters);
 /// boundary_simplification as a distance (m): that share of the sensor's sweep distance.
 double boundarySimplificationOf(const PlannerParameters& parameters);
 
-/// decomposition_type.
-DecompositionType decompositionTypeOf(const PlannerParameters& parameters);
-
-/// cell_joining.
-CellJoining cellJoiningOf(const PlannerParameters& parameters);
-
-/// offset_parts.
-OffsetParts offsetPartsOf(const PlannerParameters& parameters);
-
 /// The planner's segment cost: cost_function under the vehicle limits.
 SegmentCost segmentCostOf(const PlannerParameters& parameters);
 

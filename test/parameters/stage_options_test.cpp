@@ -30,8 +30,8 @@ TEST(StageOptions, TheDefaultsMapToTheDocumentedStageOptions) {
   EXPECT_EQ(vehicle.a_max, p.a_max);
   EXPECT_EQ(vehicle.yaw_rate_max, p.yaw_rate_max);
   EXPECT_EQ(vehicle.turning_radius, p.turning_radius);
-  EXPECT_EQ(decompositionTypeOf(p), DecompositionType::kBoustrophedon);
-  EXPECT_EQ(offsetPartsOf(p), OffsetParts::kAll);
+  EXPECT_EQ(planningOptionsOf(p).decomposition_type, DecompositionType::kBoustrophedon);
+  EXPECT_EQ(planningOptionsOf(p).offset_parts, OffsetParts::kAll);
   EXPECT_EQ(sensorOptionsOf(p).model, SensorModel::kFrustum);
   // The frustum's footprint: W = 2 d tan(lateral_fov / 2), L = 2 d tan(onward_fov / 2).
   const FrustumSensor sensor = sensorOf(p);
@@ -110,19 +110,34 @@ TEST(StageOptions, TheDefaultsMapToTheDocumentedStageOptions) {
   EXPECT_EQ(remaining.alpha, p.alpha);
 }
 
+TEST(StageOptions, ThePlanningOptionsResolveTheWordsAndShares) {
+  PlannerParameters p;
+  p.wall_distance = 1.5;
+  const PlanningOptions planning = planningOptionsOf(p);
+  EXPECT_EQ(planning.wall_distance, 1.5);
+  EXPECT_EQ(planning.gap_clearance, 1.5);  // the word wall_distance
+  EXPECT_DOUBLE_EQ(planning.boundary_simplification,
+                   p.boundary_simplification * sensorOf(p).sweepDistance());
+  EXPECT_EQ(planning.cost_function, CostFunction::kTime);
+  EXPECT_EQ(planning.vehicle.turning_radius, p.turning_radius);
+  EXPECT_TRUE(planning.coverage_repair);
+  p.gap_clearance = 0.5;
+  EXPECT_EQ(planningOptionsOf(p).gap_clearance, 0.5);
+}
+
 TEST(StageOptions, EveryNameMapsToItsOwnOption) {
   PlannerParameters p;
   for (const auto& [name, type] : kDecompositionTypes) {
     p.decomposition_type = name;
-    EXPECT_EQ(decompositionTypeOf(p), type) << name;
+    EXPECT_EQ(planningOptionsOf(p).decomposition_type, type) << name;
   }
   for (const auto& [name, joining] : kCellJoinings) {
     p.cell_joining = name;
-    EXPECT_EQ(cellJoiningOf(p), joining) << name;
+    EXPECT_EQ(planningOptionsOf(p).cell_joining, joining) << name;
   }
   for (const auto& [name, parts] : kOffsetParts) {
     p.offset_parts = name;
-    EXPECT_EQ(offsetPartsOf(p), parts) << name;
+    EXPECT_EQ(planningOptionsOf(p).offset_parts, parts) << name;
   }
   for (const auto& [name, model] : kSensorModels) {
     p.sensor_model = name;
