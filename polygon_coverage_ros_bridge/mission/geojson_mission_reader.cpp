@@ -14,7 +14,6 @@
 #include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
 #include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/mission/yaml_parameter_reader.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -239,16 +238,10 @@ Mission GeoJsonMissionReader::parse(const std::string& text, const std::string& 
   mission.start = frame.toLocal(*features.start, source_name + ": the start");
   mission.goal = frame.toLocal(*features.goal, source_name + ": the goal");
   mission.parameters = base;
-  ParameterOrigins origins;
-  YamlParameterReader parameters(mission.parameters, origins);
-  for (const auto& [name, value, where] : features.parameters) {
-    const ParameterDeclaration* declaration = findParameter(name);
-    if (declaration == nullptr)
-      throw InvalidInputError(where + ": unknown parameter '" + name + "'");
-    parameters.set(*declaration, value, where);
-  }
+  YamlParameterReader parameters(mission.parameters);
+  for (const auto& [name, value, where] : features.parameters) parameters.set(name, value, where);
   for (const std::string& assignment : overrides) parameters.setAssignment(assignment);
-  checkParameters(mission.parameters, origins);
+  parameters.check();
   return mission;
 }
 

@@ -190,8 +190,7 @@ Mission MissionFileReader::parse(const std::string& yaml_text, const std::string
   const NodeReader reader(source_name);
   Mission mission;
   mission.parameters = base;
-  ParameterOrigins origins;
-  YamlParameterReader parameters(mission.parameters, origins);
+  YamlParameterReader parameters(mission.parameters);
   bool has_polygon = false, has_start = false, has_goal = false;
   for (const auto& [key, value] : reader.entries(root, "")) {
     if (key == "frame_id") {
@@ -220,7 +219,7 @@ Mission MissionFileReader::parse(const std::string& yaml_text, const std::string
   if (!has_start) throw InvalidInputError(source_name + ": the start is missing");
   if (!has_goal) throw InvalidInputError(source_name + ": the goal is missing");
   for (const std::string& assignment : overrides) parameters.setAssignment(assignment);
-  checkParameters(mission.parameters, origins);
+  parameters.check();
   return mission;
 }
 
@@ -250,23 +249,21 @@ PlannerParameters MissionFileReader::readParameters(const std::string& path) con
   const YAML::Node root = rootMap(readText(path), path);
   const NodeReader reader(path);
   PlannerParameters parameters;
-  ParameterOrigins origins;
-  YamlParameterReader parameter_reader(parameters, origins);
+  YamlParameterReader parameter_reader(parameters);
   for (const auto& [key, value] : reader.entries(root, "")) {
     const ParameterDeclaration* declaration = findParameter(key);
     if (declaration == nullptr) reader.fail(value, key, "unknown parameter");
     parameter_reader.set(*declaration, value, reader.location(value));
   }
-  checkParameters(parameters, origins);
+  parameter_reader.check();
   return parameters;
 }
 
 PlannerParameters MissionFileReader::withOverrides(
     PlannerParameters parameters, const std::vector<std::string>& overrides) const {
-  ParameterOrigins origins;
-  YamlParameterReader parameter_reader(parameters, origins);
+  YamlParameterReader parameter_reader(parameters);
   for (const std::string& assignment : overrides) parameter_reader.setAssignment(assignment);
-  checkParameters(parameters, origins);
+  parameter_reader.check();
   return parameters;
 }
 

@@ -37,9 +37,10 @@ class TrajectoryPipeline {
  public:
   /// `exact_parts`: the exact offset around the parts the robot reaches (a plan's
   /// exact_offset_parts, or reachableOffset's), which coverage-safe smoothing keeps and the
-  /// coverage is measured on; it must outlive the pipeline. With WaypointOrigin::kPlanner,
-  /// a failure on the waypoints is an InternalError naming the stage (smooth, trajectory or
-  /// coverage), except SizeLimitError. Throws InvalidInputError for parameters out of range.
+  /// coverage is measured on; it and `parameters` must outlive the pipeline. With
+  /// WaypointOrigin::kPlanner, a failure on the waypoints is an InternalError naming the
+  /// stage (smooth, trajectory or coverage), except SizeLimitError. Throws InvalidInputError
+  /// for parameters out of range.
   TrajectoryPipeline(const PlannerParameters& parameters,
                      const std::vector<PolygonWithHoles>& exact_parts,
                      WaypointOrigin origin = WaypointOrigin::kPlanner);

@@ -62,6 +62,15 @@ void YamlParameterReader::set(const ParameterDeclaration& declaration, const YAM
   origins_[declaration.name] = origin;
 }
 
+void YamlParameterReader::set(const std::string& name, const YAML::Node& value,
+                              const std::string& origin) {
+  const ParameterDeclaration* declaration = findParameter(name);
+  if (declaration == nullptr) {
+    throw InvalidInputError(origin + ": unknown parameter '" + name + "'");
+  }
+  set(*declaration, value, origin);
+}
+
 void YamlParameterReader::setAssignment(const std::string& assignment) {
   const std::string origin = "--set " + assignment;
   const std::size_t equals = assignment.find('=');
@@ -69,8 +78,7 @@ void YamlParameterReader::setAssignment(const std::string& assignment) {
     throw InvalidInputError(origin + ": expected name=value");
   }
   const std::string name = assignment.substr(0, equals);
-  const ParameterDeclaration* declaration = findParameter(name);
-  if (declaration == nullptr) {
+  if (findParameter(name) == nullptr) {
     throw InvalidInputError(origin + ": unknown parameter '" + name + "'");
   }
   YAML::Node value;
@@ -79,7 +87,7 @@ void YamlParameterReader::setAssignment(const std::string& assignment) {
   } catch (const YAML::Exception& error) {
     throw InvalidInputError(origin + ": not valid YAML: " + error.msg);
   }
-  set(*declaration, value, origin);
+  set(name, value, origin);
 }
 
 }  // namespace kinematic_coverage::core

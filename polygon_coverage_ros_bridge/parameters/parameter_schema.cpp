@@ -1,5 +1,6 @@
 #include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -488,6 +489,11 @@ std::string originOf(const ParameterDeclaration& d, const ParameterOrigins& orig
                           must);
 }
 
+/// Whether `name` is one of the names `d` allows.
+bool isChoice(const ParameterDeclaration& d, const std::string& name) {
+  return std::find(d.choices.begin(), d.choices.end(), name) != d.choices.end();
+}
+
 /// The type of a value, as a message names it.
 std::string kindOf(const ParameterValue& value) {
   if (const double* number = std::get_if<double>(&value)) return formatNumber(*number);
@@ -608,9 +614,7 @@ void assignParameter(PlannerParameters& parameters, const ParameterDeclaration& 
     if (name == nullptr) {
       throw InvalidInputError(prefix + ": the value " + kindOf(value) + " is not a name");
     }
-    bool known = false;
-    for (const std::string& choice : declaration.choices) known = known || choice == *name;
-    if (!known) outOfRange(declaration, value, origin, nullptr);
+    if (!isChoice(declaration, *name)) outOfRange(declaration, value, origin, nullptr);
     parameters.*std::get<std::string P::*>(declaration.member) = *name;
   }
 }
@@ -620,9 +624,7 @@ void checkParameters(const PlannerParameters& parameters, const ParameterOrigins
     const ParameterValue value = parameterValue(parameters, declaration);
     const std::string where = originOf(declaration, origins);
     if (const std::string* name = std::get_if<std::string>(&value)) {
-      bool known = false;
-      for (const std::string& choice : declaration.choices) known = known || choice == *name;
-      if (!known) outOfRange(declaration, value, where, nullptr);
+      if (!isChoice(declaration, *name)) outOfRange(declaration, value, where, nullptr);
     } else if (const double* number = std::get_if<double>(&value)) {
       const bool stand_in = declaration.word != nullptr && *number == kClearanceOfWallDistance;
       const char* unchecked = declaration.range.unchecked_while_zero;

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "kinematic_coverage/PlanStatus.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/ros/message_conversion.h"

@@ -6,7 +6,6 @@
 #include <sstream>
 #include <vector>
 
-#include "kinematic_coverage/PlanStatus.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/parameters/stage_options.h"
