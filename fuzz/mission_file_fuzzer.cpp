@@ -10,10 +10,10 @@
 #include <cstdint>
 #include <string>
 
+#include "coverage_system/mission/mission_file_reader.h"
+#include "coverage_system/parameters/parameter_schema.h"
 #include "fuzz/fuzz_check.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 

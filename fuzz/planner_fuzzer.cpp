@@ -23,12 +23,12 @@
 #include <utility>
 #include <vector>
 
+#include "coverage_system/mission/mission.h"
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/parameters/parameter_schema.h"
 #include "fuzz/fuzz_check.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/mission.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 #include "test/support/sampled_wall_distance.h"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <ros/publisher.h>
 #include <rviz/tool.h>
 
-#include "polygon_coverage_ros_bridge/mission/polygon_sketch.h"
+#include "coverage_system/mission/polygon_sketch.h"
 #endif
 
 #include <memory>

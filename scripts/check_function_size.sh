@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# No function of the core (every stage folder of polygon_coverage_ros_bridge/ and
-# trajectory_generation_tools/ but the ROS adapters in ros/) longer than 80 lines:
-# clang-tidy's readability-function-size over the build's compile_commands.json.
+# No function of the core (every stage folder of polygon_coverage_ros_bridge/,
+# trajectory_generation_tools/ and coverage_system/ but the ROS adapters in ros/) longer
+# than 80 lines: clang-tidy's readability-function-size over the build's compile_commands.json.
 #   scripts/check_function_size.sh BUILD_DIR
 # Exit status: 0 none over, 1 a function over (named on stderr), 77 clang-tidy missing.
 set -euo pipefail
@@ -15,7 +15,7 @@ if [ -z "$tidy" ]; then
 fi
 config='{Checks: "-*,readability-function-size", CheckOptions: [{key: readability-function-size.LineThreshold, value: 80}]}'
 cd "$root"
-sources=$(find polygon_coverage_ros_bridge trajectory_generation_tools -name '*.cpp' \
+sources=$(find polygon_coverage_ros_bridge trajectory_generation_tools coverage_system -name '*.cpp' \
   -not -path '*/ros/*' | sort)
 output="$(printf '%s\n' $sources | xargs -P "${JOBS:-2}" -n 4 \
   "$tidy" -p "$build_dir" --quiet --config="$config" 2>/dev/null || true)"

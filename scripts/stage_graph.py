@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The stage graph of the core and the nodes: which stage folder includes which.
 
-Every folder of polygon_coverage_ros_bridge/ and trajectory_generation_tools/ is a stage.
+Every folder of the two halves (polygon_coverage_ros_bridge/, trajectory_generation_tools/)
+and of the compositions above them (coverage_system/) is a stage.
 An edge A -> B means that a source of A includes a header of B. The floors (FLOORS) are the
 stages each stage may include, the architecture of docs/ARCHITECTURE.md; an edge outside
 them is a violation.
@@ -19,12 +20,15 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 HALVES = ('polygon_coverage_ros_bridge', 'trajectory_generation_tools')
-INCLUDE = re.compile(r'^\s*#\s*include\s+"((?:' + '|'.join(HALVES) + r')/[a-z_]+)/[^"]+"')
+COMPOSITIONS = 'coverage_system'
+FOLDERS = HALVES + (COMPOSITIONS,)
+INCLUDE = re.compile(r'^\s*#\s*include\s+"((?:' + '|'.join(FOLDERS) + r')/[a-z_]+)/[^"]+"')
 
 # The floors, lowest first: each stage with the stages it may include. The base floor
-# (geometry, base) is below both halves; the parameters are above every stage they map
-# the flat parameter set to; the compositions (planner, mission), the tool and the ROS
-# adapters are above them.
+# (geometry, base) is below both halves; the compositions of coverage_system/ are above
+# both: the parameters above every stage they map the flat parameter set to, the planner
+# and missions above them, the tool and the ROS adapters on top. No stage of a half may
+# include a composition.
 LOWER_STAGES = {'geometry', 'base', 'validation', 'decomposition', 'sweeps', 'route', 'gtsp',
                 'path', 'coverage', 'repair', 'smoothing', 'trajectory', 'plot', 'simulation',
                 'replanning'}
@@ -45,31 +49,29 @@ FLOORS = {
     'trajectory_generation_tools/simulation': {'geometry', 'base', 'validation', 'path'},
     'trajectory_generation_tools/replanning': {'geometry', 'base', 'validation', 'sweeps',
                                                'coverage'},
-    'polygon_coverage_ros_bridge/parameters': LOWER_STAGES,
-    'polygon_coverage_ros_bridge/planner': LOWER_STAGES | {'parameters'},
-    'polygon_coverage_ros_bridge/mission': LOWER_STAGES | {'parameters', 'planner'},
-    'polygon_coverage_ros_bridge/tool': LOWER_STAGES | {'parameters', 'planner', 'mission'},
-    'polygon_coverage_ros_bridge/ros': LOWER_STAGES | {'parameters', 'planner', 'mission'},
-    'trajectory_generation_tools/ros': LOWER_STAGES | {'parameters', 'planner', 'mission',
-                                                       'polygon_coverage_ros_bridge/ros'},
+    'coverage_system/parameters': LOWER_STAGES,
+    'coverage_system/planner': LOWER_STAGES | {'parameters'},
+    'coverage_system/mission': LOWER_STAGES | {'parameters', 'planner'},
+    'coverage_system/tool': LOWER_STAGES | {'parameters', 'planner', 'mission'},
+    'coverage_system/ros': LOWER_STAGES | {'parameters', 'planner', 'mission'},
 }
 
 def qualified(stage, name):
     """The stage `name` (short, as in FLOORS, or qualified) as seen from `stage`."""
     if '/' in name:
         return name
-    for half in HALVES:
-        if f'{half}/{name}' in FLOORS:
-            return f'{half}/{name}'
+    for folder in FOLDERS:
+        if f'{folder}/{name}' in FLOORS:
+            return f'{folder}/{name}'
     raise KeyError(f'{stage}: unknown stage {name} in FLOORS')
 
 
 def stages():
     found = []
-    for half in HALVES:
-        for name in sorted(os.listdir(os.path.join(ROOT, half))):
-            if os.path.isdir(os.path.join(ROOT, half, name)):
-                found.append(f'{half}/{name}')
+    for folder in FOLDERS:
+        for name in sorted(os.listdir(os.path.join(ROOT, folder))):
+            if os.path.isdir(os.path.join(ROOT, folder, name)):
+                found.append(f'{folder}/{name}')
     return found
 
 
@@ -95,8 +97,8 @@ def allowed(stage):
 
 
 def short(stage):
-    half, name = stage.split('/')
-    return ('poly/' if half == HALVES[0] else 'traj/') + name
+    folder, name = stage.split('/')
+    return {HALVES[0]: 'poly/', HALVES[1]: 'traj/', COMPOSITIONS: 'sys/'}[folder] + name
 
 
 def print_graph(graph):
@@ -119,7 +121,7 @@ ROS_HEADER = re.compile(r'^\s*#\s*include\s+<(ros/|rviz/|pluginlib/|tf2|std_msgs
                         r'Q[A-Za-z]|Ogre)')
 CGAL_HEADER = re.compile(r'^\s*#\s*include\s+<CGAL/')
 PROJECT_HEADER = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
-NODE_STAGES = ('polygon_coverage_ros_bridge/ros', 'trajectory_generation_tools/ros')
+NODE_STAGES = ('coverage_system/ros',)
 
 
 def lines_of(path):
@@ -149,7 +151,7 @@ def rule_problems():
                for match in map(PROJECT_HEADER.match, lines_of(path)) if match]
     while pending:
         header = pending.pop()
-        if header in seen or not header.startswith(HALVES) or \
+        if header in seen or not header.startswith(FOLDERS) or \
                 not os.path.exists(os.path.join(ROOT, header)):
             continue
         seen.add(header)
@@ -200,6 +202,10 @@ def library_problems(graph):
 
 def check(graph):
     problems = rule_problems()
+    for stage in FLOORS:
+        if not stage.startswith(COMPOSITIONS) and \
+                any(target.startswith(COMPOSITIONS) for target in allowed(stage)):
+            problems.append(f'{stage}: a stage of a half whose floor names a composition')
     for stage in graph:
         if stage not in FLOORS:
             problems.append(f'{stage}: a stage folder without a floor in scripts/stage_graph.py')

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <random>
 
-#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+#include "coverage_system/planner/coverage_planner.h"
 
 int main(int argc, char** argv) {
   using kinematic_coverage::core::Point2;

@@ -19,12 +19,12 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/mission/trajectory_pipeline.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"

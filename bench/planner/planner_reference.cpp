@@ -32,8 +32,8 @@
 #include <string>
 #include <vector>
 
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
+#include "coverage_system/mission/mission_file_reader.h"
+#include "coverage_system/mission/mission_planner.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/hard_map_yaml.h"
 #include "test/support/lake_map_generator.h"

@@ -18,11 +18,11 @@
 #include <vector>
 
 #include "bench/support/median.h"
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/hard_map_generator.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/mission/trajectory_pipeline.h"
+#include "coverage_system/planner/replanner.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
-#include "polygon_coverage_ros_bridge/planner/replanner.h"
 #include "test/replanning/drift_scenario.h"
 
 namespace {

@@ -20,12 +20,12 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/mission/mission_file_reader.h"
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/mission/trajectory_coverage.h"
+#include "coverage_system/mission/trajectory_pipeline.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "test/support/random_missions.h"
 
 namespace kinematic_coverage::core {

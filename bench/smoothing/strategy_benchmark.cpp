@@ -58,13 +58,13 @@
 #include <vector>
 
 #include "bench/support/median.h"
+#include "coverage_system/mission/mission_file_reader.h"
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/mission/trajectory_coverage.h"
+#include "coverage_system/tool/plan_output_writer.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/tool/plan_output_writer.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/lake_map_generator.h"
 

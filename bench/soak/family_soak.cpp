@@ -53,13 +53,13 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/mission/trajectory_coverage.h"
+#include "coverage_system/mission/trajectory_pipeline.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
 #include "test/coverage/exact_coverage_oracle.h"
 #include "test/support/hard_map_generator.h"
 #include "trajectory_generation_tools/smoothing/boundary_edge_index.h"

@@ -25,13 +25,13 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/mission/trajectory_pipeline.h"
+#include "coverage_system/parameters/stage_options.h"
+#include "coverage_system/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_pipeline.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
-#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "test/support/random_missions.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "trajectory_generation_tools/smoothing/global_path_smoother.h"
 #include "trajectory_generation_tools/smoothing/path_smoother.h"
 #include "trajectory_generation_tools/trajectory/trajectory_sampler.h"
@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   const kinematic_coverage::core::TrajectorySampler sampler(options.segment_sampling_distance,
                                                             options.arc_sampling_distance,
                                                             options.rotation_sampling_angle);
-  const kinematic_coverage::core::TrajectoryTiming timing(options.vehicle);
+  const kinematic_coverage::core::TrajectoryTiming timing(options.vehicle());
 
   std::vector<double> smooth_ms, sample_ms, time_ms, total_ms, global_ms, safe_ms;
   kinematic_coverage::core::PlannerParameters global_parameters = parameters;

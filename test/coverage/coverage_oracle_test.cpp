@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/mission/trajectory_coverage.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/coverage/exact_coverage_oracle.h"
 #include "test/support/random_polygons.h"
 #include "test/support/test_shapes.h"

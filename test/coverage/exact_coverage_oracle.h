@@ -10,8 +10,8 @@
 #include <memory>
 #include <vector>
 
+#include "coverage_system/parameters/planner_parameters.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
-#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
 
 namespace kinematic_coverage::core {
 namespace testing {

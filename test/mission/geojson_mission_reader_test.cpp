@@ -1,12 +1,12 @@
-#include "polygon_coverage_ros_bridge/mission/geojson_mission_reader.h"
+#include "coverage_system/mission/geojson_mission_reader.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "coverage_system/mission/local_east_north_frame.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
 
 namespace kinematic_coverage::core {
 namespace {

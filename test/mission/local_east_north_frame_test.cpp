@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
+#include "coverage_system/mission/local_east_north_frame.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
+#include "coverage_system/mission/mission_file_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <string>
 #include <variant>
 
+#include "coverage_system/parameters/parameter_schema.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 

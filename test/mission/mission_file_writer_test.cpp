@@ -1,11 +1,11 @@
-#include "polygon_coverage_ros_bridge/mission/mission_file_writer.h"
+#include "coverage_system/mission/mission_file_writer.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "coverage_system/mission/mission_file_reader.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
 
 namespace kinematic_coverage::core {
 namespace {

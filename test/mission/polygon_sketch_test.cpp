@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/polygon_sketch.h"
+#include "coverage_system/mission/polygon_sketch.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/mission/wall_clearance_warning.h"
+#include "coverage_system/mission/wall_clearance_warning.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
+#include "coverage_system/parameters/parameter_schema.h"
 
 #include <gtest/gtest.h>
 

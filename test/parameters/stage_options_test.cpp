@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "coverage_system/parameters/stage_options.h"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/parameters/parameter_choices.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_choices.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -49,6 +49,10 @@ TEST(StageOptions, TheDefaultsMapToTheDocumentedStageOptions) {
   EXPECT_EQ(trajectory.rotation_sampling_angle, p.rotation_sampling_angle);
   EXPECT_EQ(trajectory.turn_curve, TurnCurve::kArc);
   EXPECT_EQ(trajectory.curvature_rate_max, p.curvature_rate_max);
+  // One robot for every strategy and for the timing.
+  EXPECT_EQ(&trajectory.vehicle(), &trajectory.global.vehicle);
+  EXPECT_EQ(trajectory.vehicle().turning_radius, p.turning_radius);
+  EXPECT_EQ(trajectory.vehicle().yaw_rate_max, p.yaw_rate_max);
   // Coverage-safe: the safe sensor, bulb turns, and the radius of an arc at v_max.
   EXPECT_TRUE(trajectory.global.safe_sensor.has_value());
   EXPECT_FALSE(trajectory.global.preserved_sensor.has_value());

@@ -1,15 +1,15 @@
-#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
+#include "coverage_system/planner/coverage_planner.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
+#include "coverage_system/mission/trajectory_coverage.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "test/planner/plan_properties.h"
 #include "test/support/hard_map_generator.h"

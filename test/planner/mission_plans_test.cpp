@@ -2,12 +2,12 @@
 
 #include <string>
 
+#include "coverage_system/mission/mission_file_reader.h"
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/decomposition/best_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
 #include "test/planner/plan_properties.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "test/support/sampled_wall_distance.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "coverage_system/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/planner/coverage_planner.h"
 
 namespace kinematic_coverage::core {
 

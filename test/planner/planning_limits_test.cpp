@@ -1,12 +1,12 @@
-#include "polygon_coverage_ros_bridge/planner/planning_limits.h"
+#include "coverage_system/planner/planning_limits.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
 namespace {

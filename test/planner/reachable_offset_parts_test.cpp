@@ -1,12 +1,12 @@
-#include "polygon_coverage_ros_bridge/planner/reachable_offset_parts.h"
+#include "coverage_system/planner/reachable_offset_parts.h"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/test_shapes.h"
 
 namespace kinematic_coverage::core {

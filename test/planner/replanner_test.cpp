@@ -1,12 +1,12 @@
-#include "polygon_coverage_ros_bridge/planner/replanner.h"
+#include "coverage_system/planner/replanner.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "test/replanning/drift_scenario.h"
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/sampled_wall_distance.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"

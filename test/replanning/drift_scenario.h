@@ -3,10 +3,10 @@
 #include <string>
 #include <vector>
 
+#include "coverage_system/mission/mission_file_reader.h"
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "trajectory_generation_tools/coverage/coverage_evaluator.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 

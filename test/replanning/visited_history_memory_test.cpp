@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "trajectory_generation_tools/replanning/visited_history.h"
 
 namespace kinematic_coverage::core {

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "coverage_system/parameters/stage_options.h"
+#include "coverage_system/planner/replanner.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
-#include "polygon_coverage_ros_bridge/planner/replanner.h"
 #include "test/replanning/drift_scenario.h"
 #include "trajectory_generation_tools/replanning/remaining_area.h"
 

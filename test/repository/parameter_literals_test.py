@@ -11,7 +11,8 @@ import tempfile
 import unittest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-FOLDERS = ('polygon_coverage_ros_bridge', 'trajectory_generation_tools', 'rviz_plugins')
+FOLDERS = ('polygon_coverage_ros_bridge', 'trajectory_generation_tools', 'coverage_system',
+           'rviz_plugins')
 ALLOWLIST = os.path.join(ROOT, 'test', 'repository', 'parameter_literals_allowlist.txt')
 TOKEN = re.compile(r'//[^\n]*|/\*.*?\*/|\'(?:\\.|[^\\\'])*\'|"((?:\\.|[^\\"])*)"', re.S)
 

@@ -2,7 +2,7 @@
 """scripts/stage_graph.py --check: the repository passes, and each kind of violation in a
 copy of it fails (an include beyond a stage's floor, a stage library whose CMake DEPENDS
 miss or exceed the stages it includes, a ROS header in the core, CGAL reaching node code
-or the rviz plugins)."""
+or the rviz plugins, a stage of a half including a composition of coverage_system/)."""
 import os
 import shutil
 import subprocess
@@ -11,7 +11,8 @@ import tempfile
 import unittest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-FOLDERS = ('polygon_coverage_ros_bridge', 'trajectory_generation_tools', 'rviz_plugins')
+FOLDERS = ('polygon_coverage_ros_bridge', 'trajectory_generation_tools', 'coverage_system',
+           'rviz_plugins')
 
 
 def run_check(root):
@@ -52,6 +53,19 @@ class StageGraphTest(unittest.TestCase):
         self.assert_fails_with('geometry includes polygon_coverage_ros_bridge/gtsp, '
                                'which is not below it')
 
+    def test_a_half_including_a_composition_fails(self):
+        self.append('trajectory_generation_tools/smoothing/corner.h',
+                    '#include "coverage_system/parameters/planner_parameters.h"')
+        self.assert_fails_with('trajectory_generation_tools/smoothing includes '
+                               'coverage_system/parameters, which is not below it')
+
+    def test_a_half_whose_floor_names_a_composition_fails(self):
+        self.edit('scripts/stage_graph.py',
+                  "'trajectory_generation_tools/path': {'geometry', 'base'}",
+                  "'trajectory_generation_tools/path': {'geometry', 'base', 'planner'}")
+        self.assert_fails_with('trajectory_generation_tools/path: a stage of a half whose '
+                               'floor names a composition')
+
     def edit(self, path, old, new):
         path = os.path.join(self.directory, path)
         with open(path, encoding='utf-8') as source:
@@ -81,7 +95,7 @@ class StageGraphTest(unittest.TestCase):
             'polygon_with_holes.h includes CGAL and node or rviz code includes it')
 
     def test_cgal_reaching_the_rviz_plugins_fails(self):
-        self.append('polygon_coverage_ros_bridge/mission/polygon_sketch.h',
+        self.append('coverage_system/mission/polygon_sketch.h',
                     '#include <CGAL/Polygon_2.h>')
         self.assert_fails_with('polygon_sketch.h includes CGAL and node or rviz code includes it')
 

@@ -4,10 +4,10 @@
 
 #include <random>
 
+#include "coverage_system/parameters/planner_parameters.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/parameters/planner_parameters.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/route/route_test_maps.h"
 
 namespace kinematic_coverage::core {

@@ -6,9 +6,9 @@
 #include <limits>
 #include <random>
 
+#include "coverage_system/parameters/parameter_schema.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
 namespace {

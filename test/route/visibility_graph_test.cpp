@@ -9,10 +9,10 @@
 #include <memory>
 #include <random>
 
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "test/route/route_test_maps.h"
 #include "test/support/random_polygons.h"
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "polygon_coverage_ros_bridge/mission/mission_file_reader.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/mission/trajectory_coverage.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
+#include "coverage_system/mission/mission_file_reader.h"
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/mission/trajectory_coverage.h"
+#include "coverage_system/parameters/stage_options.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
 

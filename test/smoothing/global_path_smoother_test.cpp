@@ -6,8 +6,8 @@
 #include <limits>
 #include <random>
 
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/sweeps/seen_area.h"
 #include "test/smoothing/smoothing_oracle.h"
 #include "trajectory_generation_tools/smoothing/corner_coverage_check.h"

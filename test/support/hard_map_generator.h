@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "polygon_coverage_ros_bridge/mission/mission.h"
+#include "coverage_system/mission/mission.h"
 
 namespace kinematic_coverage::core {
 namespace testing {

@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "polygon_coverage_ros_bridge/mission/mission.h"
+#include "coverage_system/mission/mission.h"
 
 namespace kinematic_coverage::core {
 namespace testing {

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/parameters/parameter_schema.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/mission_planner.h"
-#include "polygon_coverage_ros_bridge/parameters/parameter_schema.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_validator.h"
 #include "test/support/random_polygons.h"
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <random>
 
-#include "polygon_coverage_ros_bridge/mission/mission.h"
+#include "coverage_system/mission/mission.h"
 #include "test/support/random_polygons.h"
 
 namespace kinematic_coverage::core {

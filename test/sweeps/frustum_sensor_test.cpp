@@ -4,8 +4,8 @@
 
 #include <cmath>
 
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 
 namespace kinematic_coverage::core {
 namespace {

@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "coverage_system/mission/local_east_north_frame.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/mission/local_east_north_frame.h"
 
 namespace {
 

@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "coverage_system/mission/pose_csv_reader.h"
+#include "coverage_system/tool/json_object.h"
+#include "coverage_system/tool/waypoint_csv_writer.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
-#include "polygon_coverage_ros_bridge/mission/pose_csv_reader.h"
-#include "polygon_coverage_ros_bridge/tool/json_object.h"
-#include "polygon_coverage_ros_bridge/tool/waypoint_csv_writer.h"
 
 namespace kinematic_coverage::core {
 namespace {

@@ -1,4 +1,4 @@
-#include "polygon_coverage_ros_bridge/tool/trajectory_csv_writer.h"
+#include "coverage_system/tool/trajectory_csv_writer.h"
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 #include <random>
 #include <string>
 
+#include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
-#include "polygon_coverage_ros_bridge/parameters/stage_options.h"
 #include "trajectory_generation_tools/trajectory/primitive_distance.h"
 #include "trajectory_generation_tools/trajectory/primitive_path_metrics.h"
 #include "trajectory_generation_tools/trajectory/primitive_path_validation.h"

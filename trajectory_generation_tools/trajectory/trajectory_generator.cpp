@@ -96,7 +96,7 @@ SmoothedPath TrajectoryGenerator::smoothedPath(const std::vector<Pose2>& waypoin
     return GlobalPathSmoother(free_area, options_.global).smooth(waypoints);
   }
   SmoothedPath local =
-      PathSmoother(free_area, options_.vehicle.turning_radius, options_.global.clearance)
+      PathSmoother(free_area, options_.vehicle().turning_radius, options_.global.clearance)
           .smooth(waypoints);
   if (options_.strategy == SmoothingStrategy::kLocal) return local;
   SmoothedPath global = GlobalPathSmoother(free_area, options_.global).smooth(waypoints);
@@ -104,7 +104,7 @@ SmoothedPath TrajectoryGenerator::smoothedPath(const std::vector<Pose2>& waypoin
   // The global programme's cost is exact except where a leg piece is too short for the
   // speed change between its neighbours; the exact times settle those few cases, so that
   // the global strategy is never slower than Algorithm 1.
-  const TrajectoryTiming timing(options_.vehicle);
+  const TrajectoryTiming timing(options_.vehicle());
   return timing.traversalTime(global.primitives) <= timing.traversalTime(local.primitives) ? global
                                                                                            : local;
 }
@@ -158,7 +158,7 @@ GeneratedTrajectory TrajectoryGenerator::generate(const std::vector<Pose2>& wayp
                     options_.rotation_sampling_angle)
       .sample(trajectory.path, trajectory.poses);
   trajectory.traversal_time_s =
-      TrajectoryTiming(options_.vehicle).assignTimes(trajectory.path, trajectory.poses);
+      TrajectoryTiming(options_.vehicle()).assignTimes(trajectory.path, trajectory.poses);
   trajectory.trajectory_length_m = primitivePathLength(trajectory.path);
   trajectory.max_curvature = primitivePathMaxCurvature(trajectory.path);
 

@@ -16,11 +16,11 @@ enum class TurnCurve {
 /// waypoint path is smoothed, how densely the trajectory is sampled, and the robot whose
 /// velocity model dates it.
 struct TrajectoryOptions {
-  VehicleLimits vehicle;  ///< the velocity model; turning_radius is Algorithm 1's radius
   bool smoothing = true;  ///< false: segments and in-place rotations
   SmoothingStrategy strategy = SmoothingStrategy::kCoverageSafe;
-  /// The global and coverage-safe strategies' options (preserved_sensor set: the global
-  /// strategy smooths only where nothing goes unseen, `coverage_preserving`).
+  /// The smoothing options (preserved_sensor set: the global strategy smooths only where
+  /// nothing goes unseen, `coverage_preserving`) and the one robot of every strategy and
+  /// of the timing, `global.vehicle`.
   GlobalSmoothingOptions global;
   double segment_sampling_distance = 0.5;  ///< m
   double arc_sampling_distance = 0.1;      ///< m
@@ -31,6 +31,9 @@ struct TrajectoryOptions {
   /// that join a start or goal nearer than this to the offset free area are left out of
   /// min_obstacle_clearance_m (docs/REFERENCE.md, Collisions and clearance).
   double wall_distance = 0.0;
+
+  /// The velocity model; its turning_radius is Algorithm 1's radius.
+  const VehicleLimits& vehicle() const { return global.vehicle; }
 };
 
 }  // namespace kinematic_coverage::core

@@ -1,0 +1,12 @@
+// The replanner node (docs/REFERENCE.md, Nodes and topics).
+
+#include <ros/ros.h>
+
+#include "coverage_system/ros/replanner_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "replanner");
+  kinematic_coverage::nodes::ReplannerNode node(ros::NodeHandle(), ros::NodeHandle("~"));
+  ros::spin();
+  return 0;
+}

@@ -1,0 +1,102 @@
+#include "coverage_system/tool/command_line.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+#include <system_error>
+
+#include "coverage_system/mission/mission_file_reader.h"
+#include "coverage_system/mission/read_mission.h"
+#include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
+#include "polygon_coverage_ros_bridge/base/number_format.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+
+namespace kinematic_coverage::core {
+
+CommandArguments parseCommandArguments(const std::string& command,
+                                       const std::vector<std::string>& args,
+                                       const std::vector<RequiredOption>& required) {
+  const std::string prefix = "coverage_tool " + command + ": ";
+  const auto is_required = [&](const std::string& arg) {
+    return std::any_of(required.begin(), required.end(),
+                       [&](const RequiredOption& option) { return option.name == arg; });
+  };
+  CommandArguments parsed;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw InvalidInputError(prefix + arg + " needs a value");
+      return args[++i];
+    };
+    if (arg == "--help" || arg == "-h") {
+      parsed.help = true;
+    } else if (arg == "--set") {
+      parsed.overrides.push_back(value());
+    } else if (arg == "--config") {
+      parsed.config_path = value();
+    } else if (is_required(arg)) {
+      parsed.values[arg] = value();
+    } else if (arg.size() > 1 && arg[0] == '-') {
+      throw InvalidInputError(prefix + "unknown option '" + arg + "' (see coverage_tool " +
+                              command + " --help)");
+    } else if (parsed.mission_path.empty()) {
+      parsed.mission_path = arg;
+    } else {
+      throw InvalidInputError(prefix + "one mission file expected, got '" + parsed.mission_path +
+                              "' and '" + arg + "'");
+    }
+  }
+  if (parsed.help) return parsed;
+  if (parsed.mission_path.empty()) {
+    throw InvalidInputError(prefix + "no mission file given (see coverage_tool " + command +
+                            " --help)");
+  }
+  for (const RequiredOption& option : required) {
+    const auto it = parsed.values.find(option.name);
+    if (it == parsed.values.end() || it->second.empty()) {
+      throw InvalidInputError(prefix + option.name + " " + option.value + " is required");
+    }
+  }
+  return parsed;
+}
+
+Mission loadMission(const CommandArguments& arguments, std::ostream& out) {
+  const auto start = std::chrono::steady_clock::now();
+  const PlannerParameters base = arguments.config_path.empty()
+                                     ? PlannerParameters{}
+                                     : MissionFileReader().readParameters(arguments.config_path);
+  Mission mission = readMission(arguments.mission_path, arguments.overrides, base);
+  out << "load: " << arguments.mission_path << ": hull of " << mission.polygon.hull.size()
+      << " vertices, " << mission.polygon.holes.size() << " holes, frame " << mission.frame_id;
+  if (mission.datum) {
+    out << " at datum (" << formatRoundTrip(mission.datum->latitude) << ", "
+        << formatRoundTrip(mission.datum->longitude) << ")";
+  }
+  out << " (" << formatSeconds(secondsSince(start)) << ")" << std::endl;
+  return mission;
+}
+
+std::optional<MissionCommandInput> startMissionCommand(const std::string& command,
+                                                       const std::vector<std::string>& args,
+                                                       const std::vector<RequiredOption>& required,
+                                                       const std::string& usage,
+                                                       std::ostream& out) {
+  CommandArguments arguments = parseCommandArguments(command, args, required);
+  if (arguments.help) {
+    out << usage;
+    return std::nullopt;
+  }
+  Mission mission = loadMission(arguments, out);
+  return MissionCommandInput{std::move(arguments), std::move(mission)};
+}
+
+void createOutputDirectory(const std::string& dir) {
+  std::error_code code;
+  std::filesystem::create_directories(dir, code);
+  if (code || !std::filesystem::is_directory(dir)) {
+    throw InvalidInputError("cannot create the output directory " + dir +
+                            (code ? ": " + code.message() : ""));
+  }
+}
+
+}  // namespace kinematic_coverage::core
