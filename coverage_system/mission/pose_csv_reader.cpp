@@ -62,6 +62,14 @@ PoseTable PoseCsvReader::read(const std::string& path) const {
   return parse(text.str(), path);
 }
 
+std::vector<Pose2> PoseCsvReader::readPoses(const std::string& path) const {
+  const PoseTable table = read(path);
+  std::vector<Pose2> poses;
+  poses.reserve(table.rows.size());
+  for (const PoseRecord& row : table.rows) poses.push_back(row.pose);
+  return poses;
+}
+
 PoseTable PoseCsvReader::parse(const std::string& text, const std::string& source_name) const {
   std::istringstream lines(text);
   std::string line;

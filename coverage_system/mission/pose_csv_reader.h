@@ -43,6 +43,10 @@ class PoseCsvReader {
   /// Reads the file at `path`.
   PoseTable read(const std::string& path) const;
 
+  /// The poses of the file at `path`, in file order (the trajectory of `evaluate` and
+  /// `simulate`, the visited history of `replan`).
+  std::vector<Pose2> readPoses(const std::string& path) const;
+
   /// Reads CSV text; `source_name` names it in messages.
   PoseTable parse(const std::string& text, const std::string& source_name) const;
 };

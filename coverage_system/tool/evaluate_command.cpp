@@ -45,15 +45,10 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const Mission& mission = input->mission;
 
   auto stage_start = std::chrono::steady_clock::now();
-  const PoseTable table = PoseCsvReader().read(trajectory_path);
-  std::vector<Pose2> poses;
-  poses.reserve(table.rows.size());
+  const std::vector<Pose2> poses = PoseCsvReader().readPoses(trajectory_path);
   double trajectory_length_m = 0.0;
-  for (const PoseRecord& row : table.rows) {
-    if (!poses.empty()) {
-      trajectory_length_m += (row.pose.position() - poses.back().position()).norm();
-    }
-    poses.push_back(row.pose);
+  for (std::size_t i = 1; i < poses.size(); ++i) {
+    trajectory_length_m += (poses[i].position() - poses[i - 1].position()).norm();
   }
   out << "read: " << trajectory_path << ": " << poses.size() << " poses, " << trajectory_length_m
       << " m (" << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;

@@ -62,10 +62,7 @@ void ReplanCommand::run(const std::vector<std::string>& args, std::ostream& out,
   const Mission& mission = input->mission;
   const PolygonWithHoles updated =
       MissionFileReader().readUpdatedPolygon(arguments.values.at("--updated"));
-  const PoseTable table = PoseCsvReader().read(arguments.values.at("--visited"));
-  std::vector<Pose2> visited;
-  visited.reserve(table.rows.size());
-  for (const PoseRecord& row : table.rows) visited.push_back(row.pose);
+  const std::vector<Pose2> visited = PoseCsvReader().readPoses(arguments.values.at("--visited"));
   out << "read: " << updated.holes.size() << " updated holes, " << visited.size()
       << " visited poses" << std::endl;
 

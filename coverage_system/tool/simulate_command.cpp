@@ -223,10 +223,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const Mission& mission = input->mission;
 
   auto stage_start = std::chrono::steady_clock::now();
-  const PoseTable table = PoseCsvReader().read(trajectory_path);
-  std::vector<Pose2> desired;
-  desired.reserve(table.rows.size());
-  for (const PoseRecord& row : table.rows) desired.push_back(row.pose);
+  const std::vector<Pose2> desired = PoseCsvReader().readPoses(trajectory_path);
   out << "read: " << trajectory_path << ": " << desired.size() << " poses ("
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 

@@ -6,6 +6,7 @@ kc_add_gtest(test_mission
   test/mission/coverage_finding_test.cpp
   test/mission/coverage_safe_bars_test.cpp
   test/mission/polygon_sketch_test.cpp
+  test/mission/pose_csv_reader_test.cpp
   test/mission/wall_clearance_warning_test.cpp
   test/support/hard_map_generator.cpp
   LIBRARIES kc_mission kc_polygon_sketch)
