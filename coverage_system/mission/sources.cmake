@@ -1,5 +1,6 @@
 kc_add_stage_library(kc_mission
   SOURCES
+    coverage_system/mission/autopilot_mission.cpp
     coverage_system/mission/geojson_mission_reader.cpp
     coverage_system/mission/local_east_north_frame.cpp
     coverage_system/mission/mission_file_reader.cpp
@@ -11,7 +12,8 @@ kc_add_stage_library(kc_mission
     coverage_system/mission/trajectory_pipeline.cpp
     coverage_system/mission/wall_clearance_warning.cpp
     coverage_system/mission/yaml_parameter_reader.cpp
-  DEPENDS kc_geometry kc_validation kc_sweeps kc_coverage kc_trajectory kc_parameters kc_planner
+  DEPENDS kc_geometry kc_validation kc_sweeps kc_path kc_coverage kc_trajectory kc_parameters
+    kc_planner
     yaml-cpp)
 # GeographicLib (the local east-north frame of GeoJSON missions) stays out of the headers.
 target_include_directories(kc_mission PRIVATE ${GeographicLib_INCLUDE_DIRS})

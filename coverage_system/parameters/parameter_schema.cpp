@@ -217,6 +217,17 @@ std::vector<ParameterDeclaration> trajectoryDeclarations() {
              S::kTrajectory, "Sampling distance of the trajectory along arcs.", kThesis),
       number("rotation_sampling_angle", &P::rotation_sampling_angle, "rad", 0.2, positive(),
              S::kTrajectory, "Sampling angle of the trajectory during in-place rotations."),
+      number("corner_cutting_radius", &P::corner_cutting_radius, "m", 2.0, nonNegative(),
+             S::kTrajectory,
+             "How far before a waypoint of the vehicle's mission files (mission.plan, "
+             "mission.waypoints) the autopilot turns for the next one; the acceptance radius "
+             "written, and what plan checks the cut corners' distance from the walls with.",
+             "ArduPilot's WPNAV_RADIUS default, 200 cm (libraries/AC_WPNav/AC_WPNav.cpp, "
+             "WPNAV_WP_RADIUS_CM), which ArduSub uses"),
+      number("mission_depth", &P::mission_depth, "m", 0.0, nonNegative(), S::kTrajectory,
+             "Depth below the surface of every waypoint of the vehicle's mission files, "
+             "written as ArduSub reads it: the altitude -mission_depth relative to the "
+             "surface (MAV_FRAME_GLOBAL_RELATIVE_ALT)."),
       choice("turn_curve", &P::turn_curve, "arc", namesOf(kTurnCurves), S::kSmoothing,
              "The curve of a smoothed turn between two straight legs: arc (the thesis's "
              "circular arc, whose curvature jumps where it meets a leg) or clothoid "

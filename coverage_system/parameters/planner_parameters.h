@@ -43,6 +43,8 @@ struct PlannerParameters {
   double segment_sampling_distance{};
   double arc_sampling_distance{};
   double rotation_sampling_angle{};
+  double corner_cutting_radius{};
+  double mission_depth{};
   std::string turn_curve{};
   double smoothing_clearance{};
   double curvature_rate_max{};

@@ -25,7 +25,10 @@ std::string PlanCommand::usage() {
          "                         [--set name=value ...]\n"
          "  Plans a coverage path over the mission's polygon and writes DIR/waypoints.csv\n"
          "  (x,y,yaw), DIR/trajectory.csv (t,x,y,yaw,kind), DIR/metrics.json (with the\n"
-         "  trajectory's coverage) and DIR/plot.png. --set overrides a parameter of\n"
+         "  trajectory's coverage) and DIR/plot.png; for a GeoJSON mission (MISSION.geojson)\n"
+         "  also DIR/waypoints.geojson, DIR/trajectory.geojson and the vehicle's mission\n"
+         "  files DIR/mission.plan (QGroundControl) and DIR/mission.waypoints (QGC WPL 110).\n"
+         "  --set overrides a parameter of\n"
          "  config/default.yaml (the value is read as YAML), after the mission file.\n"
          "  --config FILE reads the parameters of FILE (as config/default.yaml, e.g.\n"
          "  config/thesis.yaml) over the built-in defaults, before the mission file.\n";

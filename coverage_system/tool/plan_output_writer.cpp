@@ -1,15 +1,18 @@
 #include "coverage_system/tool/plan_output_writer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <optional>
 #include <sstream>
 
+#include "coverage_system/mission/autopilot_mission.h"
 #include "coverage_system/mission/local_east_north_frame.h"
 #include "coverage_system/mission/trajectory_coverage.h"
 #include "coverage_system/mission/trajectory_pipeline.h"
 #include "coverage_system/mission/wall_clearance_warning.h"
 #include "coverage_system/parameters/stage_options.h"
+#include "coverage_system/tool/autopilot_mission_writer.h"
 #include "coverage_system/tool/command_line.h"
 #include "coverage_system/tool/coverage_metrics.h"
 #include "coverage_system/tool/geojson_writer.h"
@@ -110,6 +113,53 @@ std::vector<std::string> writeGeoJson(const PlanOutputRequest& request,
   return {waypoints_path, trajectory_path};
 }
 
+/// DIR/mission.plan and DIR/mission.waypoints of a geo-referenced plan (the vehicle's
+/// mission files), with their progress line; warnings go to `warnings`, the written paths to
+/// `files`.
+void writeAutopilotMission(const PlanOutputRequest& request, const GeneratedTrajectory& trajectory,
+                           const std::filesystem::path& dir, std::ostream& out,
+                           std::vector<std::string>* files, std::vector<std::string>* warnings) {
+  const PlannerParameters& p = *request.parameters;
+  const AutopilotMission mission =
+      AutopilotMissionBuilder(vehicleLimitsOf(p), p.corner_cutting_radius)
+          .build(trajectory.path, *request.free_area, p.wall_distance);
+  const AutopilotMissionWriter writer(LocalEastNorthFrame(*request.datum),
+                                      {p.mission_depth, p.corner_cutting_radius});
+  const std::size_t items = writer.itemCount(mission);
+  const std::string plan_path = (dir / "mission.plan").string();
+  const std::string waypoints_path = (dir / "mission.waypoints").string();
+  writeTextFile(plan_path, writer.planJson(mission));
+  writeTextFile(waypoints_path, writer.waypointsText(mission));
+  files->push_back(plan_path);
+  files->push_back(waypoints_path);
+  const std::size_t held = static_cast<std::size_t>(
+      std::count_if(mission.waypoints.begin(), mission.waypoints.end(),
+                    [](const AutopilotWaypoint& waypoint) { return waypoint.hold; }));
+  out << "mission: " << mission.waypoints.size() << " waypoints (" << held << " held), " << items
+      << " items, for an autopilot that cuts each waypoint by "
+      << formatNumber(p.corner_cutting_radius) << " m (ArduSub: set WPNAV_RADIUS to "
+      << formatNumber(100.0 * p.corner_cutting_radius) << " cm); the cut path comes "
+      << formatNumber(mission.corner_cut_clearance_m) << " m from the walls" << std::endl;
+  const double kept = std::min(p.wall_distance, trajectory.min_obstacle_clearance_m);
+  if (mission.corner_cut_clearance_m < kept - kClearanceTolerance) {
+    warnings->push_back("the mission files' waypoint path comes " +
+                        formatNumber(mission.corner_cut_clearance_m) + " m from the walls near " +
+                        formatPoint(mission.closest_cut) + ", nearer than the trajectory's " +
+                        formatNumber(kept) + " m");
+  }
+  if (items > AutopilotMissionWriter::kArduPilotItemLimit) {
+    warnings->push_back("the mission files hold " + std::to_string(items) +
+                        " items, more than the about " +
+                        std::to_string(AutopilotMissionWriter::kArduPilotItemLimit) +
+                        " an ArduPilot board keeps without an SD card for missions");
+  }
+  if (p.mission_depth == 0.0) {
+    warnings->push_back(
+        "the mission files send the vehicle to depth 0, the surface: set mission_depth to the "
+        "survey's depth");
+  }
+}
+
 /// plot.png's content: the areas, the heatmap (with the visited poses when replanning),
 /// the paths and the title with the figures shown.
 CoveragePlotData planPlot(const PlanOutputRequest& request, const std::vector<Pose2>& poses,
@@ -201,6 +251,7 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
     for (std::string& path : writeGeoJson(request, trajectory, dir)) {
       outputs.files.push_back(std::move(path));
     }
+    writeAutopilotMission(request, trajectory, dir, out, &outputs.files, &outputs.warnings);
   }
   outputs.coverage = coverage.report;
   outputs.turns = trajectory.statistics;

@@ -2,6 +2,7 @@
 # point itself (coverage_tool_main.cpp) is the executable of the root CMakeLists.txt.
 kc_add_stage_library(kc_tool
   SOURCES
+    coverage_system/tool/autopilot_mission_writer.cpp
     coverage_system/tool/command_line.cpp
     coverage_system/tool/coverage_metrics.cpp
     coverage_system/tool/evaluate_command.cpp

@@ -3,6 +3,7 @@ kc_add_gtest(test_mission
   test/mission/mission_file_writer_test.cpp
   test/mission/geojson_mission_reader_test.cpp
   test/mission/local_east_north_frame_test.cpp
+  test/mission/autopilot_mission_test.cpp
   test/mission/coverage_finding_test.cpp
   test/mission/coverage_safe_bars_test.cpp
   test/mission/polygon_sketch_test.cpp

@@ -913,16 +913,25 @@ TEST(CoverageTool, PlansTheShippedLakeChartEndToEnd) {
   // config/missions/kleinhesseloher_see.geojson: a lake outline in WGS84 with two islands.
   const std::string dir = scratchDir() + "/lake_chart";
   std::filesystem::remove_all(dir);
-  const ToolRun run = runTool("plan '" + std::string(KC_SOURCE_DIR) +
-                              "/config/missions/kleinhesseloher_see.geojson' --out '" + dir + "'");
+  const std::string chart =
+      std::string(KC_SOURCE_DIR) + "/config/missions/kleinhesseloher_see.geojson";
+  const ToolRun run = runTool("plan '" + chart + "' --out '" + dir + "' --set mission_depth=1.5");
   ASSERT_EQ(run.exit_status, 0) << run.out;
   EXPECT_TRUE(run.err_lines.empty()) << run.err_lines.front();
   const std::string json = readText(dir + "/metrics.json");
   EXPECT_GE(metric(json, "reachable_coverage_percent"), 99.9) << json;
   EXPECT_GT(metric(json, "cells"), 1.0);
-  for (const char* file : {"waypoints.geojson", "trajectory.geojson", "plot.png"}) {
+  for (const char* file : {"waypoints.geojson", "trajectory.geojson", "plot.png", "mission.plan",
+                           "mission.waypoints"}) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + file)) << file;
   }
+  // At the default depth, 0, the vehicle would stay at the surface: plan says so.
+  const ToolRun surface = runTool("plan '" + chart + "' --out '" + dir + "'");
+  ASSERT_EQ(surface.exit_status, 0) << surface.out;
+  ASSERT_EQ(surface.err_lines.size(), 1u);
+  EXPECT_NE(surface.err_lines.front().find("depth 0, the surface: set mission_depth"),
+            std::string::npos)
+      << surface.err_lines.front();
 }
 
 TEST(CoverageTool, RejectsBadGeoJsonWithOneLine) {
