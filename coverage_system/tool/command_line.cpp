@@ -1,6 +1,8 @@
 #include "coverage_system/tool/command_line.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <system_error>
@@ -15,11 +17,11 @@ namespace kinematic_coverage::core {
 
 CommandArguments parseCommandArguments(const std::string& command,
                                        const std::vector<std::string>& args,
-                                       const std::vector<RequiredOption>& required) {
+                                       const std::vector<CommandOption>& options) {
   const std::string prefix = "coverage_tool " + command + ": ";
-  const auto is_required = [&](const std::string& arg) {
-    return std::any_of(required.begin(), required.end(),
-                       [&](const RequiredOption& option) { return option.name == arg; });
+  const auto is_option = [&](const std::string& arg) {
+    return std::any_of(options.begin(), options.end(),
+                       [&](const CommandOption& option) { return option.name == arg; });
   };
   CommandArguments parsed;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -34,7 +36,7 @@ CommandArguments parseCommandArguments(const std::string& command,
       parsed.overrides.push_back(value());
     } else if (arg == "--config") {
       parsed.config_path = value();
-    } else if (is_required(arg)) {
+    } else if (is_option(arg)) {
       parsed.values[arg] = value();
     } else if (arg.size() > 1 && arg[0] == '-') {
       throw InvalidInputError(prefix + "unknown option '" + arg + "' (see coverage_tool " +
@@ -51,8 +53,9 @@ CommandArguments parseCommandArguments(const std::string& command,
     throw InvalidInputError(prefix + "no mission file given (see coverage_tool " + command +
                             " --help)");
   }
-  for (const RequiredOption& option : required) {
+  for (const CommandOption& option : options) {
     const auto it = parsed.values.find(option.name);
+    if (!option.required && it == parsed.values.end()) continue;
     if (it == parsed.values.end() || it->second.empty()) {
       throw InvalidInputError(prefix + option.name + " " + option.value + " is required");
     }
@@ -78,16 +81,35 @@ Mission loadMission(const CommandArguments& arguments, std::ostream& out) {
 
 std::optional<MissionCommandInput> startMissionCommand(const std::string& command,
                                                        const std::vector<std::string>& args,
-                                                       const std::vector<RequiredOption>& required,
+                                                       const std::vector<CommandOption>& options,
                                                        const std::string& usage,
                                                        std::ostream& out) {
-  CommandArguments arguments = parseCommandArguments(command, args, required);
+  CommandArguments arguments = parseCommandArguments(command, args, options);
   if (arguments.help) {
     out << usage;
     return std::nullopt;
   }
   Mission mission = loadMission(arguments, out);
   return MissionCommandInput{std::move(arguments), std::move(mission)};
+}
+
+GeoPoint parseDatum(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  GeoPoint datum;
+  const auto number = [&](std::size_t begin, std::size_t end, double& value) {
+    const auto [stop, error] = std::from_chars(text.data() + begin, text.data() + end, value);
+    return error == std::errc() && stop == text.data() + end && begin < end;
+  };
+  if (comma == std::string::npos || !number(0, comma, datum.latitude) ||
+      !number(comma + 1, text.size(), datum.longitude)) {
+    throw InvalidInputError("--datum " + text + ": expected LAT,LON in degrees, e.g. 47.37,8.54");
+  }
+  if (!(std::abs(datum.latitude) <= 90.0) || !(std::abs(datum.longitude) <= 180.0)) {
+    throw InvalidInputError("--datum " + text +
+                            ": the latitude must lie in [-90, 90] and the longitude in "
+                            "[-180, 180] degrees (LAT,LON)");
+  }
+  return datum;
 }
 
 void createOutputDirectory(const std::string& dir) {

@@ -26,19 +26,20 @@ struct CommandArguments {
   bool help = false;
 };
 
-/// An option that takes a value and that a command requires, e.g. `--out DIR`.
-struct RequiredOption {
-  std::string name;   ///< "--out"
-  std::string value;  ///< how the usage text names its value: "DIR"
+/// An option that takes a value, e.g. `--out DIR`.
+struct CommandOption {
+  std::string name;      ///< "--out"
+  std::string value;     ///< how the usage text names its value: "DIR"
+  bool required = true;  ///< false: it may be left out
 };
 
 /// Parses the arguments after the command's name `command` ("plan", "evaluate"): the
-/// `required` options, `--config`, `--set` and `--help` in any order around one mission file.
+/// command's `options`, `--config`, `--set` and `--help` in any order around one mission file.
 /// Throws InvalidInputError naming the problem: an option without its value, an unknown option, no
 /// mission file or two, or, unless `--help` is given, a required option missing or empty.
 CommandArguments parseCommandArguments(const std::string& command,
                                        const std::vector<std::string>& args,
-                                       const std::vector<RequiredOption>& required);
+                                       const std::vector<CommandOption>& options);
 
 /// Reads the mission file of `arguments` over its parameter file, with its overrides
 /// (MissionFileReader), and prints the "load: ..." progress line to `out`. Throws
@@ -56,8 +57,12 @@ struct MissionCommandInput {
 /// `usage` to `out` and returns none. Throws InvalidInputError as those.
 std::optional<MissionCommandInput> startMissionCommand(const std::string& command,
                                                        const std::vector<std::string>& args,
-                                                       const std::vector<RequiredOption>& required,
+                                                       const std::vector<CommandOption>& options,
                                                        const std::string& usage, std::ostream& out);
+
+/// "LAT,LON" in degrees (the value of `--datum`) as a datum; InvalidInputError naming the
+/// text otherwise, or a latitude or longitude out of range.
+GeoPoint parseDatum(const std::string& text);
 
 /// Creates the output directory `dir` and its parents; InvalidInputError when it cannot.
 void createOutputDirectory(const std::string& dir);

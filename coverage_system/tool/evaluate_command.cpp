@@ -97,7 +97,7 @@ void EvaluateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   figures.precision(4);
   figures << "coverage " << coverage.report.coverage_percent << " %  |  loss "
           << coverage.report.coverage_loss_percent << " %  |  " << poses.size() << " poses  |  "
-          << trajectory_length_m << " m";
+          << formatLength(trajectory_length_m);
   plot.title_lines = {"Coverage of " + std::filesystem::path(trajectory_path).filename().string(),
                       figures.str()};
   CoveragePlot().writePng(plot, plot_path);

@@ -1,6 +1,5 @@
 #include "coverage_system/tool/export_command.h"
 
-#include <charconv>
 #include <filesystem>
 #include <optional>
 
@@ -11,26 +10,6 @@
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
 namespace kinematic_coverage::core {
-namespace {
-
-/// "LAT,LON" as a datum; InvalidInputError naming the text otherwise.
-GeoPoint parseDatum(const std::string& text) {
-  const std::size_t comma = text.find(',');
-  GeoPoint datum;
-  const auto number = [&](std::size_t begin, std::size_t end, double& value) {
-    const auto [stop, error] = std::from_chars(text.data() + begin, text.data() + end, value);
-    return error == std::errc() && stop == text.data() + end && begin < end;
-  };
-  if (comma == std::string::npos || !number(0, comma, datum.latitude) ||
-      !number(comma + 1, text.size(), datum.longitude)) {
-    throw InvalidInputError("--datum " + text + ": expected LAT,LON in degrees, e.g. 47.37,8.54");
-  }
-  LocalEastNorthFrame::checkRange(datum, "--datum");
-  return datum;
-}
-
-}  // namespace
-
 std::string ExportCommand::usage() {
   return "usage: coverage_tool export MISSION.yaml --datum LAT,LON --out FILE.geojson\n"
          "                           [--config FILE] [--set name=value ...]\n"

@@ -180,8 +180,9 @@ CoveragePlotData planPlot(const PlanOutputRequest& request, const std::vector<Po
   const CoverageReport& shown = combined ? combined->report : coverage.report;
   figures << (combined ? "coverage with visited " : "coverage ") << shown.coverage_percent
           << " %  |  loss " << shown.coverage_loss_percent << " %  |  " << turns.turns_smoothed
-          << " of " << turns.turns_total << " turns smoothed  |  " << trajectory.trajectory_length_m
-          << " m  |  " << trajectory.traversal_time_s << " s";
+          << " of " << turns.turns_total << " turns smoothed  |  "
+          << formatLength(trajectory.trajectory_length_m) << "  |  "
+          << formatDuration(trajectory.traversal_time_s);
   plot.title_lines = {request.title, figures.str()};
   if (!keepsClearance(trajectory.min_obstacle_clearance_m, request.parameters->wall_distance)) {
     plot.closest_approach = trajectory.closest_approach;

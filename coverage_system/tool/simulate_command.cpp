@@ -122,9 +122,10 @@ CoveragePlotData simulationPlot(const SimulationResult& simulation,
   }
   std::ostringstream figures;
   figures.precision(4);
-  figures << simulation.traversal_time_s << " s  |  tracking error sum " << tracking.sum_m
-          << " m, mean " << tracking.mean_m << " m, p99 " << tracking.percentiles_m.back()
-          << " m  |  coverage " << coverage.report.coverage_percent << " %";
+  figures << formatDuration(simulation.traversal_time_s) << "  |  tracking error sum "
+          << tracking.sum_m << " m, mean " << tracking.mean_m << " m, p99 "
+          << tracking.percentiles_m.back() << " m  |  coverage " << coverage.report.coverage_percent
+          << " %";
   plot.title_lines = {figures.str()};
   return plot;
 }

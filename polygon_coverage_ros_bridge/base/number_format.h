@@ -1,6 +1,7 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -36,6 +37,47 @@ inline std::string formatSeconds(double seconds) {
   std::ostringstream out;
   out.precision(3);
   out << std::fixed << seconds << " s";
+  return out.str();
+}
+
+/// A length for people: "190.8 m" under a kilometre, "11.74 km" beyond.
+inline std::string formatLength(double metres) {
+  std::ostringstream out;
+  out << std::fixed;
+  if (std::abs(metres) < 999.95) {
+    out.precision(1);
+    out << metres << " m";
+  } else {
+    out.precision(2);
+    out << metres / 1000.0 << " km";
+  }
+  return out.str();
+}
+
+/// A duration for people, in the units that read at its size: "42.5 s" under a minute,
+/// "6 min 05 s" under an hour, "3 h 07 min" under a day, "2 d 14 h 05 min" beyond, each
+/// rounded to its last unit; a negative or non-finite duration as formatNumber writes it.
+inline std::string formatDuration(double seconds) {
+  if (!(seconds >= 0.0) || !std::isfinite(seconds)) return formatNumber(seconds) + " s";
+  std::ostringstream out;
+  if (seconds < 59.95) {
+    out.precision(1);
+    out << std::fixed << seconds << " s";
+    return out.str();
+  }
+  const auto two = [](long long value) { return (value < 10 ? "0" : "") + std::to_string(value); };
+  const long long whole_seconds = std::llround(seconds);
+  if (whole_seconds < 3600) {
+    out << whole_seconds / 60 << " min " << two(whole_seconds % 60) << " s";
+    return out.str();
+  }
+  const long long minutes = std::llround(seconds / 60.0);
+  if (minutes < 24 * 60) {
+    out << minutes / 60 << " h " << two(minutes % 60) << " min";
+    return out.str();
+  }
+  out << minutes / (24 * 60) << " d " << two(minutes / 60 % 24) << " h " << two(minutes % 60)
+      << " min";
   return out.str();
 }
 

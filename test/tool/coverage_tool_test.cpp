@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -907,6 +908,52 @@ TEST(CoverageTool, GeoJsonMissionsPlanAsTheirMetreMissions) {
   const YAML::Node trajectory = YAML::LoadFile(dir + "/geo/trajectory.geojson");
   EXPECT_EQ(trajectory["features"][0]["geometry"]["coordinates"].size(),
             trajectory["features"][0]["properties"]["times"].size());
+}
+
+/// The numbers of a text, in order.
+std::vector<double> numbersIn(const std::string& text) {
+  std::vector<double> numbers;
+  const std::regex number(R"(-?[0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?)");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
+       it != std::sregex_iterator(); ++it) {
+    numbers.push_back(std::stod(it->str()));
+  }
+  return numbers;
+}
+
+TEST(CoverageTool, PlanWithADatumPlacesAMetreMissionThere) {
+  // plan --datum of a metre mission writes what plan of its GeoJSON export writes.
+  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_30x30.yaml";
+  const std::string dir = scratchDir() + "/datum";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  ToolRun run =
+      runTool("export '" + lake + "' --datum 47.3769,8.5417 --out '" + dir + "/lake.geojson'");
+  ASSERT_EQ(run.exit_status, 0) << run.out;
+  run = runTool("plan '" + dir + "/lake.geojson' --out '" + dir + "/geo' --set mission_depth=2");
+  ASSERT_EQ(run.exit_status, 0) << run.out;
+  run = runTool("plan '" + lake + "' --datum 47.3769,8.5417 --out '" + dir +
+                "/placed' --set mission_depth=2");
+  ASSERT_EQ(run.exit_status, 0) << run.out;
+  // The same waypoints but for the last digits (the export's round trip through WGS84):
+  // the same numbers within 1e-6. (A turn's mission waypoints may differ where its two
+  // samplings keep its clearance about equally well.)
+  const std::vector<double> placed = numbersIn(readText(dir + "/placed/waypoints.geojson"));
+  const std::vector<double> geo = numbersIn(readText(dir + "/geo/waypoints.geojson"));
+  ASSERT_EQ(placed.size(), geo.size());
+  ASSERT_GT(placed.size(), 10u);
+  for (std::size_t i = 0; i < placed.size(); ++i) EXPECT_NEAR(placed[i], geo[i], 1e-6) << i;
+  for (const char* file : {"mission.plan", "mission.waypoints"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir + "/placed/" + file)) << file;
+  }
+  EXPECT_NE(readText(dir + "/placed/metrics.json").find("\"datum\": [47.3769, 8.5417]"),
+            std::string::npos);
+  // A geo-referenced mission has its datum; a datum must be LAT,LON in range.
+  expectInvalid("plan '" + dir + "/lake.geojson' --datum 47,8 --out '" + dir + "/x'",
+                "is geo-referenced already");
+  expectInvalid("plan '" + lake + "' --datum 47 --out '" + dir + "/x'", "expected LAT,LON");
+  expectInvalid("plan '" + lake + "' --datum 95,8 --out '" + dir + "/x'",
+                "the latitude must lie in [-90, 90]");
 }
 
 TEST(CoverageTool, PlansTheShippedLakeChartEndToEnd) {
