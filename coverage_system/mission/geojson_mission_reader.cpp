@@ -24,6 +24,36 @@ struct GeoPolygon {
   std::vector<std::vector<GeoPoint>> rings;
 };
 
+/// The centre of the hulls' extent in latitude and longitude (the middle of their
+/// bounding box in degrees, longitudes taken across the antimeridian where the hulls
+/// straddle it): the default datum, from which no vertex of a lake is farther than half its
+/// bounding box's diagonal. Throws InvalidInputError, naming the vertex as projecting it
+/// would, for a hull vertex out of range.
+GeoPoint hullCentre(const std::vector<GeoPolygon>& polygons, const std::string& source_name) {
+  const double reference = polygons.front().rings.front().front().longitude;
+  double south = 90.0, north = -90.0, west = INFINITY, east = -INFINITY;
+  for (std::size_t p = 0; p < polygons.size(); ++p) {
+    if (polygons[p].rings.empty()) continue;
+    const std::vector<GeoPoint>& hull = polygons[p].rings.front();
+    for (std::size_t v = 0; v < hull.size(); ++v) {
+      const GeoPoint& point = hull[v];
+      LocalEastNorthFrame::checkRange(
+          point, source_name + ": " +
+                     (polygons.size() == 1 ? "" : "polygon " + std::to_string(p) + " ") +
+                     "hull vertex " + std::to_string(v));
+      // The longitude nearest the first vertex's, so that a hull across the antimeridian
+      // keeps one extent.
+      const double longitude = reference + std::remainder(point.longitude - reference, 360.0);
+      south = std::min(south, point.latitude);
+      north = std::max(north, point.latitude);
+      west = std::min(west, longitude);
+      east = std::max(east, longitude);
+    }
+  }
+  const double longitude = std::remainder(0.5 * (west + east), 360.0);
+  return {0.5 * (south + north), longitude == -180.0 ? 180.0 : longitude};
+}
+
 /// What the features of the collection hold, before projection.
 struct GeoFeatures {
   std::vector<GeoPolygon> polygons;
@@ -206,7 +236,7 @@ Mission GeoJsonMissionReader::parse(const std::string& text, const std::string& 
     parser.fail("", "the hull has no vertices");
   const LocalEastNorthFrame frame(datum_           ? *datum_
                                   : features.datum ? *features.datum
-                                                   : first.rings.front().front());
+                                                   : hullCentre(features.polygons, source_name));
 
   Mission mission;
   mission.frame_id = features.frame_id;

@@ -14,7 +14,8 @@ namespace kinematic_coverage::core {
 /// unioned, holes kept, and must make one area) and Point features with the property
 /// "role": "start" and "role": "goal". The polygon feature's properties are parameters as
 /// in a mission file, but for `datum` ([latitude, longitude], the origin of the local
-/// east-north frame; default: the hull's first vertex) and `frame_id` (default "map").
+/// east-north frame; default: the centre of the hull's extent in latitude and longitude)
+/// and `frame_id` (default "map").
 /// The mission comes out in that frame (LocalEastNorthFrame), in metres, with its datum.
 /// Every problem is an InvalidInputError naming the file and what is wrong: not JSON, not
 /// a FeatureCollection, no Polygon, a missing or repeated start or goal, coordinates outside
@@ -23,7 +24,7 @@ namespace kinematic_coverage::core {
 class GeoJsonMissionReader {
  public:
   /// `datum`, when given, anchors the local frame instead of the file's `datum` (or its
-  /// hull's first vertex): missions from several charts then share one frame, e.g. a
+  /// hull's centre): missions from several charts then share one frame, e.g. a
   /// robot's map whose origin is known (mission_publisher's `~datum`).
   explicit GeoJsonMissionReader(std::optional<GeoPoint> datum = std::nullopt);
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "coverage_system/mission/local_east_north_frame.h"
@@ -51,11 +52,40 @@ TEST(GeoJsonMissionReader, ReadsTheAreaStartGoalAndParametersInTheLocalFrame) {
   EXPECT_EQ(mission.frame_id, "map");
 }
 
-TEST(GeoJsonMissionReader, TheDatumDefaultsToTheHullsFirstVertex) {
+/// A lake `length_km` long east-west at latitude 46.45 (about Lake Geneva's) from
+/// `west` degrees of longitude, 2 km wide, its start and goal near its west end.
+std::string longLake(double west, double length_km) {
+  const double east = west + length_km / (111.32 * std::cos(46.45 * M_PI / 180.0));
+  const auto position = [](double longitude, double latitude) {
+    if (longitude > 180.0) longitude -= 360.0;
+    return "[" + std::to_string(longitude) + ", " + std::to_string(latitude) + "]";
+  };
+  const std::string ring = "[[" + position(west, 46.44) + ", " + position(east, 46.44) + ", " +
+                           position(east, 46.46) + ", " + position(west, 46.46) + ", " +
+                           position(west, 46.44) + "]]";
+  return R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {}, )"
+         R"("geometry": {"type": "Polygon", "coordinates": )" +
+         ring + R"(}}, {"type": "Feature", "properties": {"role": "start"}, "geometry": )" +
+         R"({"type": "Point", "coordinates": )" + position(west + 0.01, 46.45) +
+         R"(}}, {"type": "Feature", "properties": {"role": "goal"}, "geometry": )" +
+         R"({"type": "Point", "coordinates": )" + position(west + 0.02, 46.45) + "}}]}";
+}
+
+TEST(GeoJsonMissionReader, TheDatumDefaultsToTheCentreOfTheHullsExtent) {
   const Mission mission = GeoJsonMissionReader().parse(lake("{}"), "lake.geojson");
   ASSERT_TRUE(mission.datum.has_value());
-  EXPECT_DOUBLE_EQ(mission.datum->latitude, 47.3760);
-  EXPECT_DOUBLE_EQ(mission.datum->longitude, 8.5410);
+  EXPECT_DOUBLE_EQ(mission.datum->latitude, 0.5 * (47.3760 + 47.3765));
+  EXPECT_DOUBLE_EQ(mission.datum->longitude, 0.5 * (8.5410 + 8.5418));
+  // A 73 km lake: its ends lie 50 km from one end, which a local frame is not made for,
+  // and 36.5 km from its centre.
+  EXPECT_NO_THROW(GeoJsonMissionReader().parse(longLake(6.2, 73.0), "geneva.geojson"));
+  const std::string from_its_end = R"({"datum": [46.44, 6.2]})";
+  std::string anchored = longLake(6.2, 73.0);
+  anchored.replace(anchored.find("{}"), 2, from_its_end);
+  EXPECT_THROW(GeoJsonMissionReader().parse(anchored, "geneva.geojson"), InvalidInputError);
+  // Across the antimeridian the extent is the short one: its centre lies near 180.
+  const Mission pacific = GeoJsonMissionReader().parse(longLake(179.8, 30.0), "pacific.geojson");
+  EXPECT_GT(std::abs(pacific.datum->longitude), 179.9);
   const Mission multi = GeoJsonMissionReader().parse(lake("{}", "MultiPolygon"), "lake.geojson");
   EXPECT_NEAR(area(multi.polygon), area(mission.polygon), 1e-6);
   EXPECT_EQ(multi.polygon.holes.size(), 1u);

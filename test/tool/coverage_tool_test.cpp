@@ -1011,8 +1011,9 @@ TEST(CoverageTool, RejectsBadGeoJsonWithOneLine) {
   outside.replace(outside.find("8.5420, 47.3768"), 15, "190.5, 47.3768");
   expectInvalidGeoJson(collection(outside + ", " + point_start + ", " + point_goal),
                        "lies outside [-180, 180] x [-90, 90]");
+  // A vertex 2 degrees (150 km) east: 75 km from the extent's centre, the default datum.
   std::string far = square;
-  far.replace(far.find("8.5420, 47.3768"), 15, "9.5420, 47.3768");
+  far.replace(far.find("8.5420, 47.3768"), 15, "10.542, 47.3768");
   expectInvalidGeoJson(collection(far + ", " + point_start + ", " + point_goal),
                        "the area is too large");
   std::string unknown = square;
