@@ -51,8 +51,8 @@ std::string GeoJsonWriter::ring(const Ring& ring, bool counter_clockwise) const 
 }
 
 std::string GeoJsonWriter::lineString(const std::vector<Point2>& points,
-                                      const std::vector<double>& times,
-                                      const std::string& name) const {
+                                      const std::vector<double>& times, const std::string& name,
+                                      const std::string& frame_id) const {
   if (points.size() != times.size()) {
     throw InvalidInputError("GeoJSON line string: " + std::to_string(points.size()) +
                             " points but " + std::to_string(times.size()) + " times");
@@ -62,7 +62,11 @@ std::string GeoJsonWriter::lineString(const std::vector<Point2>& points,
     coordinates += (i > 0 ? ", " : "") + position(points[i]);
   }
   JsonObject properties;
-  properties.set("name", name).set("times", times);
+  properties.set("name", name)
+      .set("times", times)
+      .set("frame_id", frame_id)
+      .set("datum", std::vector<double>{frame_.datum().latitude, frame_.datum().longitude})
+      .set("projection", std::string(kLocalProjection));
   return collection(
       {feature(properties, "{\"type\": \"LineString\", \"coordinates\": " + coordinates + "]}")});
 }

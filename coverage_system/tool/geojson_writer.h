@@ -9,6 +9,10 @@
 
 namespace kinematic_coverage::core {
 
+/// The projection name of the local east-north frame, as metrics.json and the GeoJSON
+/// outputs give it.
+constexpr const char* kLocalProjection = "local";
+
 /// Writes the GeoJSON of geo-referenced missions (docs/REFERENCE.md, File formats):
 /// FeatureCollections in WGS84, positions [longitude, latitude] in the shortest form that
 /// reads back exactly, rings closed and oriented as RFC 7946 asks (hull counter-clockwise,
@@ -17,10 +21,12 @@ class GeoJsonWriter {
  public:
   explicit GeoJsonWriter(const LocalEastNorthFrame& frame) : frame_(frame) {}
 
-  /// One LineString feature through the local `points`, with `name` and the per-vertex
-  /// `times` (s, one per point) in its properties: waypoints.geojson, trajectory.geojson.
+  /// One LineString feature through the local `points`, with `name`, the per-vertex
+  /// `times` (s, one per point) and the frame they were planned in (`frame_id`, the
+  /// `datum` [latitude, longitude] and the `projection`, "local": the local east-north
+  /// frame) in its properties: waypoints.geojson, trajectory.geojson.
   std::string lineString(const std::vector<Point2>& points, const std::vector<double>& times,
-                         const std::string& name) const;
+                         const std::string& name, const std::string& frame_id) const;
 
   /// The mission's area as a Polygon feature (the datum as its `datum` property,
   /// [latitude, longitude], and every parameter that differs from its default as a

@@ -80,7 +80,8 @@ JsonObject planMetrics(const PlanOutputRequest& request, const GeneratedTrajecto
   }
   if (request.datum) {
     metrics.set("frame_id", request.frame_id)
-        .set("datum", std::vector<double>{request.datum->latitude, request.datum->longitude});
+        .set("datum", std::vector<double>{request.datum->latitude, request.datum->longitude})
+        .set("projection", std::string(kLocalProjection));
   }
   return metrics;
 }
@@ -108,8 +109,10 @@ std::vector<std::string> writeGeoJson(const PlanOutputRequest& request,
   }
   const std::string waypoints_path = (dir / "waypoints.geojson").string();
   const std::string trajectory_path = (dir / "trajectory.geojson").string();
-  writeTextFile(waypoints_path, writer.lineString(waypoints, waypoint_times, "waypoints"));
-  writeTextFile(trajectory_path, writer.lineString(poses, pose_times, "trajectory"));
+  writeTextFile(waypoints_path,
+                writer.lineString(waypoints, waypoint_times, "waypoints", request.frame_id));
+  writeTextFile(trajectory_path,
+                writer.lineString(poses, pose_times, "trajectory", request.frame_id));
   return {waypoints_path, trajectory_path};
 }
 

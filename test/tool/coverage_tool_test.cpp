@@ -898,6 +898,12 @@ TEST(CoverageTool, GeoJsonMissionsPlanAsTheirMetreMissions) {
   const YAML::Node coordinates = feature["geometry"]["coordinates"];
   ASSERT_EQ(coordinates.size(), geo.size());
   ASSERT_EQ(feature["properties"]["times"].size(), geo.size());
+  // The frame it was planned in, as metrics.json names it.
+  EXPECT_EQ(feature["properties"]["frame_id"].as<std::string>(), "map");
+  EXPECT_EQ(feature["properties"]["projection"].as<std::string>(), "local");
+  EXPECT_EQ(feature["properties"]["datum"][0].as<double>(), 47.3769);
+  EXPECT_EQ(feature["properties"]["datum"][1].as<double>(), 8.5417);
+  EXPECT_NE(geo_json.find("\"projection\": \"local\""), std::string::npos) << geo_json;
   const kinematic_coverage::core::LocalEastNorthFrame frame(datum);
   for (std::size_t i = 0; i < geo.size(); ++i) {
     const kinematic_coverage::core::Point2 local =
