@@ -8,6 +8,7 @@
 
 #include "polygon_coverage_ros_bridge/geometry/edge_grid.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "trajectory_generation_tools/trajectory/primitive_distance.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -38,23 +39,17 @@ Point2 tangentCorner(const Pose2& a, const Pose2& b) {
   return a.position() + t * u;
 }
 
-/// True when the segments a-b and c-d cross or touch.
-bool segmentsMeet(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const double d1 = cross(a, b, c);
-  const double d2 = cross(a, b, d);
-  const double d3 = cross(c, d, a);
-  const double d4 = cross(c, d, b);
-  return ((d1 <= 0.0 && d2 >= 0.0) || (d1 >= 0.0 && d2 <= 0.0)) &&
-         ((d3 <= 0.0 && d4 >= 0.0) || (d3 >= 0.0 && d4 <= 0.0));
-}
-
-/// The point of the segment a-b nearest to the segment c-d, and its distance from it.
-Clearance nearestOnSegment(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  if (segmentsMeet(a, b, c, d)) return {a, 0.0};
-  Clearance best = {a, distanceToSegment(a, c, d)};
+/// The point of the segment a-b nearest to the segment c-d (an end of one of them is
+/// nearest unless they cross; then the nearest of those).
+Point2 nearestPointOn(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  Point2 best = a;
+  double best_distance = distanceToSegment(a, c, d);
   for (const Point2& p : {b, closestPointOnSegment(c, a, b), closestPointOnSegment(d, a, b)}) {
     const double distance = distanceToSegment(p, c, d);
-    if (distance < best.second) best = {p, distance};
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = p;
+    }
   }
   return best;
 }
@@ -83,9 +78,10 @@ class WallProximity {
     Clearance least = {a, reach_};
     ids_.clear();
     grid_.collect(grid_.cellsOf(a.cwiseMin(b), a.cwiseMax(b)), &ids_);
+    const PathPrimitive segment = PathPrimitive::segment(a, b);
     for (int id : ids_) {
-      const Clearance nearest = nearestOnSegment(a, b, starts_[id], ends_[id]);
-      if (nearest.second < least.second) least = nearest;
+      const double distance = distancePrimitiveToSegment(segment, starts_[id], ends_[id]);
+      if (distance < least.second) least = {nearestPointOn(a, b, starts_[id], ends_[id]), distance};
     }
     return least;
   }

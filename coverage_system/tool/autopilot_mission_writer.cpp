@@ -30,35 +30,34 @@ constexpr int kAltitudeModeRelative = 1;
 
 }  // namespace
 
-std::vector<AutopilotMissionWriter::Item> AutopilotMissionWriter::items(
-    const AutopilotMission& mission) const {
-  std::vector<Item> result;
+AutopilotMissionWriter::AutopilotMissionWriter(const LocalEastNorthFrame& frame,
+                                               const AutopilotMissionSettings& settings,
+                                               const AutopilotMission& mission)
+    : settings_(settings),
+      home_(frame.toGeographic(mission.waypoints.empty() ? Point2::Zero()
+                                                         : mission.waypoints.front().position)),
+      cruise_speed_(mission.waypoints.empty() ? 0.0 : mission.waypoints.front().speed) {
   double speed = -1.0;
   for (const AutopilotWaypoint& waypoint : mission.waypoints) {
     if (waypoint.speed != speed) {
       speed = waypoint.speed;
-      result.push_back(
+      items_.push_back(
           {kDoChangeSpeed, kFrameMission, {kGroundSpeed, speed, kThrottleUnchanged, 0, 0, 0, 0}});
     }
-    const GeoPoint geo = frame_.toGeographic(waypoint.position);
-    result.push_back(
+    const GeoPoint geo = frame.toGeographic(waypoint.position);
+    items_.push_back(
         {kNavWaypoint,
          kFrameGlobalRelativeAlt,
          {waypoint.hold ? kHoldSeconds : 0.0, settings_.corner_cutting_radius, 0, 0, geo.latitude,
           geo.longitude, settings_.depth > 0.0 ? -settings_.depth : 0.0}});
   }
-  return result;
 }
 
-std::size_t AutopilotMissionWriter::itemCount(const AutopilotMission& mission) const {
-  return items(mission).size();
-}
-
-std::string AutopilotMissionWriter::planJson(const AutopilotMission& mission) const {
+std::string AutopilotMissionWriter::planJson() const {
   std::ostringstream list;
   list << "[";
   int jump_id = 0;
-  for (const Item& item : items(mission)) {
+  for (const Item& item : items_) {
     const double altitude = item.frame == kFrameGlobalRelativeAlt ? item.params[6] : 0.0;
     ++jump_id;
     list << (jump_id > 1 ? ",\n" : "\n")
@@ -70,16 +69,13 @@ std::string AutopilotMissionWriter::planJson(const AutopilotMission& mission) co
     list << "], \"type\": \"SimpleItem\"}";
   }
   list << "\n]";
-  const double cruise = mission.waypoints.empty() ? 0.0 : mission.waypoints.front().speed;
-  const GeoPoint home = frame_.toGeographic(
-      mission.waypoints.empty() ? Point2::Zero() : mission.waypoints.front().position);
   JsonObject mission_object;
-  mission_object.set("cruiseSpeed", cruise)
+  mission_object.set("cruiseSpeed", cruise_speed_)
       .set("firmwareType", kFirmwareArduPilot)
       .set("globalPlanAltitudeMode", kAltitudeModeRelative)
-      .set("hoverSpeed", cruise)
+      .set("hoverSpeed", cruise_speed_)
       .setJson("items", list.str())
-      .set("plannedHomePosition", std::vector<double>{home.latitude, home.longitude, 0.0})
+      .set("plannedHomePosition", std::vector<double>{home_.latitude, home_.longitude, 0.0})
       .set("vehicleType", kVehicleSubmarine)
       .set("version", 2.0);
   JsonObject empty_fence;
@@ -102,20 +98,18 @@ std::string AutopilotMissionWriter::planJson(const AutopilotMission& mission) co
   return plan.toString();
 }
 
-std::string AutopilotMissionWriter::waypointsText(const AutopilotMission& mission) const {
+std::string AutopilotMissionWriter::waypointsText() const {
   std::ostringstream text;
   text << "QGC WPL 110\n";
-  const GeoPoint home = frame_.toGeographic(
-      mission.waypoints.empty() ? Point2::Zero() : mission.waypoints.front().position);
   const auto line = [&](int index, int current, int frame, int command, const double* params) {
     text << index << '\t' << current << '\t' << frame << '\t' << command;
     for (int k = 0; k < 7; ++k) text << '\t' << formatRoundTrip(params[k]);
     text << "\t1\n";
   };
-  const double home_params[7] = {0, 0, 0, 0, home.latitude, home.longitude, 0};
+  const double home_params[7] = {0, 0, 0, 0, home_.latitude, home_.longitude, 0};
   line(0, 1, kFrameGlobal, kNavWaypoint, home_params);
   int index = 1;
-  for (const Item& item : items(mission)) line(index++, 0, item.frame, item.command, item.params);
+  for (const Item& item : items_) line(index++, 0, item.frame, item.command, item.params);
   return text.str();
 }
 

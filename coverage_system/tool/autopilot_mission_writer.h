@@ -31,18 +31,19 @@ class AutopilotMissionWriter {
   /// 7254; boards that store missions on an SD card hold more): plan warns above it.
   static constexpr std::size_t kArduPilotItemLimit = 700;
 
-  AutopilotMissionWriter(const LocalEastNorthFrame& frame, const AutopilotMissionSettings& settings)
-      : frame_(frame), settings_(settings) {}
+  /// The items of `mission`, its waypoints in WGS84 through `frame`.
+  AutopilotMissionWriter(const LocalEastNorthFrame& frame, const AutopilotMissionSettings& settings,
+                         const AutopilotMission& mission);
 
   /// The mission items, as both formats count them (without the WPL file's home line).
-  std::size_t itemCount(const AutopilotMission& mission) const;
+  std::size_t itemCount() const { return items_.size(); }
 
   /// mission.plan: QGroundControl plan JSON; its `kinematic_coverage` object notes the
   /// corner-cutting radius the plan assumes (QGroundControl ignores it).
-  std::string planJson(const AutopilotMission& mission) const;
+  std::string planJson() const;
 
   /// mission.waypoints: the QGC WPL 110 text.
-  std::string waypointsText(const AutopilotMission& mission) const;
+  std::string waypointsText() const;
 
  private:
   /// One item: its command, frame and seven parameters.
@@ -51,10 +52,11 @@ class AutopilotMissionWriter {
     int frame = 0;
     double params[7] = {0, 0, 0, 0, 0, 0, 0};
   };
-  std::vector<Item> items(const AutopilotMission& mission) const;
 
-  LocalEastNorthFrame frame_;
   AutopilotMissionSettings settings_;
+  std::vector<Item> items_;
+  GeoPoint home_;              ///< the first waypoint (the datum without waypoints)
+  double cruise_speed_ = 0.0;  ///< the first waypoint's speed
 };
 
 }  // namespace kinematic_coverage::core

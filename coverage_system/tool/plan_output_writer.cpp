@@ -127,12 +127,12 @@ void writeAutopilotMission(const PlanOutputRequest& request, const GeneratedTraj
       AutopilotMissionBuilder(vehicleLimitsOf(p), p.corner_cutting_radius)
           .build(trajectory.path, *request.free_area, p.wall_distance);
   const AutopilotMissionWriter writer(LocalEastNorthFrame(*request.datum),
-                                      {p.mission_depth, p.corner_cutting_radius});
-  const std::size_t items = writer.itemCount(mission);
+                                      {p.mission_depth, p.corner_cutting_radius}, mission);
+  const std::size_t items = writer.itemCount();
   const std::string plan_path = (dir / "mission.plan").string();
   const std::string waypoints_path = (dir / "mission.waypoints").string();
-  writeTextFile(plan_path, writer.planJson(mission));
-  writeTextFile(waypoints_path, writer.waypointsText(mission));
+  writeTextFile(plan_path, writer.planJson());
+  writeTextFile(waypoints_path, writer.waypointsText());
   files->push_back(plan_path);
   files->push_back(waypoints_path);
   const std::size_t held = static_cast<std::size_t>(

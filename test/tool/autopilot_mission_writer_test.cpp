@@ -31,11 +31,11 @@ AutopilotMission threeWaypoints() {
 }
 
 TEST(AutopilotMissionWriter, WritesTheWplItemsWithSpeedChangesHoldsAndDepth) {
-  const AutopilotMissionWriter writer(LocalEastNorthFrame({47.0, 8.0}), {3.0, 2.0});
-  const AutopilotMission mission = threeWaypoints();
+  const AutopilotMissionWriter writer(LocalEastNorthFrame({47.0, 8.0}), {3.0, 2.0},
+                                      threeWaypoints());
   // Speed 0.5, waypoint, waypoint, speed 0.25, waypoint.
-  EXPECT_EQ(writer.itemCount(mission), 5u);
-  const auto lines = tabFields(writer.waypointsText(mission));
+  EXPECT_EQ(writer.itemCount(), 5u);
+  const auto lines = tabFields(writer.waypointsText());
   ASSERT_EQ(lines.size(), 7u);
   EXPECT_EQ(lines[0], std::vector<std::string>{"QGC WPL 110"});
   for (std::size_t i = 1; i < lines.size(); ++i) {
@@ -69,14 +69,16 @@ TEST(AutopilotMissionWriter, WritesTheWplItemsWithSpeedChangesHoldsAndDepth) {
 }
 
 TEST(AutopilotMissionWriter, WritesDepthZeroAsAltitudeZero) {
-  const AutopilotMissionWriter writer(LocalEastNorthFrame({47.0, 8.0}), {0.0, 2.0});
-  const auto lines = tabFields(writer.waypointsText(threeWaypoints()));
+  const AutopilotMissionWriter writer(LocalEastNorthFrame({47.0, 8.0}), {0.0, 2.0},
+                                      threeWaypoints());
+  const auto lines = tabFields(writer.waypointsText());
   EXPECT_EQ(lines[3][10], "0");
 }
 
 TEST(AutopilotMissionWriter, ThePlanFileHoldsTheSameItems) {
-  const AutopilotMissionWriter writer(LocalEastNorthFrame({47.0, 8.0}), {3.0, 2.0});
-  const std::string plan = writer.planJson(threeWaypoints());
+  const AutopilotMissionWriter writer(LocalEastNorthFrame({47.0, 8.0}), {3.0, 2.0},
+                                      threeWaypoints());
+  const std::string plan = writer.planJson();
   EXPECT_NE(plan.find("\"fileType\": \"Plan\""), std::string::npos);
   EXPECT_NE(plan.find("\"vehicleType\": 12"), std::string::npos);
   EXPECT_NE(plan.find("\"corner_cutting_radius_m\": 2"), std::string::npos);
