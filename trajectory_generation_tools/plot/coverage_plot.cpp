@@ -12,6 +12,8 @@
 #include <tuple>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "trajectory_generation_tools/plot/map_overlays.h"
+#include "trajectory_generation_tools/plot/path_style.h"
 #include "trajectory_generation_tools/plot/plot_canvas.h"
 
 namespace kinematic_coverage::core {
@@ -42,9 +44,8 @@ constexpr std::array<PlotColour, 5> kErrorColours{
 /// The heatmap image's longest side, pixels: larger grids are sampled down (nearest cell),
 /// which keeps memory bounded and is still finer than any plot box.
 constexpr int kMaxHeatmapImageSide = 4096;
-/// Default on-image distance between heading arrows, pixels, and the least one.
-constexpr double kDefaultArrowSpacingPixels = 90.0;
-constexpr double kMinArrowSpacingPixels = 12.0;
+/// The actual pose arrows' size as a share of the nominal heading arrows'.
+constexpr double kPoseArrowShare = 0.7;
 /// Free margin around the drawn items, as a share of their larger extent.
 constexpr double kBoundsPadding = 0.04;
 /// Box height range, as a share of its width, when the image height follows the area.
@@ -143,6 +144,9 @@ void checkData(const CoveragePlotData& data) {
   }
   if (data.closest_approach && !isFinite(*data.closest_approach)) {
     throw InvalidInputError("coverage plot: non-finite closest approach");
+  }
+  if (data.north_direction && !std::isfinite(*data.north_direction)) {
+    throw InvalidInputError("coverage plot: non-finite north direction");
   }
 }
 
@@ -259,6 +263,10 @@ void setDash(cairo_t* cr, double on, double off) {
   cairo_set_dash(cr, dashes.data(), 2, 0.0);
 }
 
+/// The waypoint path's dash lengths, pixels at the base image size.
+constexpr double kWaypointDashOn = 6.0;
+constexpr double kWaypointDashOff = 4.0;
+
 /// A dashed outline: its colour, width and dash lengths (pixels at the base image size).
 struct DashedLine {
   PlotColour colour;
@@ -268,14 +276,16 @@ struct DashedLine {
 };
 
 /// The offset free area's outline, and that of the parts not entered.
-constexpr DashedLine kOffsetAreaLine{kOffsetAreaColour, 1.1, 7.0, 4.0};
+constexpr DashedLine kOffsetAreaLine{kOffsetAreaColour, kNominalOffsetOutlineWidth, 7.0, 4.0};
 constexpr DashedLine kUnreachablePartLine{kUnseenRegionColour, 1.8, 4.0, 3.0};
 
-/// Strokes the current path as `line`, its sizes scaled by `factor`.
-void strokeDashed(cairo_t* cr, const DashedLine& line, double factor) {
+/// Strokes the current path as `line`, its width scaled by `width_factor` but at least a
+/// hairline, its dashes by `dash_factor`.
+void strokeDashed(cairo_t* cr, const DashedLine& line, double width_factor, double dash_factor) {
   setColour(cr, line.colour);
-  cairo_set_line_width(cr, line.width * factor);
-  setDash(cr, line.on * factor, line.off * factor);
+  cairo_set_line_width(cr,
+                       std::max(line.width * width_factor, CoveragePlotPathStyle::kHairlineWidth));
+  setDash(cr, line.on * dash_factor, line.off * dash_factor);
   cairo_stroke(cr);
   cairo_set_dash(cr, nullptr, 0, 0.0);
 }
@@ -324,7 +334,7 @@ SurfacePtr heatmapImage(const Heatmap& heatmap) {
 
 /// The free area: a light fill, the heatmap clipped to it, then the obstacles and outlines.
 void drawAreas(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
-               const PlotScale& scale) {
+               const PlotScale& scale, const CoveragePlotPathStyle& style) {
   areaPath(cr, layout, data.free_area);
   setColour(cr, kFreeAreaColour);
   cairo_fill(cr);
@@ -358,41 +368,47 @@ void drawAreas(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlot
   cairo_set_line_width(cr, 1.7 * scale.factor);
   cairo_stroke(cr);
 
+  const double width_factor = style.offset_outline_width / kNominalOffsetOutlineWidth;
+  const double dash_factor = style.mark_share * scale.factor;
   if (!data.offset_parts.empty()) {
     for (const PolygonWithHoles& part : data.offset_parts) areaPath(cr, layout, part);
-    strokeDashed(cr, kOffsetAreaLine, scale.factor);
+    strokeDashed(cr, kOffsetAreaLine, width_factor, dash_factor);
   }
   if (!data.unreachable_parts.empty()) {
     for (const PolygonWithHoles& part : data.unreachable_parts) areaPath(cr, layout, part);
-    strokeDashed(cr, kUnreachablePartLine, scale.factor);
+    strokeDashed(cr, kUnreachablePartLine, width_factor, dash_factor);
   }
 }
 
+/// The waypoint path dashed, with a dot at each waypoint unless the lanes are too close.
 void drawWaypointPath(cairo_t* cr, const CoveragePlotLayout& layout,
-                      const std::vector<Pose2>& waypoints, const PlotScale& scale) {
+                      const std::vector<Pose2>& waypoints, const PlotScale& scale,
+                      const CoveragePlotPathStyle& style) {
   if (waypoints.empty()) return;
-  setColour(cr, kWaypointColour);
+  setColour(cr, kWaypointColour, style.path_opacity);
   if (waypoints.size() > 1) {
     posePath(cr, layout, waypoints);
-    cairo_set_line_width(cr, 1.3 * scale.factor);
-    setDash(cr, 6.0 * scale.factor, 4.0 * scale.factor);
+    cairo_set_line_width(cr, style.waypoint_width);
+    const double dash_factor = style.mark_share * scale.factor;
+    setDash(cr, kWaypointDashOn * dash_factor, kWaypointDashOff * dash_factor);
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0.0);
   }
+  if (style.waypoint_dot_radius <= 0.0) return;
   for (const Pose2& pose : waypoints) {
     const Point2 p = layout.toPixel(pose.position());
     cairo_new_sub_path(cr);
-    cairo_arc(cr, p.x(), p.y(), 2.8 * scale.factor, 0.0, 2.0 * M_PI);
+    cairo_arc(cr, p.x(), p.y(), style.waypoint_dot_radius, 0.0, 2.0 * M_PI);
   }
   cairo_fill(cr);
 }
 
-/// A filled arrowhead centred on pixel `centre`, pointing along world heading `yaw`.
-void arrowPath(cairo_t* cr, const Point2& centre, double yaw, const PlotScale& scale) {
+/// A filled arrowhead `length` pixels long centred on pixel `centre`, pointing along world
+/// heading `yaw`.
+void arrowPath(cairo_t* cr, const Point2& centre, double yaw, double length) {
   const Point2 along(std::cos(yaw), -std::sin(yaw));
   const Point2 across(-along.y(), along.x());
-  const double length = 12.0 * scale.factor;
-  const double half_width = 4.5 * scale.factor;
+  const double half_width = kArrowHalfWidthShare * length;
   const Point2 tip = centre + 0.5 * length * along;
   const Point2 back = centre - 0.5 * length * along;
   cairo_move_to(cr, tip.x(), tip.y());
@@ -406,21 +422,19 @@ double wrappedAngle(double angle) { return std::remainder(angle, 2.0 * M_PI); }
 
 /// The trajectory with heading arrows, or red without them under actual pose arrows.
 void drawTrajectory(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
-                    double arrow_spacing, const PlotScale& scale) {
+                    const CoveragePlotPathStyle& style) {
   const std::vector<Pose2>& trajectory = data.trajectory;
   if (trajectory.size() < 2) return;
   const bool under_arrows = !data.actual_pose_arrows.empty();
-  setColour(cr, under_arrows ? kDesiredColour : kTrajectoryColour);
+  setColour(cr, under_arrows ? kDesiredColour : kTrajectoryColour, style.path_opacity);
   posePath(cr, layout, trajectory);
-  cairo_set_line_width(cr, 1.8 * scale.factor);
+  cairo_set_line_width(cr, style.trajectory_width);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_stroke(cr);
   if (under_arrows) return;
 
-  const double spacing =
-      arrow_spacing > 0.0
-          ? std::max(arrow_spacing, kMinArrowSpacingPixels / layout.pixels_per_metre)
-          : kDefaultArrowSpacingPixels * scale.factor / layout.pixels_per_metre;
+  setColour(cr, kTrajectoryColour);
+  const double spacing = style.arrow_spacing_pixels / layout.pixels_per_metre;
   double travelled = 0.0;
   double next_arrow = 0.5 * spacing;
   for (std::size_t i = 1; i < trajectory.size(); ++i) {
@@ -431,7 +445,7 @@ void drawTrajectory(cairo_t* cr, const CoveragePlotLayout& layout, const Coverag
       const double t = (next_arrow - travelled) / length;
       const Point2 position = from.position() + t * (to.position() - from.position());
       const double yaw = from.yaw + t * wrappedAngle(to.yaw - from.yaw);
-      arrowPath(cr, layout.toPixel(position), yaw, scale);
+      arrowPath(cr, layout.toPixel(position), yaw, style.arrow_length);
       next_arrow += spacing;
     }
     travelled += length;
@@ -443,11 +457,10 @@ void drawTrajectory(cairo_t* cr, const CoveragePlotLayout& layout, const Coverag
 void drawPoseArrows(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlotData& data,
                     const PlotScale& scale) {
   if (data.actual_pose_arrows.empty()) return;
-  const PlotScale small{0.7 * scale.factor, scale.title, scale.subtitle,
-                        scale.tick,         scale.label, scale.legend};
   setColour(cr, kTrajectoryColour);
   for (const Pose2& pose : data.actual_pose_arrows) {
-    arrowPath(cr, layout.toPixel(pose.position()), pose.yaw, small);
+    arrowPath(cr, layout.toPixel(pose.position()), pose.yaw,
+              kPoseArrowShare * kNominalArrowLength * scale.factor);
   }
   cairo_fill(cr);
 }
@@ -701,17 +714,17 @@ void drawLineKeys(LegendColumn& column, const CoveragePlotData& data) {
     setColour(cr, under_arrows ? kDesiredColour : kTrajectoryColour);
     cairo_move_to(cr, x, column.y);
     cairo_line_to(cr, x + sample_width, column.y);
-    cairo_set_line_width(cr, 1.8 * f);
+    cairo_set_line_width(cr, kNominalTrajectoryWidth * f);
     cairo_stroke(cr);
     if (!under_arrows) {
-      arrowPath(cr, Point2(x + 0.5 * sample_width, column.y), 0.0, column.scale);
+      arrowPath(cr, Point2(x + 0.5 * sample_width, column.y), 0.0, kNominalArrowLength * f);
       cairo_fill(cr);
     }
     column.label(under_arrows ? "desired trajectory" : "trajectory");
   }
   if (under_arrows) {
     setColour(cr, kTrajectoryColour);
-    arrowPath(cr, Point2(x + 0.5 * sample_width, column.y), 0.0, column.scale);
+    arrowPath(cr, Point2(x + 0.5 * sample_width, column.y), 0.0, kNominalArrowLength * f);
     cairo_fill(cr);
     column.label("actual poses");
   }
@@ -729,13 +742,13 @@ void drawLineKeys(LegendColumn& column, const CoveragePlotData& data) {
     setColour(cr, kWaypointColour);
     cairo_move_to(cr, x, column.y);
     cairo_line_to(cr, x + sample_width, column.y);
-    cairo_set_line_width(cr, 1.3 * f);
-    setDash(cr, 6.0 * f, 4.0 * f);
+    cairo_set_line_width(cr, kNominalWaypointWidth * f);
+    setDash(cr, kWaypointDashOn * f, kWaypointDashOff * f);
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0.0);
     for (const double dot_x : {x + 2.0 * f, x + sample_width - 2.0 * f}) {
       cairo_new_sub_path(cr);
-      cairo_arc(cr, dot_x, column.y, 2.8 * f, 0.0, 2.0 * M_PI);
+      cairo_arc(cr, dot_x, column.y, kNominalWaypointDotRadius * f, 0.0, 2.0 * M_PI);
     }
     cairo_fill(cr);
     column.label("waypoint path");
@@ -746,7 +759,7 @@ void drawLineKeys(LegendColumn& column, const CoveragePlotData& data) {
     if (!shown) continue;
     cairo_move_to(cr, x, column.y);
     cairo_line_to(cr, x + sample_width, column.y);
-    strokeDashed(cr, line, f);
+    strokeDashed(cr, line, f, f);
     column.label(label);
   }
 }
@@ -877,23 +890,30 @@ CoveragePlotLayout CoveragePlot::layout(const CoveragePlotData& data) const {
   return computeLayout(data, options_);
 }
 
+CoveragePlotPathStyle CoveragePlot::pathStyle(const CoveragePlotData& data) const {
+  const CoveragePlotLayout layout = computeLayout(data, options_);
+  return pathStyleFor(layout, data, options_.arrow_spacing, plotScaleFor(layout.width));
+}
+
 void CoveragePlot::writePng(const CoveragePlotData& data, const std::string& path) const {
   const CoveragePlotLayout layout = computeLayout(data, options_);
   const PlotScale scale = plotScaleFor(layout.width);
+  const CoveragePlotPathStyle style = pathStyleFor(layout, data, options_.arrow_spacing, scale);
   const PlotCanvas canvas(layout.width, layout.height, "coverage plot");
   cairo_t* cr = canvas.context();
 
   cairo_save(cr);
   cairo_rectangle(cr, layout.box_left, layout.box_top, layout.box_width, layout.box_height);
   cairo_clip(cr);
-  drawAreas(cr, layout, data, scale);
-  drawWaypointPath(cr, layout, data.waypoints, scale);
-  drawTrajectory(cr, layout, data, options_.arrow_spacing, scale);
+  drawAreas(cr, layout, data, scale, style);
+  drawWaypointPath(cr, layout, data.waypoints, scale, style);
+  drawTrajectory(cr, layout, data, style);
   drawActualPath(cr, layout, data, scale);
   drawPoseArrows(cr, layout, data, scale);
   drawUnseenRegion(cr, layout, data, scale);
   drawClosestApproach(cr, layout, data, scale);
   drawMarkers(cr, layout, data, scale);
+  drawMapOverlays(cr, layout, data, scale);
   cairo_restore(cr);
 
   drawAxes(cr, layout, scale);

@@ -50,6 +50,10 @@ struct CoveragePlotData {
   std::optional<Point2> closest_approach;
   /// Lines above the plot: the first is the title (bold), the others key metrics.
   std::vector<std::string> title_lines;
+  /// The direction of true north in the plot's frame, radians counter-clockwise from +x
+  /// (pi/2 in a local east-north frame, a little off it on a UTM grid): a north arrow
+  /// points there. Unset for a mission with no geo-reference: no north arrow.
+  std::optional<double> north_direction;
 };
 
 /// Image size and drawing choices of a coverage plot.
@@ -60,7 +64,8 @@ struct CoveragePlotOptions {
   /// Image height, pixels, in [kMinSide, kMaxSide]; 0 chooses it from the area's aspect.
   int height = 0;
   /// Arc length between heading arrows on the trajectory, metres; 0 puts one about every
-  /// 90 pixels of trajectory.
+  /// 100 pixels of trajectory. Either way, arrows are thinned out where they would cover
+  /// more than a few percent of the free area (dense lanes of a large map).
   double arrow_spacing = 0.0;
 
   static constexpr int kMinSide = 300;
@@ -100,11 +105,43 @@ struct CoveragePlotLayout {
   Point2 toPixel(const Point2& world) const;
 };
 
+/// How the paths are drawn at a plot's scale: where the trajectory's lanes come close on
+/// the image (a lake of square kilometres), lines get thinner down to a hairline, fainter
+/// below it, and arrowheads, dashes and waypoint dots shrink, so that the heatmap stays
+/// visible between the lanes; where they are far apart (a 30 m map), the nominal sizes.
+struct CoveragePlotPathStyle {
+  /// Typical on-image distance between neighbouring lanes, pixels: the free area divided
+  /// by the length of the trajectory (of the waypoint path without one), both on the
+  /// image; infinite without either.
+  double lane_spacing_pixels = 0.0;
+  /// Trajectory line width, pixels: the nominal width, capped at an eighth of the lane
+  /// spacing but at least a hairline (kHairlineWidth).
+  double trajectory_width = 0.0;
+  /// Waypoint path line width, pixels, scaled down as the trajectory's.
+  double waypoint_width = 0.0;
+  /// Offset free area outline width, pixels, scaled down as the trajectory's.
+  double offset_outline_width = 0.0;
+  /// Opacity of the trajectory and waypoint path, in (0, 1]: below 1 where the lanes
+  /// are less than about 9 pixels apart, so that they tint the heatmap instead of hiding it.
+  double path_opacity = 1.0;
+  /// Share of their nominal size that arrowheads and dash lengths keep, in (0, 1].
+  double mark_share = 1.0;
+  /// Heading arrowhead length, pixels.
+  double arrow_length = 0.0;
+  /// On-image arc length between heading arrows, pixels.
+  double arrow_spacing_pixels = 0.0;
+  /// Waypoint dot radius, pixels; 0 when the dots are left out (lanes too close).
+  double waypoint_dot_radius = 0.0;
+
+  /// The thinnest line drawn, pixels.
+  static constexpr double kHairlineWidth = 0.5;
+};
+
 /// Renders coverage plots to PNG files with cairo (`plot.png` of coverage_tool plan,
 /// evaluate and simulate): obstacles, the heatmap in discrete colours
 /// for 0, 1, 2, 3 and 4+ visits with its colour bar, paths, start and goal, an actual path
 /// coloured by tracking error with its colour bar, title lines and axes in metres with an
-/// equal aspect ratio.
+/// equal aspect ratio, a scale bar and, for geo-referenced data, a north arrow.
 class CoveragePlot {
  public:
   /// Throws InvalidInputError for a size out of range or a negative or non-finite arrow
@@ -115,12 +152,24 @@ class CoveragePlot {
   /// writePng does for bad data.
   CoveragePlotLayout layout(const CoveragePlotData& data) const;
 
+  /// Line widths and marker sizes of the paths of the plot of `data` at its scale. Throws
+  /// InvalidInputError as writePng does for bad data.
+  CoveragePlotPathStyle pathStyle(const CoveragePlotData& data) const;
+
   /// Renders `data` and writes it to `path` as PNG. Throws InvalidInputError for a hull
   /// with fewer than 3 vertices or no extent, a non-finite coordinate, a heatmap whose
   /// grid is empty, non-finite or not columns x rows in size, actual errors that are not
-  /// one finite value >= 0 per actual pose, and naming `path` when the file cannot be
-  /// written.
+  /// one finite value >= 0 per actual pose, a non-finite north direction, and naming `path` when
+  /// the file cannot be written.
   void writePng(const CoveragePlotData& data, const std::string& path) const;
+
+  /// Length of the scale bar of a box `box_width_metres` wide, metres: 1, 2 or 5 times a
+  /// power of ten nearest (by ratio) to a fifth of the width, so between about 1/8 and 1/3
+  /// of it: a round length, easy to read and to compare the lanes with.
+  static double scaleBarLength(double box_width_metres);
+
+  /// The scale bar's label: "500 m", "2 km", "0.5 m" (kilometres from 1 km on).
+  static std::string scaleBarLabel(double length_metres);
 
   /// The heatmap colour of a cell seen `visits` times: red for unseen, then light to dark
   /// for 1, 2, 3 and 4 or more.

@@ -52,6 +52,10 @@ void setColour(cairo_t* cr, const PlotColour& colour) {
   cairo_set_source_rgb(cr, colour.red / 255.0, colour.green / 255.0, colour.blue / 255.0);
 }
 
+void setColour(cairo_t* cr, const PlotColour& colour, double opacity) {
+  cairo_set_source_rgba(cr, colour.red / 255.0, colour.green / 255.0, colour.blue / 255.0, opacity);
+}
+
 void selectFont(cairo_t* cr, double size, bool bold) {
   cairo_select_font_face(cr, "sans", CAIRO_FONT_SLANT_NORMAL,
                          bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);

@@ -63,6 +63,9 @@ class PlotCanvas {
 /// Sets the source colour.
 void setColour(cairo_t* cr, const PlotColour& colour);
 
+/// Sets the source colour with an opacity in [0, 1], for lines the heatmap shows through.
+void setColour(cairo_t* cr, const PlotColour& colour, double opacity);
+
 /// Selects the sans font at `size` pixels, bold or not.
 void selectFont(cairo_t* cr, double size, bool bold);
 
