@@ -22,6 +22,7 @@ kc_add_benchmark_smoke(hard_map_writer --out ${CMAKE_BINARY_DIR}/hard_maps --see
 kc_add_benchmark_smoke(gtsp_benchmark --seeds 1 --instances 11eil51,4br17,20kroA100)
 kc_add_benchmark_smoke(planner_peer_benchmark --runs 1)
 kc_add_benchmark_smoke(scaling_benchmark --sizes 500:10 --plot ${CMAKE_BINARY_DIR}/scaling.png)
+kc_add_benchmark_smoke(lake_survey_benchmark --areas 20)
 # The time cost of the first shorelines, the lakes, the shipped missions and the peer's
 # polygons against the values recorded when coverage came to be measured on the exact
 # offset (at most 1.005 times each).

@@ -7,6 +7,8 @@
 #   docs/images/parallelogram_60_unsmoothed.png the same, smoothing false
 #   docs/images/lake_30x30_replan.png          replan the lake after 40 % of its trajectory,
 #                                              both obstacles moved by (2, 1) m
+#   docs/images/lake_100km2_plan.png           plan the 100 km^2 lake of lake_survey_benchmark
+#                                              from its GeoJSON
 # With --print it writes no picture and prints the README's table of the parallelogram's
 # three trajectories instead (the doc_figures test compares it with the README).
 # coverage_tool must be built (scripts/build.sh --target kinematic_coverage_coverage_tool);
@@ -51,6 +53,10 @@ fi
 "$tool" plan "$missions/lake_30x30.yaml" --out "$out/lake" >/dev/null
 cp "$out/lake/plot.png" "$images/lake_30x30_plan.png"
 
+"$build_dir/devel/lib/kinematic_coverage/lake_survey_benchmark" --areas 100 --out "$out/lakes" \
+  --plots "$out/lake_plots" >/dev/null
+cp "$out/lake_plots/lake_100km2.png" "$images/lake_100km2_plan.png"
+
 "$tool" plan "$missions/parallelogram_60.yaml" --out "$out/local" \
   --set smoothing_strategy=local --set smoothing_clearance=0 >/dev/null
 cp "$out/local/plot.png" "$images/parallelogram_60_smoothed.png"
@@ -78,4 +84,4 @@ EOF
 "$tool" replan "$missions/lake_30x30.yaml" --updated "$out/updated.yaml" \
   --visited "$out/visited.csv" --out "$out/replan" >/dev/null
 cp "$out/replan/plot.png" "$images/lake_30x30_replan.png"
-echo "make_readme_images.sh: wrote the README's four pictures in $images" >&2
+echo "make_readme_images.sh: wrote the README's five pictures in $images" >&2

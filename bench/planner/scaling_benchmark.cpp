@@ -14,12 +14,8 @@
 // counts as timed out). Then the growth exponents of planning time, run time and peak memory
 // against vertices, and with --plot a log-log PNG of the times. --set NAME=VALUE (repeatable)
 // is handed to `coverage_tool plan`, to measure a parameter (boundary_simplification=0.05).
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -27,10 +23,10 @@
 #include <regex>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
+#include "bench/support/coverage_tool_run.h"
 #include "bench/support/log_log_plot.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/hard_map_yaml.h"
@@ -45,62 +41,6 @@ struct Size {
   int islands;
 };
 
-struct Run {
-  bool finished = false;  ///< exited within the timeout
-  int exit_status = -1;
-  double wall_s = 0.0;
-  double peak_mb = 0.0;
-  std::string output;  ///< standard output and error
-};
-
-/// Runs `tool plan mission --out dir` in a child, its output to a file, killed after
-/// `timeout_s`.
-Run runPlan(const std::string& tool, const std::string& mission, const std::string& dir,
-            const std::vector<std::string>& settings, double timeout_s) {
-  std::vector<std::string> arguments = {tool, "plan", mission, "--out", dir};
-  for (const std::string& setting : settings) {
-    arguments.push_back("--set");
-    arguments.push_back(setting);
-  }
-  std::vector<char*> argv;
-  for (std::string& argument : arguments) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-  const std::string log = dir + ".log";
-  const auto start = std::chrono::steady_clock::now();
-  std::fflush(stdout);  // or the child would write what this process has buffered again
-  const pid_t child = fork();
-  if (child == 0) {
-    std::FILE* out = std::freopen(log.c_str(), "w", stdout);
-    if (out == nullptr || dup2(fileno(stdout), fileno(stderr)) < 0) _exit(127);
-    execv(tool.c_str(), argv.data());
-    _exit(127);
-  }
-  Run run;
-  int status = 0;
-  struct rusage usage {};
-  while (true) {
-    const pid_t done = wait4(child, &status, WNOHANG, &usage);
-    run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (done == child) {
-      run.finished = true;
-      run.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-      break;
-    }
-    if (run.wall_s > timeout_s) {
-      kill(child, SIGKILL);
-      wait4(child, &status, 0, &usage);
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  run.peak_mb = usage.ru_maxrss / 1024.0;
-  std::ifstream stream(log);
-  std::stringstream text;
-  text << stream.rdbuf();
-  run.output = text.str();
-  return run;
-}
-
 std::vector<Size> parseSizes(const std::string& text) {
   std::vector<Size> sizes;
   std::stringstream stream(text);
@@ -112,31 +52,6 @@ std::vector<Size> parseSizes(const std::string& text) {
         {std::atoi(item.substr(0, colon).c_str()), std::atoi(item.substr(colon + 1).c_str())});
   }
   return sizes;
-}
-
-/// The stage lines of coverage_tool's output ("name: summary (seconds s)").
-std::vector<std::pair<std::string, double>> stageTimes(const std::string& output) {
-  std::vector<std::pair<std::string, double>> stages;
-  const std::regex line(R"(^([a-z_ ]+): .*\((\d+\.\d+) s\)$)");
-  std::stringstream stream(output);
-  std::string text;
-  while (std::getline(stream, text)) {
-    std::smatch match;
-    if (std::regex_match(text, match, line)) stages.emplace_back(match[1], std::stod(match[2]));
-  }
-  return stages;
-}
-
-/// What a failed run said: its error line, else its last line (90 characters at most).
-std::string firstWords(const std::string& output) {
-  std::stringstream stream(output);
-  std::string text;
-  std::string last;
-  while (std::getline(stream, text)) {
-    if (text.rfind("error: ", 0) == 0) return text.substr(0, 90);
-    if (!text.empty()) last = text;
-  }
-  return last.substr(0, 90);
 }
 
 }  // namespace
@@ -201,14 +116,12 @@ int main(int argc, char** argv) {
                                std::to_string(size.islands) + "_" + std::to_string(seed);
       const std::string mission = out + "/" + name + ".yaml";
       std::ofstream(mission) << kinematic_coverage::core::testing::hardMapYaml(map);
-      const Run run = runPlan(tool, mission, out + "/" + name, settings, timeout_s);
-      const auto stages = stageTimes(run.output);
+      const kinematic_coverage::bench::CoverageToolRun run =
+          kinematic_coverage::bench::runPlan(tool, mission, out + "/" + name, settings, timeout_s);
+      const auto stages = kinematic_coverage::bench::stageTimes(run.output);
       // coverage_tool's own figure: validation, cleaning and planning, as metrics.json's
       // planning_time_s.
-      std::smatch planning;
-      const std::regex planning_line(R"(planning took (\d+\.\d+) s)");
-      const double planning_s =
-          std::regex_search(run.output, planning, planning_line) ? std::stod(planning[1]) : 0.0;
+      const double planning_s = kinematic_coverage::bench::planningSeconds(run.output);
       std::pair<std::string, double> slowest{"-", 0.0};
       for (const auto& [stage, seconds] : stages) {
         if (seconds > slowest.second) slowest = {stage, seconds};
@@ -217,9 +130,10 @@ int main(int argc, char** argv) {
       const std::regex cell_line(R"((\d+) [a-z]+ cells)");
       const std::string cell_count =
           std::regex_search(run.output, cells, cell_line) ? std::string(cells[1]) : "-";
-      const std::string outcome = !run.finished          ? "timed out"
-                                  : run.exit_status == 0 ? "planned"
-                                                         : firstWords(run.output);
+      const std::string outcome = !run.finished ? "timed out"
+                                  : run.exit_status == 0
+                                      ? "planned"
+                                      : kinematic_coverage::bench::firstWords(run.output);
       std::printf("| %d | %zu | %zu | %s | %s | %.2f | %.2f | %.0f | %s %.2f s |\n", size.vertices,
                   map.mission.polygon.holes.size(), vertices, cell_count.c_str(), outcome.c_str(),
                   planning_s, run.wall_s, run.peak_mb, slowest.first.c_str(), slowest.second);

@@ -24,7 +24,16 @@ target_compile_definitions(${PROJECT_NAME}_planner_reference PRIVATE KC_SOURCE_D
 # Planning time and peak memory against the size of a lake chart (coverage_tool plan in a
 # child process per map).
 kc_add_executable(scaling_benchmark bench/planner/scaling_benchmark.cpp
-  bench/support/log_log_plot.cpp test/support/hard_map_generator.cpp)
+  bench/support/coverage_tool_run.cpp bench/support/log_log_plot.cpp
+  test/support/hard_map_generator.cpp)
 target_link_libraries(${PROJECT_NAME}_scaling_benchmark PRIVATE kc_validation kc_geometry kc_parameters
   PkgConfig::CAIRO)
 add_dependencies(${PROJECT_NAME}_scaling_benchmark ${PROJECT_NAME}_coverage_tool)
+
+# Whole lakes of 20 to 500 km^2 from GeoJSON, as an operator plans them (coverage_tool plan
+# in a child process per lake).
+kc_add_executable(lake_survey_benchmark bench/planner/lake_survey_benchmark.cpp
+  bench/support/coverage_tool_run.cpp test/support/hard_map_generator.cpp
+  test/support/survey_lake_generator.cpp)
+target_link_libraries(${PROJECT_NAME}_lake_survey_benchmark PRIVATE kc_tool kc_mission)
+add_dependencies(${PROJECT_NAME}_lake_survey_benchmark ${PROJECT_NAME}_coverage_tool)

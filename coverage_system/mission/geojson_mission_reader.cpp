@@ -11,7 +11,9 @@
 
 #include "coverage_system/mission/local_east_north_frame.h"
 #include "coverage_system/mission/mission_file_reader.h"
+#include "coverage_system/mission/mission_frame.h"
 #include "coverage_system/mission/yaml_parameter_reader.h"
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/region_intersection.h"
 
@@ -24,14 +26,43 @@ struct GeoPolygon {
   std::vector<std::vector<GeoPoint>> rings;
 };
 
-/// The centre of the hulls' extent in latitude and longitude (the middle of their
-/// bounding box in degrees, longitudes taken across the antimeridian where the hulls
-/// straddle it): the default datum, from which no vertex of a lake is farther than half its
-/// bounding box's diagonal. Throws InvalidInputError, naming the vertex as projecting it
-/// would, for a hull vertex out of range.
-GeoPoint hullCentre(const std::vector<GeoPolygon>& polygons, const std::string& source_name) {
+/// Mean earth radius (m), for the extent that messages give.
+constexpr double kEarthRadius = 6371000.0;
+
+/// The hulls' extent in latitude and longitude, longitudes taken across the antimeridian
+/// where the hulls straddle it (east may then exceed 180).
+struct HullExtent {
+  double south = 90.0;
+  double north = -90.0;
+  double west = INFINITY;
+  double east = -INFINITY;
+
+  /// The middle of the extent: the default datum, from which no vertex of a lake is
+  /// farther than half its bounding box's diagonal.
+  GeoPoint centre() const {
+    const double longitude = std::remainder(0.5 * (west + east), 360.0);
+    return {0.5 * (south + north), longitude == -180.0 ? 180.0 : longitude};
+  }
+
+  /// "spans 412 km east-west and 80 km north-south (longitude 3.1 to 8.6, latitude ...)".
+  std::string description() const {
+    const double radians = M_PI / 180.0;
+    const double width =
+        kEarthRadius * std::cos(0.5 * (south + north) * radians) * (east - west) * radians;
+    const double height = kEarthRadius * (north - south) * radians;
+    return "spans " + formatNumber(std::round(width / 1000.0)) + " km east-west and " +
+           formatNumber(std::round(height / 1000.0)) + " km north-south (longitude " +
+           formatNumber(std::remainder(west, 360.0)) + " to " +
+           formatNumber(std::remainder(east, 360.0)) + ", latitude " + formatNumber(south) +
+           " to " + formatNumber(north) + ")";
+  }
+};
+
+/// The extent of the polygons' hulls. Throws InvalidInputError, naming the vertex as
+/// projecting it would, for a hull vertex out of range.
+HullExtent hullExtent(const std::vector<GeoPolygon>& polygons, const std::string& source_name) {
   const double reference = polygons.front().rings.front().front().longitude;
-  double south = 90.0, north = -90.0, west = INFINITY, east = -INFINITY;
+  HullExtent extent;
   for (std::size_t p = 0; p < polygons.size(); ++p) {
     if (polygons[p].rings.empty()) continue;
     const std::vector<GeoPoint>& hull = polygons[p].rings.front();
@@ -44,14 +75,13 @@ GeoPoint hullCentre(const std::vector<GeoPolygon>& polygons, const std::string& 
       // The longitude nearest the first vertex's, so that a hull across the antimeridian
       // keeps one extent.
       const double longitude = reference + std::remainder(point.longitude - reference, 360.0);
-      south = std::min(south, point.latitude);
-      north = std::max(north, point.latitude);
-      west = std::min(west, longitude);
-      east = std::max(east, longitude);
+      extent.south = std::min(extent.south, point.latitude);
+      extent.north = std::max(extent.north, point.latitude);
+      extent.west = std::min(extent.west, longitude);
+      extent.east = std::max(extent.east, longitude);
     }
   }
-  const double longitude = std::remainder(0.5 * (west + east), 360.0);
-  return {0.5 * (south + north), longitude == -180.0 ? 180.0 : longitude};
+  return extent;
 }
 
 /// What the features of the collection hold, before projection.
@@ -190,13 +220,51 @@ class GeoJsonParser {
   std::string source_;
 };
 
-Ring projected(const std::vector<GeoPoint>& ring, const LocalEastNorthFrame& frame,
+Ring projected(const std::vector<GeoPoint>& ring, const MissionFrame& frame,
                const std::string& what) {
   Ring local;
   for (std::size_t v = 0; v < ring.size(); ++v) {
     local.push_back(frame.toLocal(ring[v], what + " vertex " + std::to_string(v)));
   }
   return local;
+}
+
+/// The features' polygons, start and goal in `frame`, into `mission`. Throws
+/// InvalidInputError for a point the frame does not reach (naming the area's extent) and
+/// for polygons that do not make one area.
+void projectFeatures(const GeoFeatures& features, const MissionFrame& frame,
+                     const GeoJsonParser& parser, const std::string& source_name,
+                     const HullExtent& extent, Mission& mission) {
+  std::vector<PolygonWithHoles> areas;
+  try {
+    for (std::size_t p = 0; p < features.polygons.size(); ++p) {
+      const GeoPolygon& polygon = features.polygons[p];
+      const std::string name =
+          features.polygons.size() == 1 ? "" : "polygon " + std::to_string(p) + " ";
+      PolygonWithHoles area;
+      area.hull = projected(polygon.rings.front(), frame, source_name + ": " + name + "hull");
+      for (std::size_t h = 1; h < polygon.rings.size(); ++h) {
+        area.holes.push_back(projected(
+            polygon.rings[h], frame, source_name + ": " + name + "hole " + std::to_string(h - 1)));
+      }
+      areas.push_back(std::move(area));
+    }
+    mission.start = frame.toLocal(*features.start, source_name + ": the start");
+    mission.goal = frame.toLocal(*features.goal, source_name + ": the goal");
+  } catch (const InvalidInputError& error) {
+    throw InvalidInputError(std::string(error.what()) + "; the area " + extent.description());
+  }
+  if (areas.size() == 1) {
+    mission.polygon = std::move(areas.front());
+    return;
+  }
+  const std::vector<PolygonWithHoles> united = unionOfAreas(areas);
+  if (united.size() != 1) {
+    parser.fail("", "its " + std::to_string(areas.size()) + " polygons make " +
+                        std::to_string(united.size()) +
+                        " separate areas: a mission covers one connected area");
+  }
+  mission.polygon = united.front();
 }
 
 }  // namespace
@@ -234,44 +302,21 @@ Mission GeoJsonMissionReader::parse(const std::string& text, const std::string& 
   const GeoPolygon& first = features.polygons.front();
   if (first.rings.empty() || first.rings.front().empty())
     parser.fail("", "the hull has no vertices");
-  const LocalEastNorthFrame frame(datum_           ? *datum_
-                                  : features.datum ? *features.datum
-                                                   : hullCentre(features.polygons, source_name));
+  const HullExtent extent = hullExtent(features.polygons, source_name);
 
   Mission mission;
   mission.frame_id = features.frame_id;
-  mission.datum = frame.datum();
-  std::vector<PolygonWithHoles> areas;
-  for (std::size_t p = 0; p < features.polygons.size(); ++p) {
-    const GeoPolygon& polygon = features.polygons[p];
-    const std::string name =
-        features.polygons.size() == 1 ? "" : "polygon " + std::to_string(p) + " ";
-    PolygonWithHoles area;
-    area.hull = projected(polygon.rings.front(), frame, source_name + ": " + name + "hull");
-    for (std::size_t h = 1; h < polygon.rings.size(); ++h) {
-      area.holes.push_back(projected(polygon.rings[h], frame,
-                                     source_name + ": " + name + "hole " + std::to_string(h - 1)));
-    }
-    areas.push_back(std::move(area));
-  }
-  if (areas.size() == 1) {
-    mission.polygon = std::move(areas.front());
-  } else {
-    const std::vector<PolygonWithHoles> united = unionOfAreas(areas);
-    if (united.size() != 1) {
-      parser.fail("", "its " + std::to_string(areas.size()) + " polygons make " +
-                          std::to_string(united.size()) +
-                          " separate areas: a mission covers one connected area");
-    }
-    mission.polygon = united.front();
-  }
-  mission.start = frame.toLocal(*features.start, source_name + ": the start");
-  mission.goal = frame.toLocal(*features.goal, source_name + ": the goal");
   mission.parameters = base;
   YamlParameterReader parameters(mission.parameters);
   for (const auto& [name, value, where] : features.parameters) parameters.set(name, value, where);
   for (const std::string& assignment : overrides) parameters.setAssignment(assignment);
   parameters.check();
+  const MissionFrame frame = MissionFrame::of(datum_           ? *datum_
+                                              : features.datum ? *features.datum
+                                                               : extent.centre(),
+                                              mission.parameters);
+  mission.datum = frame.datum();
+  projectFeatures(features, frame, parser, source_name, extent, mission);
   return mission;
 }
 

@@ -16,11 +16,12 @@ namespace kinematic_coverage::core {
 /// in a mission file, but for `datum` ([latitude, longitude], the origin of the local
 /// east-north frame; default: the centre of the hull's extent in latitude and longitude)
 /// and `frame_id` (default "map").
-/// The mission comes out in that frame (LocalEastNorthFrame), in metres, with its datum.
+/// The mission comes out in the plane its `projection` parameter names (MissionFrame: the
+/// local east-north frame or the datum's UTM zone), in metres, with its datum.
 /// Every problem is an InvalidInputError naming the file and what is wrong: not JSON, not
 /// a FeatureCollection, no Polygon, a missing or repeated start or goal, coordinates outside
-/// [-180, 180] x [-90, 90], a point farther than LocalEastNorthFrame::kMaxRadius from the
-/// datum, an unknown parameter or one out of range.
+/// [-180, 180] x [-90, 90], a point the projection does not reach (with the area's
+/// extent), an unknown parameter or one out of range.
 class GeoJsonMissionReader {
  public:
   /// `datum`, when given, anchors the local frame instead of the file's `datum` (or its

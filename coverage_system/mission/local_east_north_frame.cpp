@@ -53,9 +53,11 @@ Point2 LocalEastNorthFrame::toLocal(const GeoPoint& point, const std::string& wh
   projection_->cartesian.Forward(point.latitude, point.longitude, 0.0, east, north, up);
   const Point2 local(east, north);
   if (!(local.norm() <= kMaxRadius)) {
-    throw InvalidInputError(what + " lies " + formatNumber(std::round(local.norm())) +
-                            " m from the datum, more than the " + formatNumber(kMaxRadius) +
-                            " m a local frame is made for: the area is too large");
+    throw InvalidInputError(
+        what + " lies " + formatNumber(std::round(local.norm())) +
+        " m from the datum, more than the " + formatNumber(kMaxRadius) +
+        " m a local frame is made for: the area is too large for projection local "
+        "(set projection: utm)");
   }
   return local;
 }

@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "coverage_system/parameters/map_projection.h"
 #include "polygon_coverage_ros_bridge/decomposition/sweep_line_decomposition.h"
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
@@ -46,6 +47,8 @@ inline constexpr ParameterChoices<TurnCurve, 2> kTurnCurves{
     {{"arc", TurnCurve::kArc}, {"clothoid", TurnCurve::kClothoid}}};
 inline constexpr ParameterChoices<VehicleModel, 2> kVehicleModels{
     {{"dynamic", VehicleModel::kDynamic}, {"kinematic", VehicleModel::kKinematic}}};
+inline constexpr ParameterChoices<MapProjection, 2> kMapProjections{
+    {{"local", MapProjection::kLocal}, {"utm", MapProjection::kUtm}}};
 inline constexpr ParameterChoices<ReplanningMethod, 3> kReplanningMethods{
     {{"convex_hull", ReplanningMethod::kConvexHull},
      {"concave_hull", ReplanningMethod::kConcaveHull},

@@ -217,6 +217,12 @@ std::vector<ParameterDeclaration> trajectoryDeclarations() {
              S::kTrajectory, "Sampling distance of the trajectory along arcs.", kThesis),
       number("rotation_sampling_angle", &P::rotation_sampling_angle, "rad", 0.2, positive(),
              S::kTrajectory, "Sampling angle of the trajectory during in-place rotations."),
+      number("trajectory_output_spacing", &P::trajectory_output_spacing, "m", 0.0, nonNegative(),
+             S::kTrajectory,
+             "Thins the written trajectory files (trajectory.csv, trajectory.geojson) to one "
+             "pose per this many metres, keeping every primitive's end poses, every rotation "
+             "and a pose per 0.1 rad of every curve; 0: every sampled pose. Metrics, plot and "
+             "mission files use every pose."),
       number("corner_cutting_radius", &P::corner_cutting_radius, "m", 2.0, nonNegative(),
              S::kTrajectory,
              "How far before a waypoint of the vehicle's mission files (mission.plan, "
@@ -228,6 +234,11 @@ std::vector<ParameterDeclaration> trajectoryDeclarations() {
              "Depth below the surface of every waypoint of the vehicle's mission files, "
              "written as ArduSub reads it: the altitude -mission_depth relative to the "
              "surface (MAV_FRAME_GLOBAL_RELATIVE_ALT)."),
+      choice("projection", &P::projection, "local", namesOf(kMapProjections), S::kTrajectory,
+             "The plane a geo-referenced mission is planned in: local (the east-north frame "
+             "at the datum, for areas within 50 km of it) or utm (the grid of the datum's UTM "
+             "zone, from the datum: for longer lakes; an area where its point scale differs "
+             "from 1 by more than 1e-3 is refused)."),
       choice("turn_curve", &P::turn_curve, "arc", namesOf(kTurnCurves), S::kSmoothing,
              "The curve of a smoothed turn between two straight legs: arc (the thesis's "
              "circular arc, whose curvature jumps where it meets a leg) or clothoid "

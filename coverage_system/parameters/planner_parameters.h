@@ -43,8 +43,10 @@ struct PlannerParameters {
   double segment_sampling_distance{};
   double arc_sampling_distance{};
   double rotation_sampling_angle{};
+  double trajectory_output_spacing{};
   double corner_cutting_radius{};
   double mission_depth{};
+  std::string projection{};
   std::string turn_curve{};
   double smoothing_clearance{};
   double curvature_rate_max{};

@@ -27,10 +27,13 @@ constexpr double kThrottleUnchanged = -1.0;
 constexpr int kFirmwareArduPilot = 3;
 constexpr int kVehicleSubmarine = 12;
 constexpr int kAltitudeModeRelative = 1;
+/// Decimals of the waypoints' degrees: 1e-7, the resolution of MAVLink's integer
+/// MISSION_ITEM_INT positions.
+constexpr int kDegreeDecimals = 7;
 
 }  // namespace
 
-AutopilotMissionWriter::AutopilotMissionWriter(const LocalEastNorthFrame& frame,
+AutopilotMissionWriter::AutopilotMissionWriter(const MissionFrame& frame,
                                                const AutopilotMissionSettings& settings,
                                                const AutopilotMission& mission)
     : settings_(settings),
@@ -45,11 +48,12 @@ AutopilotMissionWriter::AutopilotMissionWriter(const LocalEastNorthFrame& frame,
           {kDoChangeSpeed, kFrameMission, {kGroundSpeed, speed, kThrottleUnchanged, 0, 0, 0, 0}});
     }
     const GeoPoint geo = frame.toGeographic(waypoint.position);
-    items_.push_back(
-        {kNavWaypoint,
-         kFrameGlobalRelativeAlt,
-         {waypoint.hold ? kHoldSeconds : 0.0, settings_.corner_cutting_radius, 0, 0, geo.latitude,
-          geo.longitude, settings_.depth > 0.0 ? -settings_.depth : 0.0}});
+    items_.push_back({kNavWaypoint,
+                      kFrameGlobalRelativeAlt,
+                      {waypoint.hold ? kHoldSeconds : 0.0, settings_.corner_cutting_radius, 0, 0,
+                       roundToDecimals(geo.latitude, kDegreeDecimals),
+                       roundToDecimals(geo.longitude, kDegreeDecimals),
+                       settings_.depth > 0.0 ? -settings_.depth : 0.0}});
   }
 }
 

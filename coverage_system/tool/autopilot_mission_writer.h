@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "coverage_system/mission/autopilot_mission.h"
-#include "coverage_system/mission/local_east_north_frame.h"
+#include "coverage_system/mission/mission_frame.h"
 
 namespace kinematic_coverage::core {
 
@@ -32,7 +32,7 @@ class AutopilotMissionWriter {
   static constexpr std::size_t kArduPilotItemLimit = 700;
 
   /// The items of `mission`, its waypoints in WGS84 through `frame`.
-  AutopilotMissionWriter(const LocalEastNorthFrame& frame, const AutopilotMissionSettings& settings,
+  AutopilotMissionWriter(const MissionFrame& frame, const AutopilotMissionSettings& settings,
                          const AutopilotMission& mission);
 
   /// The mission items, as both formats count them (without the WPL file's home line).

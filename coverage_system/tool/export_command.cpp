@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "coverage_system/mission/local_east_north_frame.h"
+#include "coverage_system/mission/mission_frame.h"
 #include "coverage_system/tool/command_line.h"
 #include "coverage_system/tool/geojson_writer.h"
 #include "polygon_coverage_ros_bridge/base/text_file_writer.h"
@@ -27,8 +27,8 @@ void ExportCommand::run(const std::vector<std::string>& args, std::ostream& out,
   const CommandArguments& arguments = input->arguments;
   const GeoPoint datum = parseDatum(arguments.values.at("--datum"));
   Mission& mission = input->mission;
-  const LocalEastNorthFrame frame(datum);
-  // Every point within the local frame's reach, as the reader will ask.
+  const MissionFrame frame = MissionFrame::of(datum, mission.parameters);
+  // Every point within the projection's reach, as the reader will ask.
   auto check = [&](const Point2& p, const std::string& what) {
     frame.toLocal(frame.toGeographic(p), what);
   };

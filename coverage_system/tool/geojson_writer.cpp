@@ -35,7 +35,13 @@ std::string feature(const JsonObject& properties, const std::string& geometry) {
 
 }  // namespace
 
-std::string GeoJsonWriter::position(const Point2& local) const {
+void GeoJsonWriter::setFrame(const MissionFrame& frame, JsonObject& properties) {
+  properties.set("datum", std::vector<double>{frame.datum().latitude, frame.datum().longitude})
+      .set("projection", frame.projectionName());
+  if (const std::optional<std::string> zone = frame.utmZone()) properties.set("utm_zone", *zone);
+}
+
+std::string GeoJsonWriter::exactPosition(const Point2& local) const {
   const GeoPoint point = frame_.toGeographic(local);
   return "[" + formatRoundTrip(point.longitude) + ", " + formatRoundTrip(point.latitude) + "]";
 }
@@ -46,8 +52,8 @@ std::string GeoJsonWriter::ring(const Ring& ring, bool counter_clockwise) const 
     std::reverse(oriented.begin(), oriented.end());
   }
   std::string json = "[";
-  for (const Point2& p : oriented) json += position(p) + ", ";
-  return json + position(oriented.front()) + "]";
+  for (const Point2& p : oriented) json += exactPosition(p) + ", ";
+  return json + exactPosition(oriented.front()) + "]";
 }
 
 std::string GeoJsonWriter::lineString(const std::vector<Point2>& points,
@@ -59,21 +65,23 @@ std::string GeoJsonWriter::lineString(const std::vector<Point2>& points,
   }
   std::string coordinates = "[";
   for (std::size_t i = 0; i < points.size(); ++i) {
-    coordinates += (i > 0 ? ", " : "") + position(points[i]);
+    const GeoPoint point = frame_.toGeographic(points[i]);
+    coordinates += std::string(i > 0 ? ", " : "") + "[" +
+                   formatRoundTrip(roundToDecimals(point.longitude, kOutputDecimals)) + ", " +
+                   formatRoundTrip(roundToDecimals(point.latitude, kOutputDecimals)) + "]";
   }
   JsonObject properties;
-  properties.set("name", name)
-      .set("times", times)
-      .set("frame_id", frame_id)
-      .set("datum", std::vector<double>{frame_.datum().latitude, frame_.datum().longitude})
-      .set("projection", std::string(kLocalProjection));
+  properties.set("name", name).set("times", times).set("frame_id", frame_id);
+  setFrame(frame_, properties);
   return collection(
       {feature(properties, "{\"type\": \"LineString\", \"coordinates\": " + coordinates + "]}")});
 }
 
-std::string GeoJsonWriter::mission(const Mission& mission) const {
+std::string GeoJsonWriter::mission(const Mission& mission, bool with_datum) const {
   JsonObject area;
-  area.set("datum", std::vector<double>{frame_.datum().latitude, frame_.datum().longitude});
+  if (with_datum) {
+    area.set("datum", std::vector<double>{frame_.datum().latitude, frame_.datum().longitude});
+  }
   if (mission.frame_id != "map") area.set("frame_id", mission.frame_id);
   const PlannerParameters defaults;
   for (const std::string& name : MissionFileReader::parameterNames()) {
@@ -91,8 +99,10 @@ std::string GeoJsonWriter::mission(const Mission& mission) const {
   goal.set("role", std::string("goal"));
   return collection(
       {feature(area, "{\"type\": \"Polygon\", \"coordinates\": " + rings + "}"),
-       feature(start, "{\"type\": \"Point\", \"coordinates\": " + position(mission.start) + "}"),
-       feature(goal, "{\"type\": \"Point\", \"coordinates\": " + position(mission.goal) + "}")});
+       feature(start,
+               "{\"type\": \"Point\", \"coordinates\": " + exactPosition(mission.start) + "}"),
+       feature(goal,
+               "{\"type\": \"Point\", \"coordinates\": " + exactPosition(mission.goal) + "}")});
 }
 
 }  // namespace kinematic_coverage::core

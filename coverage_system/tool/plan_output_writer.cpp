@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "coverage_system/mission/autopilot_mission.h"
-#include "coverage_system/mission/local_east_north_frame.h"
+#include "coverage_system/mission/mission_frame.h"
 #include "coverage_system/mission/trajectory_coverage.h"
 #include "coverage_system/mission/trajectory_pipeline.h"
 #include "coverage_system/mission/wall_clearance_warning.h"
@@ -24,6 +24,7 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "trajectory_generation_tools/plot/coverage_plot.h"
+#include "trajectory_generation_tools/trajectory/trajectory_thinning.h"
 
 namespace kinematic_coverage::core {
 
@@ -79,18 +80,17 @@ JsonObject planMetrics(const PlanOutputRequest& request, const GeneratedTrajecto
     metrics.set("min_obstacle_clearance_m", trajectory.min_obstacle_clearance_m);
   }
   if (request.datum) {
-    metrics.set("frame_id", request.frame_id)
-        .set("datum", std::vector<double>{request.datum->latitude, request.datum->longitude})
-        .set("projection", std::string(kLocalProjection));
+    metrics.set("frame_id", request.frame_id);
+    GeoJsonWriter::setFrame(MissionFrame::of(*request.datum, *request.parameters), metrics);
   }
   return metrics;
 }
 
 /// DIR/waypoints.geojson and DIR/trajectory.geojson of a geo-referenced plan; their paths.
 std::vector<std::string> writeGeoJson(const PlanOutputRequest& request,
-                                      const GeneratedTrajectory& trajectory,
+                                      const std::vector<TrajectoryPose>& written_poses,
                                       const std::filesystem::path& dir) {
-  const GeoJsonWriter writer{LocalEastNorthFrame(*request.datum)};
+  const GeoJsonWriter writer{MissionFrame::of(*request.datum, *request.parameters)};
   const SegmentCost time_cost(CostFunction::kTime, vehicleLimitsOf(*request.parameters));
   std::vector<Point2> waypoints;
   std::vector<double> waypoint_times;
@@ -103,7 +103,7 @@ std::vector<std::string> writeGeoJson(const PlanOutputRequest& request,
   }
   std::vector<Point2> poses;
   std::vector<double> pose_times;
-  for (const TrajectoryPose& pose : trajectory.poses) {
+  for (const TrajectoryPose& pose : written_poses) {
     poses.emplace_back(pose.x, pose.y);
     pose_times.push_back(pose.t);
   }
@@ -126,7 +126,7 @@ void writeAutopilotMission(const PlanOutputRequest& request, const GeneratedTraj
   const AutopilotMission mission =
       AutopilotMissionBuilder(vehicleLimitsOf(p), p.corner_cutting_radius)
           .build(trajectory.path, *request.free_area, p.wall_distance);
-  const AutopilotMissionWriter writer(LocalEastNorthFrame(*request.datum),
+  const AutopilotMissionWriter writer(MissionFrame::of(*request.datum, p),
                                       {p.mission_depth, p.corner_cutting_radius}, mission);
   const std::size_t items = writer.itemCount();
   const std::string plan_path = (dir / "mission.plan").string();
@@ -187,6 +187,16 @@ CoveragePlotData planPlot(const PlanOutputRequest& request, const std::vector<Po
           << formatLength(trajectory.trajectory_length_m) << "  |  "
           << formatDuration(trajectory.traversal_time_s);
   plot.title_lines = {request.title, figures.str()};
+  if (request.datum) {
+    // True north at the middle of the drawn area, for the plot's north arrow.
+    Point2 low = request.free_area->hull.front(), high = low;
+    for (const Point2& p : request.free_area->hull) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    plot.north_direction =
+        MissionFrame::of(*request.datum, *request.parameters).northDirection(0.5 * (low + high));
+  }
   if (!keepsClearance(trajectory.min_obstacle_clearance_m, request.parameters->wall_distance)) {
     plot.closest_approach = trajectory.closest_approach;
   }
@@ -230,7 +240,15 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   const std::string metrics_path = (dir / "metrics.json").string();
   const std::string plot_path = (dir / "plot.png").string();
   WaypointCsvWriter().write(waypoints_path, request.plan->waypoints);
-  TrajectoryCsvWriter().write(trajectory_path, trajectory.poses);
+  const std::vector<TrajectoryPose> written_poses =
+      TrajectoryThinning(request.parameters->trajectory_output_spacing).apply(trajectory.poses);
+  if (written_poses.size() < trajectory.poses.size()) {
+    out << "thin: the trajectory files hold " << written_poses.size() << " of "
+        << trajectory.poses.size() << " poses (one per "
+        << formatNumber(request.parameters->trajectory_output_spacing)
+        << " m, every primitive's ends and every curve's turns)" << std::endl;
+  }
+  TrajectoryCsvWriter().write(trajectory_path, written_poses);
   planMetrics(request, trajectory, coverage, combined).write(metrics_path);
 
   CoveragePlotData plot = planPlot(request, poses, trajectory, coverage, combined);
@@ -252,7 +270,7 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   CoveragePlot().writePng(plot, plot_path);
   outputs.files = {waypoints_path, trajectory_path, metrics_path, plot_path};
   if (request.datum) {
-    for (std::string& path : writeGeoJson(request, trajectory, dir)) {
+    for (std::string& path : writeGeoJson(request, written_poses, dir)) {
       outputs.files.push_back(std::move(path));
     }
     writeAutopilotMission(request, trajectory, dir, out, &outputs.files, &outputs.warnings);

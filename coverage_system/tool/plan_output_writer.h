@@ -55,6 +55,8 @@ struct PlanOutputs {
 /// DIR/plot.png (docs/REFERENCE.md, File formats), with one progress line per stage on `out`;
 /// for a geo-referenced mission also DIR/waypoints.geojson (times: the planner's rest-to-rest
 /// time cost up to each waypoint) and DIR/trajectory.geojson (times: the poses' t).
+/// The trajectory files hold the poses that `trajectory_output_spacing` keeps
+/// (TrajectoryThinning); the figures, the plot and the mission files use every pose.
 /// A trajectory that sees less than kReachableCoverageBarPercent of the reachable area
 /// gives a warning, and the plot outlines the largest unseen region; a smoothed one is
 /// measured against its unsmoothed trajectory too (metrics.json's smoothing_lost_area_m2

@@ -32,6 +32,13 @@ inline std::string formatRoundTrip(double value) {
   return std::string(text, result.ptr);
 }
 
+/// `value` rounded to `decimals` decimal places; formatRoundTrip then writes at most that
+/// many, since the double nearest a short decimal reads back as it.
+inline double roundToDecimals(double value, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  return std::round(value * scale) / scale;
+}
+
 /// A duration for progress lines, to the millisecond: "0.016 s".
 inline std::string formatSeconds(double seconds) {
   std::ostringstream out;

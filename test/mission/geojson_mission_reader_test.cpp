@@ -91,6 +91,32 @@ TEST(GeoJsonMissionReader, TheDatumDefaultsToTheCentreOfTheHullsExtent) {
   EXPECT_EQ(multi.polygon.holes.size(), 1u);
 }
 
+TEST(GeoJsonMissionReader, PlansLongLakesInUtmAndNamesTheExtentOfAnAreaTooLarge) {
+  // 150 km: beyond a local frame's reach from any datum, within one UTM zone.
+  std::string long_lake = longLake(6.2, 150.0);
+  const std::string local_error = errorOf(long_lake);
+  EXPECT_NE(local_error.find("set projection: utm"), std::string::npos) << local_error;
+  EXPECT_NE(local_error.find("the area spans 150 km east-west and 2 km north-south"),
+            std::string::npos)
+      << local_error;
+  long_lake.replace(long_lake.find("{}"), 2, R"({"projection": "utm"})");
+  const Mission utm = GeoJsonMissionReader().parse(long_lake, "long.geojson");
+  EXPECT_EQ(utm.parameters.projection, "utm");
+  // The hull's east-west extent, 150 km, within the grid's scale (1e-3) and its turn.
+  double west = INFINITY, east = -INFINITY;
+  for (const Point2& p : utm.polygon.hull) {
+    west = std::min(west, p.x());
+    east = std::max(east, p.x());
+  }
+  EXPECT_NEAR((east - west) / 150000.0, 1.0, 2e-3);
+  // 800 km across two zones: the point scale of the datum's zone is off by more than 1e-3.
+  std::string wide = longLake(3.0, 800.0);
+  wide.replace(wide.find("{}"), 2, R"({"projection": "utm"})");
+  const std::string wide_error = errorOf(wide);
+  EXPECT_NE(wide_error.find("point scale"), std::string::npos) << wide_error;
+  EXPECT_NE(wide_error.find("the area spans 799 km east-west"), std::string::npos) << wide_error;
+}
+
 TEST(GeoJsonMissionReader, AGivenDatumAnchorsTheFrameInsteadOfTheFiles) {
   const GeoPoint given{47.3750, 8.5400};
   const Mission anchored =

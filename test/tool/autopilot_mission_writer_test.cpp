@@ -31,7 +31,7 @@ AutopilotMission threeWaypoints() {
 }
 
 TEST(AutopilotMissionWriter, WritesTheWplItemsWithSpeedChangesHoldsAndDepth) {
-  const AutopilotMissionWriter writer(LocalEastNorthFrame({47.0, 8.0}), {3.0, 2.0},
+  const AutopilotMissionWriter writer(MissionFrame({47.0, 8.0}, MapProjection::kLocal), {3.0, 2.0},
                                       threeWaypoints());
   // Speed 0.5, waypoint, waypoint, speed 0.25, waypoint.
   EXPECT_EQ(writer.itemCount(), 5u);
@@ -69,14 +69,14 @@ TEST(AutopilotMissionWriter, WritesTheWplItemsWithSpeedChangesHoldsAndDepth) {
 }
 
 TEST(AutopilotMissionWriter, WritesDepthZeroAsAltitudeZero) {
-  const AutopilotMissionWriter writer(LocalEastNorthFrame({47.0, 8.0}), {0.0, 2.0},
+  const AutopilotMissionWriter writer(MissionFrame({47.0, 8.0}, MapProjection::kLocal), {0.0, 2.0},
                                       threeWaypoints());
   const auto lines = tabFields(writer.waypointsText());
   EXPECT_EQ(lines[3][10], "0");
 }
 
 TEST(AutopilotMissionWriter, ThePlanFileHoldsTheSameItems) {
-  const AutopilotMissionWriter writer(LocalEastNorthFrame({47.0, 8.0}), {3.0, 2.0},
+  const AutopilotMissionWriter writer(MissionFrame({47.0, 8.0}, MapProjection::kLocal), {3.0, 2.0},
                                       threeWaypoints());
   const std::string plan = writer.planJson();
   EXPECT_NE(plan.find("\"fileType\": \"Plan\""), std::string::npos);

@@ -5,5 +5,6 @@ kc_add_gtest(test_trajectory
   test/trajectory/segment_path_builder_test.cpp
   test/trajectory/trajectory_generator_test.cpp
   test/trajectory/trajectory_sampler_test.cpp
+  test/trajectory/trajectory_thinning_test.cpp
   test/trajectory/trajectory_timing_test.cpp
   LIBRARIES kc_parameters kc_trajectory)

@@ -41,8 +41,8 @@ constexpr double kClosestApproachCrossShare = 0.7;
 constexpr std::array<PlotColour, 5> kErrorColours{
     {{13, 8, 135}, {126, 3, 168}, {204, 71, 120}, {248, 149, 64}, {240, 249, 33}}};
 
-/// The heatmap image's longest side, pixels: larger grids are sampled down (nearest cell),
-/// which keeps memory bounded and is still finer than any plot box.
+/// The heatmap image's longest side, pixels: larger grids are sampled down in blocks, which
+/// keeps memory bounded and is still finer than any plot box.
 constexpr int kMaxHeatmapImageSide = 4096;
 /// The actual pose arrows' size as a share of the nominal heading arrows'.
 constexpr double kPoseArrowShare = 0.7;
@@ -295,37 +295,56 @@ std::uint32_t packedColour(const PlotColour& colour) {
          std::uint32_t{colour.blue};
 }
 
-/// The heatmap as an image, one pixel per cell (sampled down beyond
-/// kMaxHeatmapImageSide), top row = the grid's last row.
 struct SurfaceDeleter {
   void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
 };
 using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
 
-SurfacePtr heatmapImage(const Heatmap& heatmap) {
-  const int columns = std::min(heatmap.columns, kMaxHeatmapImageSide);
-  const int rows = std::min(heatmap.rows, kMaxHeatmapImageSide);
+/// The first of `count` grid lines that image line `line` of `lines` covers.
+std::size_t firstCovered(int line, int lines, int count) {
+  return static_cast<std::size_t>(line) * count / lines;
+}
+
+/// The heatmap as an image, top row = the grid's last row: one pixel per cell where cells
+/// are at least a plot pixel (at most kMaxHeatmapImageSide a side), else one pixel per
+/// block of the cells a plot pixel covers, showing the block's most common visit class
+/// (ties to the fewer visits), so that overlap bands narrower than a pixel do not alias
+/// into stripes on a lake's plot.
+SurfacePtr heatmapImage(const Heatmap& heatmap, double pixels_per_cell) {
+  const double shrink = std::min(1.0, pixels_per_cell);
+  const auto side = [&](int cells) {
+    return std::clamp(static_cast<int>(std::ceil(cells * shrink)), 1,
+                      std::min(cells, kMaxHeatmapImageSide));
+  };
+  const int columns = side(heatmap.columns);
+  const int rows = side(heatmap.rows);
   SurfacePtr image(cairo_image_surface_create(CAIRO_FORMAT_RGB24, columns, rows));
   if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS) {
     throw std::runtime_error("coverage plot: cannot allocate the heatmap image");
   }
   std::array<std::uint32_t, kVisitColours.size()> palette;
   for (std::size_t i = 0; i < palette.size(); ++i) palette[i] = packedColour(kVisitColours[i]);
-  std::vector<std::size_t> cell_columns(columns);
-  for (int c = 0; c < columns; ++c) {
-    cell_columns[c] = static_cast<std::size_t>(c) * heatmap.columns / columns;
-  }
+  const std::size_t last_class = palette.size() - 1;
   cairo_surface_flush(image.get());
   unsigned char* pixels = cairo_image_surface_get_data(image.get());
   const int stride = cairo_image_surface_get_stride(image.get());
-  const std::size_t last_class = palette.size() - 1;
   for (int r = 0; r < rows; ++r) {
-    const std::size_t grid_row =
-        heatmap.rows - 1 - static_cast<std::size_t>(r) * heatmap.rows / rows;
-    const std::uint16_t* visits = heatmap.visits.data() + grid_row * heatmap.columns;
+    // Image row r covers grid rows [low, high), counted from the top.
+    const std::size_t low = firstCovered(r, rows, heatmap.rows);
+    const std::size_t high = std::max(low + 1, firstCovered(r + 1, rows, heatmap.rows));
     auto* line = reinterpret_cast<std::uint32_t*>(pixels + static_cast<std::size_t>(r) * stride);
     for (int c = 0; c < columns; ++c) {
-      line[c] = palette[std::min<std::size_t>(visits[cell_columns[c]], last_class)];
+      const std::size_t left = firstCovered(c, columns, heatmap.columns);
+      const std::size_t right = std::max(left + 1, firstCovered(c + 1, columns, heatmap.columns));
+      std::array<std::size_t, kVisitColours.size()> counts{};
+      for (std::size_t from_top = low; from_top < high; ++from_top) {
+        const std::uint16_t* visits =
+            heatmap.visits.data() + (heatmap.rows - 1 - from_top) * heatmap.columns;
+        for (std::size_t k = left; k < right; ++k) {
+          ++counts[std::min<std::size_t>(visits[k], last_class)];
+        }
+      }
+      line[c] = palette[std::max_element(counts.begin(), counts.end()) - counts.begin()];
     }
   }
   cairo_surface_mark_dirty(image.get());
@@ -341,13 +360,13 @@ void drawAreas(cairo_t* cr, const CoveragePlotLayout& layout, const CoveragePlot
 
   if (data.heatmap) {
     const Heatmap& heatmap = *data.heatmap;
-    const SurfacePtr image = heatmapImage(heatmap);
+    const double pixels_per_cell = layout.pixels_per_metre * heatmap.cell_size;
+    const SurfacePtr image = heatmapImage(heatmap, pixels_per_cell);
     cairo_save(cr);
     areaPath(cr, layout, data.free_area);
     cairo_clip(cr);
     const Point2 top_left =
         layout.toPixel(heatmap.origin + Point2(0.0, heatmap.rows * heatmap.cell_size));
-    const double pixels_per_cell = layout.pixels_per_metre * heatmap.cell_size;
     cairo_translate(cr, top_left.x(), top_left.y());
     cairo_scale(cr, pixels_per_cell * heatmap.columns / cairo_image_surface_get_width(image.get()),
                 pixels_per_cell * heatmap.rows / cairo_image_surface_get_height(image.get()));

@@ -8,5 +8,6 @@ kc_add_stage_library(kc_trajectory
     trajectory_generation_tools/trajectory/segment_path_builder.cpp
     trajectory_generation_tools/trajectory/trajectory_generator.cpp
     trajectory_generation_tools/trajectory/trajectory_sampler.cpp
+    trajectory_generation_tools/trajectory/trajectory_thinning.cpp
     trajectory_generation_tools/trajectory/trajectory_timing.cpp
   DEPENDS kc_smoothing kc_path kc_geometry)
