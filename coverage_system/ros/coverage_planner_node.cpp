@@ -10,6 +10,7 @@
 
 #include "coverage_system/mission/mission_file_writer.h"
 #include "coverage_system/mission/mission_planner.h"
+#include "coverage_system/ros/marker_scale.h"
 #include "coverage_system/ros/message_conversion.h"
 #include "coverage_system/ros/plan_markers.h"
 #include "coverage_system/ros/ros_parameter_reader.h"
@@ -180,8 +181,10 @@ bool CoveragePlannerNode::plan(std::string& message) {
     header.frame_id = mission.frame_id;
     header.stamp = ros::Time::now();
     waypoint_publisher_.publish(toPoseArray(planned.plan.waypoints, header));
-    marker_publisher_.publish(
-        planMarkers(planned.free_area, planned.plan, mission.start, mission.goal, header));
+    const visualization_msgs::MarkerArray markers =
+        planMarkers(planned.free_area, planned.plan, mission.start, mission.goal, header);
+    marker_publisher_.publish(markers);
+    ROS_INFO("coverage_planner: rviz: %zu marker points", MarkerScale::pointCount(markers));
     std::ostringstream summary;
     summary << planned.plan.waypoints.size() << " waypoints, " << planned.plan.cells.size()
             << " cells, " << planned.plan.path_length_m << " m, time cost "

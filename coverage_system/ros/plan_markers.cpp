@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "coverage_system/ros/marker_scale.h"
 #include "coverage_system/ros/message_conversion.h"
 
 namespace kinematic_coverage::nodes {
@@ -37,26 +38,31 @@ visualization_msgs::Marker baseMarker(const std::string& ns, int id, int type,
   return marker;
 }
 
-/// The hull (dark) and holes (grey) of the polygon, namespace `polygon`.
+/// The hull (dark) and holes (grey) of the polygon, namespace `polygon`, lines `width` wide
+/// through every `stride`-th vertex.
 void appendPolygon(const core::PolygonWithHoles& polygon, const std_msgs::Header& header,
-                   visualization_msgs::MarkerArray* markers) {
-  markers->markers.push_back(ringMarker(polygon.hull, "polygon", 0, header, 0.1f, 0.1f, 0.1f, 0.1));
+                   double width, std::size_t stride, visualization_msgs::MarkerArray* markers) {
+  markers->markers.push_back(
+      ringMarker(polygon.hull, "polygon", 0, header, 0.1f, 0.1f, 0.1f, width, stride));
   int id = 1;
   for (const core::Ring& hole : polygon.holes) {
-    markers->markers.push_back(ringMarker(hole, "polygon", id++, header, 0.4f, 0.4f, 0.4f, 0.1));
+    markers->markers.push_back(
+        ringMarker(hole, "polygon", id++, header, 0.4f, 0.4f, 0.4f, width, stride));
   }
 }
 
-visualization_msgs::Marker startMarker(const core::Point2& start, const std_msgs::Header& header) {
+visualization_msgs::Marker startMarker(const core::Point2& start, const std_msgs::Header& header,
+                                       double size = 0.6) {
   visualization_msgs::Marker marker = baseMarker(
-      "start_goal", 0, visualization_msgs::Marker::SPHERE, header, 0.1f, 0.7f, 0.2f, 0.6);
+      "start_goal", 0, visualization_msgs::Marker::SPHERE, header, 0.1f, 0.7f, 0.2f, size);
   marker.pose.position = point(start);
   return marker;
 }
 
-visualization_msgs::Marker goalMarker(const core::Point2& goal, const std_msgs::Header& header) {
+visualization_msgs::Marker goalMarker(const core::Point2& goal, const std_msgs::Header& header,
+                                      double size = 0.6) {
   visualization_msgs::Marker marker =
-      baseMarker("start_goal", 1, visualization_msgs::Marker::CUBE, header, 0.5f, 0.2f, 0.6f, 0.6);
+      baseMarker("start_goal", 1, visualization_msgs::Marker::CUBE, header, 0.5f, 0.2f, 0.6f, size);
   marker.pose.position = point(goal);
   return marker;
 }
@@ -65,10 +71,12 @@ visualization_msgs::Marker goalMarker(const core::Point2& goal, const std_msgs::
 
 visualization_msgs::Marker ringMarker(const core::Ring& ring, const std::string& ns, int id,
                                       const std_msgs::Header& header, float red, float green,
-                                      float blue, double width) {
+                                      float blue, double width, std::size_t stride) {
   visualization_msgs::Marker marker =
       baseMarker(ns, id, visualization_msgs::Marker::LINE_STRIP, header, red, green, blue, width);
-  for (const core::Point2& p : ring) marker.points.push_back(point(p));
+  for (std::size_t i = 0; i < ring.size(); i += std::max<std::size_t>(1, stride)) {
+    marker.points.push_back(point(ring[i]));
+  }
   if (!ring.empty()) marker.points.push_back(point(ring.front()));
   return marker;
 }
@@ -89,19 +97,43 @@ struct MarkerColour {
   float blue = 0.0f;
 };
 
-/// The hulls and holes of `parts` as line strips of namespace `ns`, numbered from 0.
+/// The hulls and holes of `parts` as line strips of namespace `ns`, numbered from 0,
+/// through every `stride`-th vertex.
 void appendParts(const std::vector<core::PolygonWithHoles>& parts, const std::string& ns,
                  const std_msgs::Header& header, const MarkerColour& colour, double width,
-                 visualization_msgs::MarkerArray* markers) {
+                 std::size_t stride, visualization_msgs::MarkerArray* markers) {
   int id = 0;
   for (const core::PolygonWithHoles& part : parts) {
-    markers->markers.push_back(
-        ringMarker(part.hull, ns, id++, header, colour.red, colour.green, colour.blue, width));
+    markers->markers.push_back(ringMarker(part.hull, ns, id++, header, colour.red, colour.green,
+                                          colour.blue, width, stride));
     for (const core::Ring& hole : part.holes) {
       markers->markers.push_back(
-          ringMarker(hole, ns, id++, header, colour.red, colour.green, colour.blue, width));
+          ringMarker(hole, ns, id++, header, colour.red, colour.green, colour.blue, width, stride));
     }
   }
+}
+
+std::size_t vertexCount(const core::PolygonWithHoles& polygon) {
+  std::size_t count = polygon.hull.size();
+  for (const core::Ring& hole : polygon.holes) count += hole.size();
+  return count;
+}
+
+/// Every how many vertices the plan's rings (free area, offset parts, unreachable parts,
+/// cells) are drawn, so that with `other_points` they keep to MarkerScale::kPointBudget
+/// (at least kMinRingPoints for the rings).
+std::size_t ringStride(const core::PolygonWithHoles& free_area, const core::CoveragePlan& plan,
+                       std::size_t other_points) {
+  constexpr std::size_t kMinRingPoints = 2000;
+  std::size_t rings = vertexCount(free_area);
+  for (const auto* parts : {&plan.offset_parts, &plan.unreachable_parts}) {
+    for (const core::PolygonWithHoles& part : *parts) rings += vertexCount(part);
+  }
+  for (const core::Ring& cell : plan.cells) rings += cell.size();
+  const std::size_t budget = other_points + kMinRingPoints >= MarkerScale::kPointBudget
+                                 ? kMinRingPoints
+                                 : MarkerScale::kPointBudget - other_points;
+  return MarkerScale::stride(rings, budget);
 }
 
 }  // namespace
@@ -110,35 +142,50 @@ visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_a
                                             const core::CoveragePlan& plan,
                                             const core::Point2& start, const core::Point2& goal,
                                             const std_msgs::Header& header) {
+  const MarkerScale scale(free_area);
+  // Waypoint spheres at most a quarter of the budget; the path through every waypoint.
+  const std::size_t sphere_stride =
+      MarkerScale::stride(plan.waypoints.size(), MarkerScale::kPointBudget / 4);
+  std::size_t gap_points = 0;
+  for (const core::OffsetGap& gap : plan.gaps) gap_points += gap.path.size();
+  const std::size_t stride =
+      ringStride(free_area, plan,
+                 plan.waypoints.size() + plan.waypoints.size() / sphere_stride + gap_points + 2);
   visualization_msgs::MarkerArray markers;
   markers.markers.push_back(deleteAllMarker(header));
-  appendPolygon(free_area, header, &markers);
-  appendParts(plan.offset_parts, "offset_free_area", header, {0.6f, 0.6f, 0.6f}, 0.04, &markers);
-  appendParts(plan.unreachable_parts, "unreachable_parts", header, {0.8f, 0.0f, 0.45f}, 0.06,
-              &markers);
+  appendPolygon(free_area, header, scale.size(0.1), stride, &markers);
+  appendParts(plan.offset_parts, "offset_free_area", header, {0.6f, 0.6f, 0.6f}, scale.size(0.04),
+              stride, &markers);
+  appendParts(plan.unreachable_parts, "unreachable_parts", header, {0.8f, 0.0f, 0.45f},
+              scale.size(0.06), stride, &markers);
   int id = 0;
   for (const core::OffsetGap& gap : plan.gaps) {
-    visualization_msgs::Marker line = baseMarker(
-        "gaps", id++, visualization_msgs::Marker::LINE_STRIP, header, 1.0f, 0.2f, 0.6f, 0.1);
+    visualization_msgs::Marker line =
+        baseMarker("gaps", id++, visualization_msgs::Marker::LINE_STRIP, header, 1.0f, 0.2f, 0.6f,
+                   scale.size(0.1));
     for (const core::Point2& p : gap.path) line.points.push_back(point(p));
     markers.markers.push_back(line);
   }
   id = 0;
   for (const core::Ring& cell : plan.cells) {
-    markers.markers.push_back(ringMarker(cell, "cells", id++, header, 0.2f, 0.5f, 0.9f, 0.05));
+    markers.markers.push_back(
+        ringMarker(cell, "cells", id++, header, 0.2f, 0.5f, 0.9f, scale.size(0.05), stride));
   }
-  visualization_msgs::Marker path = baseMarker(
-      "waypoint_path", 0, visualization_msgs::Marker::LINE_STRIP, header, 0.95f, 0.45f, 0.1f, 0.08);
-  visualization_msgs::Marker waypoints = baseMarker(
-      "waypoints", 0, visualization_msgs::Marker::SPHERE_LIST, header, 0.95f, 0.45f, 0.1f, 0.25);
-  for (const core::Pose2& pose : plan.waypoints) {
-    path.points.push_back(point(pose.position(), 0.01));
-    waypoints.points.push_back(point(pose.position(), 0.01));
+  visualization_msgs::Marker path =
+      baseMarker("waypoint_path", 0, visualization_msgs::Marker::LINE_STRIP, header, 0.95f, 0.45f,
+                 0.1f, scale.size(0.08));
+  visualization_msgs::Marker waypoints =
+      baseMarker("waypoints", 0, visualization_msgs::Marker::SPHERE_LIST, header, 0.95f, 0.45f,
+                 0.1f, scale.size(0.25));
+  for (std::size_t i = 0; i < plan.waypoints.size(); ++i) {
+    path.points.push_back(point(plan.waypoints[i].position(), 0.01));
+    if (i % sphere_stride == 0)
+      waypoints.points.push_back(point(plan.waypoints[i].position(), 0.01));
   }
   markers.markers.push_back(path);
   markers.markers.push_back(waypoints);
-  markers.markers.push_back(startMarker(start, header));
-  markers.markers.push_back(goalMarker(goal, header));
+  markers.markers.push_back(startMarker(start, header, scale.size(0.6)));
+  markers.markers.push_back(goalMarker(goal, header, scale.size(0.6)));
   return markers;
 }
 
@@ -158,7 +205,10 @@ visualization_msgs::MarkerArray inputMarkers(
     for (const core::Ring& hole : rings.holes) {
       drawable = drawable && std::all_of(hole.begin(), hole.end(), finite);
     }
-    if (drawable) appendPolygon(rings, polygon->header, &markers);
+    const std::size_t stride = MarkerScale::stride(vertexCount(rings), MarkerScale::kPointBudget);
+    if (drawable) {
+      appendPolygon(rings, polygon->header, MarkerScale(rings).size(0.1), stride, &markers);
+    }
   }
   const auto position = [](const geometry_msgs::PointStamped& p) {
     return core::Point2(p.point.x, p.point.y);

@@ -15,6 +15,7 @@
 #include "coverage_system/parameters/stage_options.h"
 #include "coverage_system/planner/reachable_offset_parts.h"
 #include "coverage_system/ros/heatmap_grid.h"
+#include "coverage_system/ros/marker_scale.h"
 #include "coverage_system/ros/message_conversion.h"
 #include "coverage_system/ros/ros_parameter_reader.h"
 #include "coverage_system/ros/trajectory_markers.h"
@@ -23,10 +24,20 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "trajectory_generation_tools/trajectory/trajectory_thinning.h"
 
 namespace kinematic_coverage::nodes {
 
 using core::secondsSince;
+
+namespace {
+
+/// m on a map of MarkerScale::kReferenceExtent: the spacing of the poses of the displayed
+/// path (`~path`), and the closest approach's sphere.
+constexpr double kPathDisplaySpacing = 0.05;
+constexpr double kClosestApproachSize = 0.6;
+
+}  // namespace
 
 SmoothTrajectoryGeneratorNode::SmoothTrajectoryGeneratorNode(const ros::NodeHandle& node,
                                                              const ros::NodeHandle& private_node)
@@ -125,16 +136,27 @@ void SmoothTrajectoryGeneratorNode::generate() {
     header.frame_id = polygon_frame_;
     header.stamp = ros::Time::now();
     trajectory_publisher_.publish(toPoseArray(trajectory.poses, header));
-    path_publisher_.publish(toPath(trajectory.poses, header));
+    // rviz's Path display draws every pose: a pose per kPathDisplayShare of the map's extent
+    // (and every primitive's ends) draws the same picture at a lake's scale.
+    const MarkerScale scale(*free_area_);
+    const std::vector<core::TrajectoryPose> shown =
+        core::TrajectoryThinning(scale.size(kPathDisplaySpacing)).apply(trajectory.poses);
+    path_publisher_.publish(toPath(shown, header));
     visualization_msgs::MarkerArray markers = trajectoryMarkers(trajectory.path, header);
     if (!core::keepsClearance(trajectory.min_obstacle_clearance_m, parameters.wall_distance)) {
-      const visualization_msgs::MarkerArray closest =
-          closestApproachMarkers(trajectory.closest_approach, trajectory.min_obstacle_clearance_m,
-                                 parameters.wall_distance, header);
+      const visualization_msgs::MarkerArray closest = closestApproachMarkers(
+          trajectory.closest_approach, trajectory.min_obstacle_clearance_m,
+          parameters.wall_distance, header, scale.size(kClosestApproachSize));
       markers.markers.insert(markers.markers.end(), closest.markers.begin(), closest.markers.end());
     }
     marker_publisher_.publish(markers);
-    heatmap_publisher_.publish(heatmapGrid(*free_area_, measured.poses, parameters, header));
+    const nav_msgs::OccupancyGrid heatmap =
+        heatmapGrid(*free_area_, measured.poses, parameters, header);
+    heatmap_publisher_.publish(heatmap);
+    ROS_INFO(
+        "smooth_trajectory_generator: rviz: %zu marker points, path of %zu poses, heatmap "
+        "of %u x %u cells",
+        MarkerScale::pointCount(markers), shown.size(), heatmap.info.width, heatmap.info.height);
     const core::SmoothingStatistics& turns = trajectory.statistics;
     std::ostringstream summary;
     summary << turns.turns_smoothed << " of " << turns.turns_total << " turns smoothed (inner "

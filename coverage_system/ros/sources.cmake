@@ -5,6 +5,7 @@
 add_library(kc_ros_bridge STATIC
   coverage_system/ros/coverage_planner_node.cpp
   coverage_system/ros/heatmap_grid.cpp
+  coverage_system/ros/marker_scale.cpp
   coverage_system/ros/message_conversion.cpp
   coverage_system/ros/node_status.cpp
   coverage_system/ros/plan_markers.cpp

@@ -1,6 +1,10 @@
 # rostests of the nodes (catkin builds only): whole flows against running nodes.
 if(catkin_FOUND)
   find_package(rostest REQUIRED)
+  # The markers and heatmap grid the nodes publish for rviz, at lake scale (no running nodes).
+  kc_add_gtest(test_ros_markers test/ros/marker_budget_test.cpp
+    test/support/hard_map_generator.cpp test/support/survey_lake_generator.cpp
+    LIBRARIES kc_ros_bridge kc_mission)
   add_rostest(test/ros/pipeline_lake.test DEPENDENCIES ${KC_NODE_TARGETS})
   add_rostest(test/ros/planner_requests.test DEPENDENCIES ${KC_NODE_TARGETS})
   # Load: 100 polygons a second for 10 s to coverage_planner with plan_on_receive.

@@ -140,5 +140,32 @@ class AutopilotMissionFilesTest(unittest.TestCase):
         self.assertIn('WPNAV_RADIUS to 150 cm', self.log)
 
 
+class UnsmoothedMissionFilesTest(unittest.TestCase):
+    """Without smoothing the vehicle drives the planner's waypoint path itself: every waypoint
+    of waypoints.geojson is among the mission's waypoints, in order, within 1e-7 degrees
+    (a smoothed plan's turns leave its corners, so there the trajectory test above holds)."""
+
+    def test_every_planned_waypoint_is_a_mission_waypoint_in_order(self):
+        directory = tempfile.mkdtemp()
+        result = subprocess.run(
+            [sys.argv[1], 'plan', LAKE, '--out', directory, '--set', 'smoothing=false', '--set',
+             f'mission_depth={DEPTH}'], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        with open(os.path.join(directory, 'mission.plan'), encoding='utf-8') as stream:
+            items = json.load(stream)['mission']['items']
+        with open(os.path.join(directory, 'waypoints.geojson'), encoding='utf-8') as stream:
+            planned = json.load(stream)['features'][0]['geometry']['coordinates']
+        mission = [[item['params'][5], item['params'][4]] for item in items
+                   if item['command'] == NAV_WAYPOINT]
+        self.assertGreater(len(planned), 10)
+        found = 0
+        for waypoint in planned:
+            while found < len(mission) and not (
+                    abs(mission[found][0] - waypoint[0]) <= DEGREE_TOLERANCE * 1.0001 and
+                    abs(mission[found][1] - waypoint[1]) <= DEGREE_TOLERANCE * 1.0001):
+                found += 1
+            self.assertLess(found, len(mission), f'planned waypoint {waypoint} not in order')
+
+
 if __name__ == '__main__':
     unittest.main(argv=sys.argv[:1])
