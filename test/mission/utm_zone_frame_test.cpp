@@ -8,20 +8,12 @@
 #include <string>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "test/support/invalid_input_message.h"
 
 namespace kinematic_coverage::core {
 namespace {
 
-/// The message of the InvalidInputError that `action` throws; empty when none.
-template <typename Action>
-std::string errorOf(Action action) {
-  try {
-    action();
-  } catch (const InvalidInputError& error) {
-    return error.what();
-  }
-  return "";
-}
+using testing::invalidInputMessage;
 
 TEST(UtmZoneFrame, TheDatumIsTheOriginOfItsStandardZone) {
   const UtmZoneFrame zurich({47.3769, 8.5417});
@@ -84,13 +76,15 @@ TEST(UtmZoneFrame, RefusesPointsWhereThePointScaleIsOffByMoreThanAThousandth) {
   const UtmZoneFrame frame({47.0, 9.0});  // zone 32's central meridian
   // 227 km east of it the point scale is about 1.0002; 380 km east about 1.0014.
   EXPECT_NO_THROW(frame.toLocal({47.0, 12.0}, "vertex"));
-  const std::string error = errorOf([&] { frame.toLocal({47.0, 14.0}, "hull vertex 3"); });
+  const std::string error = invalidInputMessage([&] {
+    frame.toLocal({47.0, 14.0}, "hull vertex 3");
+  });
   EXPECT_NE(error.find("hull vertex 3 lies 380 km east of UTM zone 32N's central meridian"),
             std::string::npos)
       << error;
   EXPECT_NE(error.find("point scale is 1.001"), std::string::npos) << error;
   EXPECT_THROW(frame.toLocal({47.0, 191.0}, "vertex"), InvalidInputError);
-  const std::string polar = errorOf([] { UtmZoneFrame({85.0, 10.0}); });
+  const std::string polar = invalidInputMessage([] { UtmZoneFrame({85.0, 10.0}); });
   EXPECT_NE(polar.find("outside the latitudes UTM covers"), std::string::npos) << polar;
   EXPECT_NE(polar.find("use projection local"), std::string::npos) << polar;
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "test/support/invalid_input_message.h"
 #include "test/support/random_polygons.h"
 
 namespace kinematic_coverage::core {
@@ -17,19 +18,10 @@ Ring square(double x0, double y0, double size) {
   return {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
 }
 
-/// The message of the InvalidInputError that `action` throws ("" when none).
-template <typename Action>
-std::string errorOf(Action action) {
-  try {
-    action();
-  } catch (const InvalidInputError& error) {
-    return error.what();
-  }
-  return "";
-}
+using testing::invalidInputMessage;
 
 std::string validationError(const PolygonWithHoles& polygon) {
-  return errorOf([&] { PolygonValidator().validate(polygon); });
+  return invalidInputMessage([&] { PolygonValidator().validate(polygon); });
 }
 
 TEST(PolygonValidator, AcceptsValidPolygonsInEitherOrientation) {
@@ -145,18 +137,24 @@ TEST(PolygonValidator, EnforcesTheSizeLimits) {
 TEST(PolygonValidator, ChecksStartAndGoal) {
   const PolygonWithHoles polygon{square(0, 0, 30), {square(1, 1, 2), square(8, 8, 4)}};
   const PolygonValidator validator;
-  EXPECT_EQ(errorOf([&] {
+  EXPECT_EQ(invalidInputMessage([&] {
               validator.validateEndpoint("start", {10, 10}, polygon);
             }),
             "start (10, 10) lies inside hole 1");
-  EXPECT_EQ(errorOf([&] {
+  EXPECT_EQ(invalidInputMessage([&] {
               validator.validateEndpoint("goal", {2.5, 1.5}, polygon);
             }),
             "goal (2.5, 1.5) lies inside hole 0");
-  EXPECT_EQ(errorOf([&] { validator.validateEndpoint("start", {8, 10}, polygon); }), "");
-  EXPECT_EQ(errorOf([&] { validator.validateEndpoint("start", {-5, 40}, polygon); }), "");
-  EXPECT_EQ(errorOf([&] { validator.validateEndpoint("goal", {5, 5}, polygon); }), "");
-  EXPECT_EQ(errorOf([&] {
+  EXPECT_EQ(invalidInputMessage([&] {
+              validator.validateEndpoint("start", {8, 10}, polygon);
+            }),
+            "");
+  EXPECT_EQ(invalidInputMessage([&] {
+              validator.validateEndpoint("start", {-5, 40}, polygon);
+            }),
+            "");
+  EXPECT_EQ(invalidInputMessage([&] { validator.validateEndpoint("goal", {5, 5}, polygon); }), "");
+  EXPECT_EQ(invalidInputMessage([&] {
               validator.validateEndpoint("goal", {std::nan(""), 5}, polygon);
             }),
             "goal (nan, 5): the x coordinate nan is not finite");
