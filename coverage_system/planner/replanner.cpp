@@ -52,6 +52,22 @@ Point2 replanStart(const PolygonWithHoles& free_area, const Point2& last, double
   return last;
 }
 
+/// The warning that names every part of the remaining area too small to replan.
+std::string droppedPartsWarning(const RemainingArea& remaining, double min_area) {
+  std::ostringstream out;
+  out.precision(4);
+  double total = 0.0;
+  for (const DroppedPart& part : remaining.dropped) total += part.area_m2;
+  out << remaining.dropped.size() << " parts of the remaining area (" << total
+      << " m^2 together) are smaller than replanning_min_area (" << min_area
+      << " m^2) and are not replanned:";
+  for (std::size_t i = 0; i < remaining.dropped.size(); ++i) {
+    out << (i ? "," : "") << " " << remaining.dropped[i].area_m2 << " m^2 around "
+        << formatPoint(remaining.dropped[i].centroid);
+  }
+  return out.str();
+}
+
 }  // namespace
 
 Replanner::Replanner(PlanningOptions planning, RemainingAreaOptions remaining)
@@ -129,8 +145,11 @@ ReplannedMission Replanner::replanFrom(
     summary << nameOf(remaining_options_.method, kReplanningMethods) << ": "
             << remaining.seen_area_m2 << " m^2 seen, " << remaining.remaining_area_m2
             << " m^2 left, " << remaining.parts.size() << " parts kept (" << remaining.kept_area_m2
-            << " m^2), " << remaining.dropped_parts << " small parts dropped";
+            << " m^2), " << remaining.dropped.size() << " small parts dropped";
     stage("remaining", t, summary.str());
+    if (!remaining.dropped.empty()) {
+      result.warnings.push_back(droppedPartsWarning(remaining, remaining_options_.min_area));
+    }
   }
 
   result.plan =

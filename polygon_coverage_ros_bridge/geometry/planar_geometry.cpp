@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace kinematic_coverage::core {
 
@@ -19,6 +20,42 @@ double area(const PolygonWithHoles& polygon) {
   double result = std::abs(signedArea(polygon.hull));
   for (const Ring& hole : polygon.holes) result -= std::abs(signedArea(hole));
   return result;
+}
+
+namespace {
+
+/// Twice the ring's area times its centroid (counter-clockwise positive), and twice its
+/// area, about `origin` (for precision far from the frame's origin).
+std::pair<Point2, double> weightedCentroid(const Ring& ring, const Point2& origin) {
+  Point2 moment = Point2::Zero();
+  double twice_area = 0.0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Point2 a = ring[i] - origin;
+    const Point2 b = ring[(i + 1) % n] - origin;
+    const double term = a.x() * b.y() - b.x() * a.y();
+    moment += term * (a + b) / 3.0;
+    twice_area += term;
+  }
+  return {moment, twice_area};
+}
+
+}  // namespace
+
+Point2 centroid(const PolygonWithHoles& polygon) {
+  if (polygon.hull.empty()) return Point2::Zero();
+  const Point2 origin = polygon.hull.front();
+  auto [moment, twice_area] = weightedCentroid(polygon.hull, origin);
+  const double sign = twice_area < 0.0 ? -1.0 : 1.0;
+  moment *= sign;
+  twice_area *= sign;
+  for (const Ring& hole : polygon.holes) {
+    const auto [hole_moment, hole_twice_area] = weightedCentroid(hole, origin);
+    const double hole_sign = hole_twice_area < 0.0 ? -1.0 : 1.0;
+    moment -= hole_sign * hole_moment;
+    twice_area -= hole_sign * hole_twice_area;
+  }
+  if (!(twice_area > 0.0)) return origin;
+  return origin + moment / twice_area;
 }
 
 double cross(const Point2& a, const Point2& b, const Point2& c) {

@@ -25,6 +25,9 @@ double signedArea(const Ring& ring);
 /// Area of the hull minus the areas of the holes.
 double area(const PolygonWithHoles& polygon);
 
+/// The centroid of the area (hull less holes); the hull's first vertex when it has no area.
+Point2 centroid(const PolygonWithHoles& polygon);
+
 /// Sum of the areas of disjoint polygons (the parts of an offset free area), m^2.
 double area(const std::vector<PolygonWithHoles>& parts);
 

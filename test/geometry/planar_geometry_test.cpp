@@ -17,6 +17,19 @@ TEST(PlanarGeometry, AreaOfSquareWithHole) {
   EXPECT_LT(signedArea(squareWithHole().holes[0]), 0.0);
 }
 
+TEST(PlanarGeometry, CentroidOfAreasWithHolesAndEitherOrientation) {
+  PolygonWithHoles square{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}};
+  EXPECT_NEAR((centroid(square) - Point2(2, 2)).norm(), 0.0, 1e-12);
+  // Clockwise, far from the origin: the same centroid.
+  PolygonWithHoles far{{{1e6, 1e6}, {1e6, 1e6 + 4}, {1e6 + 4, 1e6 + 4}, {1e6 + 4, 1e6}}, {}};
+  EXPECT_NEAR((centroid(far) - Point2(1e6 + 2, 1e6 + 2)).norm(), 0.0, 1e-9);
+  // A 4 x 4 square less its right 2 x 4 half as a hole: the left half's centre (1, 2).
+  square.holes = {{{2, 0}, {2, 4}, {4, 4}, {4, 0}}};
+  EXPECT_NEAR((centroid(square) - Point2(1, 2)).norm(), 0.0, 1e-12);
+  // A degenerate hull: its first vertex.
+  EXPECT_EQ(centroid(PolygonWithHoles{{{3, 1}, {3, 1}, {3, 1}}, {}}), Point2(3, 1));
+}
+
 TEST(PlanarGeometry, LegHeadingPosesFaceAlongTheLegLeavingThem) {
   const std::vector<Pose2> poses = legHeadingPoses({{0, 0}, {1, 0}, {1, 2}, {-1, 2}});
   ASSERT_EQ(poses.size(), 4u);

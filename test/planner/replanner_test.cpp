@@ -171,6 +171,32 @@ TEST(Replanner, NothingLeftGoesToTheGoal) {
   EXPECT_TRUE(replanned.plan.cells.empty());
 }
 
+TEST(Replanner, PartsTooSmallToPlanAreNamedInAWarning) {
+  // Half the lake followed; a minimum area above the lake's leaves every part unplanned.
+  const testing::DriftScenario scenario = testing::lakeDriftScenario(0.5, {0.0, 0.0});
+  PlannerParameters parameters = scenario.mission.parameters;
+  parameters.replanning_min_area = 1000.0;
+  const ReplannedMission replanned =
+      Replanner(parameters).replan(scenario.updated, scenario.visited, {29, 29});
+  EXPECT_TRUE(replanned.remaining.parts.empty());
+  // Every part left unplanned is named in one warning: its area and where it lies.
+  ASSERT_FALSE(replanned.remaining.dropped.empty());
+  std::string warning;
+  for (const std::string& w : replanned.warnings) {
+    if (w.find("not replanned") != std::string::npos) warning = w;
+  }
+  ASSERT_FALSE(warning.empty());
+  EXPECT_EQ(warning.rfind(std::to_string(replanned.remaining.dropped.size()) + " parts", 0), 0u)
+      << warning;
+  EXPECT_NE(warning.find("smaller than replanning_min_area (1000 m^2)"), std::string::npos)
+      << warning;
+  std::size_t arounds = 0;
+  for (std::size_t at = warning.find(" around ("); at != std::string::npos;
+       at = warning.find(" around (", at + 1)) {
+    ++arounds;
+  }
+  EXPECT_EQ(arounds, replanned.remaining.dropped.size());
+}
 }  // namespace
 }  // namespace kinematic_coverage::core
 

@@ -57,6 +57,29 @@ TEST(RemainingArea, AStraightPassLeavesTheRestOfTheSquare) {
   EXPECT_NO_THROW(PolygonValidator().validate(remaining.parts[0]));
 }
 
+TEST(RemainingArea, PartsSmallerThanTheMinimumAreDroppedWithTheirAreaAndCentroid) {
+  PlannerParameters parameters = lineSensor();
+  parameters.replanning_min_area = 5.0;
+  // Passes along y = 1 and y = 3 over x in [0, 3] of a 4 m square: a 1 m x 4 m strip at
+  // x in [3, 4] stays unseen, smaller than 5 m^2.
+  std::vector<Pose2> visited = pass(1.0, 3.0);
+  const std::vector<Pose2> second = pass(3.0, 3.0);
+  visited.insert(visited.end(), second.rbegin(), second.rend());
+  const RemainingArea remaining =
+      RemainingAreaCalculator(remainingAreaOptionsOf(parameters)).compute(square(4), visited);
+  EXPECT_TRUE(remaining.parts.empty());
+  ASSERT_EQ(remaining.dropped.size(), 1u);
+  EXPECT_NEAR(remaining.dropped[0].area_m2, 4.0, 0.3);
+  EXPECT_NEAR(remaining.dropped[0].centroid.x(), 3.5, 0.1);
+  EXPECT_NEAR(remaining.dropped[0].centroid.y(), 2.0, 0.1);
+  // At a smaller minimum it is kept.
+  parameters.replanning_min_area = 1.0;
+  const RemainingArea kept =
+      RemainingAreaCalculator(remainingAreaOptionsOf(parameters)).compute(square(4), visited);
+  EXPECT_EQ(kept.parts.size(), 1u);
+  EXPECT_TRUE(kept.dropped.empty());
+}
+
 /// The thesis's slivers: passes that leave a strip narrower than the sliver width between
 /// them; the strip is opened away, the wide part stays.
 TEST(RemainingArea, SliversNarrowerThanTheFractionGo) {

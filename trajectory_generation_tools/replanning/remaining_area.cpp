@@ -139,7 +139,7 @@ RemainingArea RemainingAreaCalculator::fromSeen(const CoverageRaster& raster,
   removeDiagonalPinches(raster, opened);
   for (const PolygonWithHoles& part : traceMaskContours(raster, opened)) {
     if (area(part) < std::max(options_.min_area, raster.cellArea())) {
-      ++result.dropped_parts;
+      result.dropped.push_back({area(part), centroid(part)});
       continue;
     }
     PolygonWithHoles simplified = simplifyPolygon(

@@ -11,17 +11,23 @@
 
 namespace kinematic_coverage::core {
 
+/// A part of the remaining area too small to plan (under replanning_min_area).
+struct DroppedPart {
+  double area_m2 = 0.0;
+  Point2 centroid = Point2::Zero();
+};
+
 /// The area still to see after a robot visited some poses, made fit to plan.
 struct RemainingArea {
   /// Valid polygons with holes (CCW hulls, CW holes, simple rings, at most
   /// replanning_simplify_tolerance from the exact remaining area's boundary).
   std::vector<PolygonWithHoles> parts;
-  double free_area_m2 = 0.0;       ///< the updated free area
-  double seen_area_m2 = 0.0;       ///< of it, seen by the visited poses (the method's seen area)
-  double remaining_area_m2 = 0.0;  ///< free minus seen, before clean-up
-  double kept_area_m2 = 0.0;       ///< the parts' area after clean-up
-  int dropped_parts = 0;           ///< parts smaller than replanning_min_area
-  double cell_size_m = 0.0;        ///< raster the regions were computed on
+  double free_area_m2 = 0.0;         ///< the updated free area
+  double seen_area_m2 = 0.0;         ///< of it, seen by the visited poses (the method's seen area)
+  double remaining_area_m2 = 0.0;    ///< free minus seen, before clean-up
+  double kept_area_m2 = 0.0;         ///< the parts' area after clean-up
+  std::vector<DroppedPart> dropped;  ///< parts smaller than replanning_min_area, not planned
+  double cell_size_m = 0.0;          ///< raster the regions were computed on
 };
 
 /// The remaining area of the thesis's section 3.4: the updated free area minus what the
