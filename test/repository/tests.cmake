@@ -36,6 +36,6 @@ add_test(NAME parameter_literals COMMAND ${Python3_EXECUTABLE}
 # fall (scripts/prose_figures.py; the limit is today's count, lowered as figures move to
 # checked tables or markers).
 add_test(NAME prose_figures COMMAND ${Python3_EXECUTABLE}
-  ${PROJECT_SOURCE_DIR}/scripts/prose_figures.py --limit 375)
+  ${PROJECT_SOURCE_DIR}/scripts/prose_figures.py --limit 374)
 add_test(NAME prose_figures_checker COMMAND ${Python3_EXECUTABLE}
   ${PROJECT_SOURCE_DIR}/test/repository/prose_figures_test.py)
