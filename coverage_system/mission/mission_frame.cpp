@@ -29,12 +29,7 @@ const GeoPoint& MissionFrame::datum() const {
   return std::visit([](const auto& frame) -> const GeoPoint& { return frame.datum(); }, frame_);
 }
 
-std::string MissionFrame::projectionName() const {
-  for (const auto& [name, projection] : kMapProjections) {
-    if (projection == projection_) return name;
-  }
-  return "";
-}
+std::string MissionFrame::projectionName() const { return nameOf(projection_, kMapProjections); }
 
 std::optional<std::string> MissionFrame::utmZone() const {
   if (const auto* utm = std::get_if<UtmZoneFrame>(&frame_)) return utm->zoneName();
