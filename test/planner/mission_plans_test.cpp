@@ -10,7 +10,10 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
 #include "test/planner/plan_properties.h"
+#include "trajectory_generation_tools/smoothing/global_path_smoother.h"
+#include "trajectory_generation_tools/smoothing/path_smoother.h"
 #include "trajectory_generation_tools/trajectory/trajectory_generator.h"
+#include "trajectory_generation_tools/trajectory/trajectory_timing.h"
 
 namespace kinematic_coverage::core {
 namespace {
@@ -107,7 +110,7 @@ TEST(MissionPlans, Lake7x5HasAtLeastFiveSweeps) {
   EXPECT_GE(trajectory.statistics.outer_tangent, 1);
 }
 
-TEST(MissionPlans, GlobalSmoothingIsNeverSlowerThanLocal) {
+TEST(MissionPlans, GlobalSmoothingIsNoSlowerThanAlgorithm1) {
   // The global strategy, on the shipped missions with their parameters; with a variable radius the
   // curvature stays at most 1 / min_turning_radius.
   for (const std::string name : {"lake_30x30.yaml", "lake_7_5.yaml", "parallelogram_60.yaml"}) {
@@ -115,16 +118,28 @@ TEST(MissionPlans, GlobalSmoothingIsNeverSlowerThanLocal) {
     const Mission mission =
         MissionFileReader().read(std::string(KC_SOURCE_DIR) + "/config/missions/" + name);
     const PlannedMission planned = planMission(mission);
-    PlannerParameters local = mission.parameters;
-    local.smoothing_strategy = "local";
     PlannerParameters global = mission.parameters;
     global.smoothing_strategy = "global";
-    const GeneratedTrajectory by_local = TrajectoryGenerator(trajectoryOptionsOf(local))
-                                             .generate(planned.plan.waypoints, planned.free_area);
     const GeneratedTrajectory by_global = TrajectoryGenerator(trajectoryOptionsOf(global))
                                               .generate(planned.plan.waypoints, planned.free_area);
     expectValidTrajectory(mission, planned, by_global);
-    EXPECT_LE(by_global.traversal_time_s, by_local.traversal_time_s + 1e-9);
+    // The global programme alone (not the generator, which falls back to Algorithm 1's path
+    // where that is faster) against Algorithm 1, timed exactly: the programme's cost is
+    // exact but where a leg piece is too short for the speed change between its
+    // neighbours, so it may be slower by at most kProgrammeTimeSlack.
+    constexpr double kProgrammeTimeSlack = 1e-3;
+    const TrajectoryOptions options = trajectoryOptionsOf(global);
+    const TrajectoryTiming timing(options.vehicle());
+    const double algorithm_1 = timing.traversalTime(
+        PathSmoother(planned.free_area, options.vehicle().turning_radius, options.global.clearance)
+            .smooth(planned.plan.waypoints)
+            .primitives);
+    const double programme =
+        timing.traversalTime(GlobalPathSmoother(planned.free_area, options.global)
+                                 .smooth(planned.plan.waypoints)
+                                 .primitives);
+    EXPECT_LE(programme, (1.0 + kProgrammeTimeSlack) * algorithm_1);
+    EXPECT_LE(by_global.traversal_time_s, algorithm_1 + 1e-9);
 
     PlannerParameters variable = global;
     variable.min_turning_radius = 0.5 * global.turning_radius;
