@@ -39,3 +39,6 @@ add_test(NAME prose_figures COMMAND ${Python3_EXECUTABLE}
   ${PROJECT_SOURCE_DIR}/scripts/prose_figures.py --limit 374)
 add_test(NAME prose_figures_checker COMMAND ${Python3_EXECUTABLE}
   ${PROJECT_SOURCE_DIR}/test/repository/prose_figures_test.py)
+# The GUI tests (test/ros) start rviz again only after its known start-up abort.
+add_test(NAME rviz_start_abort COMMAND ${Python3_EXECUTABLE}
+  ${PROJECT_SOURCE_DIR}/test/ros/rviz_start_abort_test.py)

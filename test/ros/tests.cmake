@@ -51,7 +51,3 @@ ${PROJECT_SOURCE_DIR}/test/ros/${name}.test"
     COMMAND ${PROJECT_SOURCE_DIR}/test/ros/install_space_test.sh ${CMAKE_BINARY_DIR})
   set_tests_properties(install_space PROPERTIES TIMEOUT 180)
 endif()
-# The GUI tests start rviz again only after its known start-up abort.
-find_package(Python3 REQUIRED COMPONENTS Interpreter)
-add_test(NAME rviz_start_abort COMMAND ${Python3_EXECUTABLE}
-  ${PROJECT_SOURCE_DIR}/test/ros/rviz_start_abort_test.py)
