@@ -29,6 +29,7 @@
 #include "coverage_system/mission/mission_frame.h"
 #include "coverage_system/tool/geojson_writer.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
+#include "polygon_coverage_ros_bridge/geometry/boundary_simplification.h"
 #include "test/support/survey_lake_generator.h"
 
 namespace {
@@ -77,8 +78,8 @@ void planLake(double area_km2, std::uint64_t seed, const GeoPoint& datum, const 
               const std::string& out, const std::string& plots, double timeout_s) {
   const Mission mission =
       kinematic_coverage::core::testing::SurveyLakeGenerator().generate(seed, area_km2);
-  std::size_t vertices = mission.polygon.hull.size();
-  for (const auto& hole : mission.polygon.holes) vertices += hole.size();
+  const std::size_t vertices =
+      kinematic_coverage::core::BoundarySimplification::vertexCount(mission.polygon);
   const std::string name = "lake_" + kinematic_coverage::core::formatNumber(area_km2) + "km2";
   const std::string path = out + "/" + name + ".geojson";
   std::ofstream(path) << kinematic_coverage::core::GeoJsonWriter(

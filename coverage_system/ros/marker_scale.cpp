@@ -4,11 +4,11 @@
 
 namespace kinematic_coverage::nodes {
 
-MarkerScale::MarkerScale(const core::PolygonWithHoles& area) {
-  if (area.hull.empty()) return;
-  core::Point2 low = area.hull.front();
+MarkerScale::MarkerScale(const core::Ring& outline) {
+  if (outline.empty()) return;
+  core::Point2 low = outline.front();
   core::Point2 high = low;
-  for (const core::Point2& p : area.hull) {
+  for (const core::Point2& p : outline) {
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }

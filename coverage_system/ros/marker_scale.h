@@ -20,8 +20,9 @@ class MarkerScale {
   /// Maps up to this extent (m) keep the base sizes.
   static constexpr double kReferenceExtent = 50.0;
 
-  /// The scale of a map whose area is `area` (its hull's larger side).
-  explicit MarkerScale(const core::PolygonWithHoles& area);
+  /// The scale of a map whose outline (an area's hull, a path's points) is `outline`: its
+  /// bounding box's larger side.
+  explicit MarkerScale(const core::Ring& outline);
 
   /// A size (line width, sphere diameter; m) of `base` on a map of kReferenceExtent.
   double size(double base) const { return base * factor_; }

@@ -6,6 +6,7 @@
 
 #include "coverage_system/ros/marker_scale.h"
 #include "coverage_system/ros/message_conversion.h"
+#include "polygon_coverage_ros_bridge/geometry/boundary_simplification.h"
 
 namespace kinematic_coverage::nodes {
 namespace {
@@ -113,21 +114,16 @@ void appendParts(const std::vector<core::PolygonWithHoles>& parts, const std::st
   }
 }
 
-std::size_t vertexCount(const core::PolygonWithHoles& polygon) {
-  std::size_t count = polygon.hull.size();
-  for (const core::Ring& hole : polygon.holes) count += hole.size();
-  return count;
-}
-
 /// Every how many vertices the plan's rings (free area, offset parts, unreachable parts,
 /// cells) are drawn, so that with `other_points` they keep to MarkerScale::kPointBudget
 /// (at least kMinRingPoints for the rings).
 std::size_t ringStride(const core::PolygonWithHoles& free_area, const core::CoveragePlan& plan,
                        std::size_t other_points) {
   constexpr std::size_t kMinRingPoints = 2000;
-  std::size_t rings = vertexCount(free_area);
+  std::size_t rings = core::BoundarySimplification::vertexCount(free_area);
   for (const auto* parts : {&plan.offset_parts, &plan.unreachable_parts}) {
-    for (const core::PolygonWithHoles& part : *parts) rings += vertexCount(part);
+    for (const core::PolygonWithHoles& part : *parts)
+      rings += core::BoundarySimplification::vertexCount(part);
   }
   for (const core::Ring& cell : plan.cells) rings += cell.size();
   const std::size_t budget = other_points + kMinRingPoints >= MarkerScale::kPointBudget
@@ -142,7 +138,7 @@ visualization_msgs::MarkerArray planMarkers(const core::PolygonWithHoles& free_a
                                             const core::CoveragePlan& plan,
                                             const core::Point2& start, const core::Point2& goal,
                                             const std_msgs::Header& header) {
-  const MarkerScale scale(free_area);
+  const MarkerScale scale(free_area.hull);
   // Waypoint spheres at most a quarter of the budget; the path through every waypoint.
   const std::size_t sphere_stride =
       MarkerScale::stride(plan.waypoints.size(), MarkerScale::kPointBudget / 4);
@@ -205,9 +201,10 @@ visualization_msgs::MarkerArray inputMarkers(
     for (const core::Ring& hole : rings.holes) {
       drawable = drawable && std::all_of(hole.begin(), hole.end(), finite);
     }
-    const std::size_t stride = MarkerScale::stride(vertexCount(rings), MarkerScale::kPointBudget);
+    const std::size_t stride = MarkerScale::stride(core::BoundarySimplification::vertexCount(rings),
+                                                   MarkerScale::kPointBudget);
     if (drawable) {
-      appendPolygon(rings, polygon->header, MarkerScale(rings).size(0.1), stride, &markers);
+      appendPolygon(rings, polygon->header, MarkerScale(rings.hull).size(0.1), stride, &markers);
     }
   }
   const auto position = [](const geometry_msgs::PointStamped& p) {

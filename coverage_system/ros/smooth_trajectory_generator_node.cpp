@@ -138,7 +138,7 @@ void SmoothTrajectoryGeneratorNode::generate() {
     trajectory_publisher_.publish(toPoseArray(trajectory.poses, header));
     // rviz's Path display draws every pose: a pose per kPathDisplayShare of the map's extent
     // (and every primitive's ends) draws the same picture at a lake's scale.
-    const MarkerScale scale(*free_area_);
+    const MarkerScale scale(free_area_->hull);
     const std::vector<core::TrajectoryPose> shown =
         core::TrajectoryThinning(scale.size(kPathDisplaySpacing)).apply(trajectory.poses);
     path_publisher_.publish(toPath(shown, header));

@@ -43,23 +43,37 @@ visualization_msgs::Marker lineList(const std::string& ns, const std_msgs::Heade
   return marker;
 }
 
-/// The points a path is drawn through: every primitive's ends, arcs as chords of
-/// kArcDrawingStep, clothoids as their polylines.
+/// The points a primitive is drawn through, from its start to its end: a segment's ends, an
+/// arc's chords of at most kArcDrawingStep, a clothoid's polyline; a rotation's position.
+std::vector<core::Point2> drawnPoints(const core::PathPrimitive& primitive) {
+  switch (primitive.kind()) {
+    case core::PrimitiveKind::kRotation:
+      return {primitive.start()};
+    case core::PrimitiveKind::kClothoid:
+      return primitive.polyline(kClothoidDrawingTolerance);
+    case core::PrimitiveKind::kArc: {
+      const int steps =
+          std::max(1, static_cast<int>(std::ceil(std::abs(primitive.sweep()) / kArcDrawingStep)));
+      std::vector<core::Point2> points;
+      for (int i = 0; i <= steps; ++i) {
+        points.push_back(primitive.poseAt(static_cast<double>(i) / steps).position());
+      }
+      return points;
+    }
+    case core::PrimitiveKind::kSegment:
+      break;
+  }
+  return {primitive.start(), primitive.end()};
+}
+
+/// The points a path is drawn through, each primitive's after the first's start.
 std::vector<core::Point2> drawnPolyline(const std::vector<core::PathPrimitive>& path) {
   std::vector<core::Point2> points;
   if (!path.empty()) points.push_back(path.front().start());
   for (const core::PathPrimitive& primitive : path) {
-    if (primitive.kind() == core::PrimitiveKind::kArc) {
-      const int steps =
-          std::max(1, static_cast<int>(std::ceil(std::abs(primitive.sweep()) / kArcDrawingStep)));
-      for (int i = 1; i < steps; ++i) {
-        points.push_back(primitive.poseAt(static_cast<double>(i) / steps).position());
-      }
-    } else if (primitive.kind() == core::PrimitiveKind::kClothoid) {
-      const std::vector<core::Point2> chords = primitive.polyline(kClothoidDrawingTolerance);
-      if (chords.size() > 2) points.insert(points.end(), chords.begin() + 1, chords.end() - 1);
-    }
-    if (primitive.kind() != core::PrimitiveKind::kRotation) points.push_back(primitive.end());
+    if (primitive.kind() == core::PrimitiveKind::kRotation) continue;
+    const std::vector<core::Point2> drawn = drawnPoints(primitive);
+    points.insert(points.end(), drawn.begin() + 1, drawn.end());
   }
   return points;
 }
@@ -124,11 +138,11 @@ visualization_msgs::MarkerArray lakeScaleMarkers(const std::vector<core::PathPri
   return markers;
 }
 
-/// The box around a path's primitives' ends, as a polygon's hull (its drawing scale).
-core::PolygonWithHoles pathBox(const std::vector<core::PathPrimitive>& path) {
-  core::PolygonWithHoles ends;
-  for (const core::PathPrimitive& primitive : path) ends.hull.push_back(primitive.start());
-  if (!path.empty()) ends.hull.push_back(path.back().end());
+/// A path's primitives' ends, whose extent sets its drawing scale.
+core::Ring pathEnds(const std::vector<core::PathPrimitive>& path) {
+  core::Ring ends;
+  for (const core::PathPrimitive& primitive : path) ends.push_back(primitive.start());
+  if (!path.empty()) ends.push_back(path.back().end());
   return ends;
 }
 
@@ -136,7 +150,7 @@ core::PolygonWithHoles pathBox(const std::vector<core::PathPrimitive>& path) {
 
 visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPrimitive>& path,
                                                   const std_msgs::Header& header) {
-  const MarkerScale scale(pathBox(path));
+  const MarkerScale scale(pathEnds(path));
   const double width = scale.size(0.08);
   visualization_msgs::Marker segments = lineList("segments", header, 0.3f, 0.3f, 0.3f, width);
   visualization_msgs::Marker inner = lineList("arcs_inner", header, 0.1f, 0.7f, 0.2f, width);
@@ -150,41 +164,24 @@ visualization_msgs::MarkerArray trajectoryMarkers(const std::vector<core::PathPr
   visualization_msgs::Marker clothoids = lineList("clothoids", header, 0.2f, 0.7f, 0.2f, width);
   visualization_msgs::Marker rotations = lineList("rotations", header, 0.9f, 0.1f, 0.1f, width);
   rotations.type = visualization_msgs::Marker::SPHERE_LIST;
-  rotations.scale.x = rotations.scale.y = rotations.scale.z = 0.3 * width / 0.08;
+  rotations.scale.x = rotations.scale.y = rotations.scale.z = scale.size(0.3);
   for (const core::PathPrimitive& primitive : path) {
-    switch (primitive.kind()) {
-      case core::PrimitiveKind::kSegment:
-        segments.points.push_back(point(primitive.start()));
-        segments.points.push_back(point(primitive.end()));
-        break;
-      case core::PrimitiveKind::kRotation:
-        rotations.points.push_back(point(primitive.start()));
-        break;
-      case core::PrimitiveKind::kClothoid: {
-        const std::vector<core::Point2> chords = primitive.polyline(kClothoidDrawingTolerance);
-        for (std::size_t i = 1; i < chords.size(); ++i) {
-          clothoids.points.push_back(point(chords[i - 1]));
-          clothoids.points.push_back(point(chords[i]));
-        }
-        break;
-      }
-      case core::PrimitiveKind::kArc: {
-        visualization_msgs::Marker& marker =
-            primitive.variant() == core::SmoothingVariant::kOuterBisector  ? bisector
-            : primitive.variant() == core::SmoothingVariant::kOuterTangent ? tangent
-            : primitive.variant() == core::SmoothingVariant::kReverseCurve ? reverse
-            : primitive.variant() == core::SmoothingVariant::kBulb         ? bulb
-                                                                           : inner;
-        const int steps =
-            std::max(1, static_cast<int>(std::ceil(std::abs(primitive.sweep()) / kArcDrawingStep)));
-        for (int i = 0; i < steps; ++i) {
-          marker.points.push_back(
-              point(primitive.poseAt(static_cast<double>(i) / steps).position()));
-          marker.points.push_back(
-              point(primitive.poseAt(static_cast<double>(i + 1) / steps).position()));
-        }
-        break;
-      }
+    const std::vector<core::Point2> drawn = drawnPoints(primitive);
+    if (primitive.kind() == core::PrimitiveKind::kRotation) {
+      rotations.points.push_back(point(drawn.front()));
+      continue;
+    }
+    visualization_msgs::Marker& marker =
+        primitive.kind() == core::PrimitiveKind::kSegment               ? segments
+        : primitive.kind() == core::PrimitiveKind::kClothoid            ? clothoids
+        : primitive.variant() == core::SmoothingVariant::kOuterBisector ? bisector
+        : primitive.variant() == core::SmoothingVariant::kOuterTangent  ? tangent
+        : primitive.variant() == core::SmoothingVariant::kReverseCurve  ? reverse
+        : primitive.variant() == core::SmoothingVariant::kBulb          ? bulb
+                                                                        : inner;
+    for (std::size_t i = 1; i < drawn.size(); ++i) {
+      marker.points.push_back(point(drawn[i - 1]));
+      marker.points.push_back(point(drawn[i]));
     }
   }
   visualization_msgs::MarkerArray markers;

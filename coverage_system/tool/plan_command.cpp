@@ -74,7 +74,7 @@ void PlanCommand::run(const std::vector<std::string>& args, std::ostream& out,
   request.start = mission.start;
   request.goal = mission.goal;
   request.frame_id = mission.frame_id;
-  request.datum = mission.datum;
+  if (mission.datum) request.frame = MissionFrame::of(*mission.datum, mission.parameters);
   request.title =
       "Coverage plan: " + std::filesystem::path(input->arguments.mission_path).filename().string() +
       (mission.parameters.smoothing ? " (smoothed)" : " (unsmoothed)");

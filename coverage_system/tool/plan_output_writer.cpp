@@ -79,9 +79,9 @@ JsonObject planMetrics(const PlanOutputRequest& request, const GeneratedTrajecto
   if (std::isfinite(trajectory.min_obstacle_clearance_m)) {
     metrics.set("min_obstacle_clearance_m", trajectory.min_obstacle_clearance_m);
   }
-  if (request.datum) {
+  if (request.frame) {
     metrics.set("frame_id", request.frame_id);
-    GeoJsonWriter::setFrame(MissionFrame::of(*request.datum, *request.parameters), metrics);
+    GeoJsonWriter::setFrame(*request.frame, metrics);
   }
   return metrics;
 }
@@ -90,7 +90,7 @@ JsonObject planMetrics(const PlanOutputRequest& request, const GeneratedTrajecto
 std::vector<std::string> writeGeoJson(const PlanOutputRequest& request,
                                       const std::vector<TrajectoryPose>& written_poses,
                                       const std::filesystem::path& dir) {
-  const GeoJsonWriter writer{MissionFrame::of(*request.datum, *request.parameters)};
+  const GeoJsonWriter writer{*request.frame};
   const SegmentCost time_cost(CostFunction::kTime, vehicleLimitsOf(*request.parameters));
   std::vector<Point2> waypoints;
   std::vector<double> waypoint_times;
@@ -126,8 +126,8 @@ void writeAutopilotMission(const PlanOutputRequest& request, const GeneratedTraj
   const AutopilotMission mission =
       AutopilotMissionBuilder(vehicleLimitsOf(p), p.corner_cutting_radius)
           .build(trajectory.path, *request.free_area, p.wall_distance);
-  const AutopilotMissionWriter writer(MissionFrame::of(*request.datum, p),
-                                      {p.mission_depth, p.corner_cutting_radius}, mission);
+  const AutopilotMissionWriter writer(*request.frame, {p.mission_depth, p.corner_cutting_radius},
+                                      mission);
   const std::size_t items = writer.itemCount();
   const std::string plan_path = (dir / "mission.plan").string();
   const std::string waypoints_path = (dir / "mission.waypoints").string();
@@ -187,15 +187,14 @@ CoveragePlotData planPlot(const PlanOutputRequest& request, const std::vector<Po
           << formatLength(trajectory.trajectory_length_m) << "  |  "
           << formatDuration(trajectory.traversal_time_s);
   plot.title_lines = {request.title, figures.str()};
-  if (request.datum) {
+  if (request.frame) {
     // True north at the middle of the drawn area, for the plot's north arrow.
     Point2 low = request.free_area->hull.front(), high = low;
     for (const Point2& p : request.free_area->hull) {
       low = low.cwiseMin(p);
       high = high.cwiseMax(p);
     }
-    plot.north_direction =
-        MissionFrame::of(*request.datum, *request.parameters).northDirection(0.5 * (low + high));
+    plot.north_direction = request.frame->northDirection(0.5 * (low + high));
   }
   if (!keepsClearance(trajectory.min_obstacle_clearance_m, request.parameters->wall_distance)) {
     plot.closest_approach = trajectory.closest_approach;
@@ -269,7 +268,7 @@ PlanOutputs writePlanOutputs(const PlanOutputRequest& request, const std::string
   }
   CoveragePlot().writePng(plot, plot_path);
   outputs.files = {waypoints_path, trajectory_path, metrics_path, plot_path};
-  if (request.datum) {
+  if (request.frame) {
     for (std::string& path : writeGeoJson(request, written_poses, dir)) {
       outputs.files.push_back(std::move(path));
     }

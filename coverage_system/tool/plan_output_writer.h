@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "coverage_system/mission/mission.h"
+#include "coverage_system/mission/mission_frame.h"
 #include "coverage_system/parameters/planner_parameters.h"
 #include "coverage_system/planner/coverage_planner.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
@@ -27,10 +28,10 @@ struct PlanOutputRequest {
   /// `combined_coverage_percent` (visited and new trajectory together), which the plot's
   /// heatmap shows.
   std::optional<std::vector<Pose2>> visited;
-  /// A geo-referenced mission's frame and datum: metrics.json records them, and
-  /// DIR/waypoints.geojson and DIR/trajectory.geojson are written too.
+  /// A geo-referenced mission's frame (MissionFrame: datum and projection): metrics.json
+  /// records it, and the GeoJSON outputs and the vehicle's mission files are written too.
   std::string frame_id = "map";
-  std::optional<GeoPoint> datum;
+  std::optional<MissionFrame> frame;
 };
 
 /// What writePlanOutputs wrote and found.
