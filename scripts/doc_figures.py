@@ -10,15 +10,28 @@ prints it (the same command stands in the text above the table, for the reader):
 - command: a program of the build (build/devel/lib/kinematic_coverage/...) or a script
   (scripts/...) with its arguments; its standard output holds the table as Markdown.
 - table: which table of that output, counting from 1 (default 1).
+- id: a name for the table, unique over the documents, by which a figure in prose points at
+  one of its cells (scripts/prose_figures.py checks that the prose agrees with the cell).
 - ci: the cheaper command that CI runs instead. It prints some or all of the same rows
   (rows are matched by their first cell, in order); "skip: REASON" leaves the table out of
   CI (the full check still runs it).
+
+A document that a command prints whole (its prose figures computed from the runs) says so
+in a first-line marker, and its prose is then checked line by line as a table row is (the
+text equal, each number within one unit of its last printed digit):
+
+    <!-- document: command="scripts/run_experiments.sh --print" source="scripts/experiments_report.py" -->
+
+(source: the program that writes the prose; scripts/prose_figures.py counts a figure that
+stands literally in it as typed, not computed.)
 
 A table that holds no measured figure (a list of limits, of fuzz targets) is preceded by
 `<!-- reference table: WHY -->` instead; a table with neither marker is an error.
 
 Columns whose header says "(timing)" are timings, and "(varies)" marks figures of a run that is
-not seeded (a fuzz campaign's coverage): neither is compared nor expected to repeat.
+not seeded (a fuzz campaign's coverage): neither is compared nor expected to repeat. A
+column whose header says "(at most X)" (a peak memory) is not compared either, but every
+number in its cells, documented and fresh, must be at most X: the bound is the claim.
 Every other cell is a machine-independent figure: its text must be equal and each number in
 it equal to the document's: whole numbers (counts) exactly, decimals within one unit of the
 document's last printed digit (they are printed rounded; the unit absorbs a last-digit
@@ -49,10 +62,12 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DOCUMENTS = ['README.md', 'docs/ARCHITECTURE.md', 'docs/BENCHMARKS.md', 'docs/EXPERIMENTS.md',
              'docs/RELIABILITY.md']
 MARKER = re.compile(r'^<!-- figures: (.*) -->\s*$')
+DOCUMENT_MARKER = re.compile(r'^<!-- document: (.*) -->\s*$')
 REFERENCE_TABLE = re.compile(r'^<!-- reference table: .+ -->\s*$')
 ATTRIBUTE = re.compile(r'(\w+)="([^"]*)"|(\w+)=(\S+)')
 NUMBER = re.compile(r'[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?')
 UNCHECKED = ('(timing)', '(varies)')
+BOUND = re.compile(r'\(at most ([0-9.]+)\)')
 
 
 class DocumentError(Exception):
@@ -74,7 +89,8 @@ class Marker:
         self.command = attributes['command']
         self.ci = attributes.get('ci', self.command)
         self.table = int(attributes.get('table', '1'))
-        unknown = set(attributes) - {'command', 'ci', 'table'}
+        self.id = attributes.get('id')
+        unknown = set(attributes) - {'command', 'ci', 'table', 'id'}
         if unknown:
             raise DocumentError(f'{document}:{line_index + 1}: unknown attributes {sorted(unknown)}')
 
@@ -124,6 +140,32 @@ def find_markers(document, lines):
                 raise DocumentError(f'{marker.where()}: the text does not name {program}')
             markers.append(marker)
     return markers
+
+
+def document_marker(document, lines):
+    """(command, source) of a document printed whole by a command, else None."""
+    if not lines or not DOCUMENT_MARKER.match(lines[0]):
+        return None
+    attributes = dict((m.group(1) or m.group(3), m.group(2) if m.group(1) else m.group(4))
+                      for m in ATTRIBUTE.finditer(DOCUMENT_MARKER.match(lines[0]).group(1)))
+    if set(attributes) != {'command', 'source'}:
+        raise DocumentError(f'{document}:1: a document marker names command= and source=')
+    return attributes['command'], attributes['source']
+
+
+def compare_prose(document, lines, output):
+    """The differences between the prose of a generated document and a fresh print of it."""
+    ours = [(index, line) for index, line in enumerate(lines) if not line.startswith('|')]
+    fresh = [line for line in output.splitlines() if not line.startswith('|')]
+    if len(ours) != len(fresh):
+        return [f'{document}: the command prints {len(fresh)} lines of prose, the document '
+                f'holds {len(ours)}']
+    problems = []
+    for (index, line), fresh_line in zip(ours, fresh):
+        why = compare_cell(line, fresh_line)
+        if why:
+            problems.append(f'{document}:{index + 1}: the prose drifted ({why}): "{fresh_line}"')
+    return problems
 
 
 def table_after(lines, marker):
@@ -181,6 +223,9 @@ def commands_of(documents, ci, skip):
     """The commands that check or regenerate would run for the documents."""
     commands = []
     for document in documents:
+        generated = document_marker(document, read_lines(document))
+        if generated and not skipped_program(generated[0], skip):
+            commands.append(generated[0])
         for marker in find_markers(document, read_lines(document)):
             command = marker.ci if ci else marker.command
             if not command.startswith('skip') and not skipped_program(marker.command, skip):
@@ -254,6 +299,11 @@ def compare(marker, documented_rows, fresh_rows, subset):
                             f'the document {len(doc_row)}')
             continue
         for column, (doc_cell, cell) in enumerate(zip(doc_row, row)):
+            bound = BOUND.search(header[column])
+            if bound:
+                problems += bound_problems(marker, key, header[column], float(bound.group(1)),
+                                           {'documented': doc_cell, 'printed': cell})
+                continue
             if any(word in header[column] for word in UNCHECKED):
                 continue
             why = compare_cell(doc_cell, cell)
@@ -261,6 +311,14 @@ def compare(marker, documented_rows, fresh_rows, subset):
                 problems.append(f'{marker.where()}: row {row_name(key)}, column "{header[column]}": '
                                 f'documented "{doc_cell}", printed "{cell}" ({why})')
     return problems
+
+
+def bound_problems(marker, key, column, bound, cells):
+    """A line for every number of `cells` (documented and printed) above `bound`."""
+    return [f'{marker.where()}: row {row_name(key)}, column "{column}": {which} {number} is '
+            f'above its bound {bound:g}'
+            for which, cell in cells.items() for number in NUMBER.findall(cell)
+            if float(number) > bound]
 
 
 def skipped_program(command, skip):
@@ -274,6 +332,11 @@ def check(documents, build_dir, ci, skip=(), jobs=1):
     checked = skipped = 0
     for document in documents:
         lines = read_lines(document)
+        generated = document_marker(document, lines)
+        if generated and not skipped_program(generated[0], skip):
+            output = run_command(generated[0], build_dir, cache)
+            problems += compare_prose(document, lines, output) if output is not None else [
+                f'{document}: `{generated[0]}` failed']
         for marker in find_markers(document, lines):
             command = marker.ci if ci else marker.command
             if command.startswith('skip') or skipped_program(marker.command, skip):
@@ -305,6 +368,13 @@ def regenerate(documents, build_dir, skip=(), jobs=1):
     failed = 0
     for document in documents:
         lines = read_lines(document)
+        generated = document_marker(document, lines)
+        if generated and not skipped_program(generated[0], skip):
+            output = run_command(generated[0], build_dir, cache)
+            if output is None:
+                failed += 1
+            else:
+                lines = output.splitlines()
         replacements = []
         for marker in find_markers(document, lines):
             if skipped_program(marker.command, skip):

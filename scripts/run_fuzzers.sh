@@ -54,7 +54,7 @@ budget() {
   esac
 }
 failed=0
-echo "| target | budget | executions | seconds (timing) | executions/s (timing) | peak RSS MB (timing) | edges covered at the end (varies) | corpus at start → end, inputs (varies) | result |"
+echo "| target | budget | executions | seconds (timing) | executions/s (timing) | peak RSS MB (at most 2048) | edges covered at the end (varies) | corpus at start → end, inputs (varies) | result |"
 echo "|---|---|---:|---:|---:|---:|---:|---|---|"
 for target in "${targets[@]}"; do
   corpus=$build_dir/corpus/$target

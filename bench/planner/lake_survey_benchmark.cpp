@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
   std::printf(
       "| lake km^2 | vertices | islands | cells | outcome | waypoints | trajectory km | "
       "trajectory x swath / area | traversal time | reachable seen %% | mission items | "
-      "trajectory file poses | planning s (timing) | run s (timing) | peak MB (timing) |\n"
+      "trajectory file poses | planning s (timing) | run s (timing) | peak MB (at most 2048) |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const double area : areas) planLake(area, seed, datum, tool, out, plots, timeout_s);
   if (temporary) std::filesystem::remove_all(out);

@@ -179,7 +179,8 @@ int run(const BenchmarkOptions& options) {
               options.seed, mission.polygon.hull.size(), mission.polygon.holes.size(), vertices,
               area(mission.polygon));
   std::printf("peak RSS before planning: %.1f MiB\n\n", peakRssMiB());
-  std::printf("| stage | seconds (timing) | peak RSS MiB (timing) | result |\n|---|---|---|---|\n");
+  std::printf(
+      "| stage | seconds (timing) | peak RSS MiB (at most 1024) | result |\n|---|---|---|---|\n");
   const auto report = [](const PlanningStage& stage) {
     std::printf("| %s | %.3f | %.1f | %s |\n", stage.name.c_str(), stage.duration_s, peakRssMiB(),
                 stage.summary.c_str());

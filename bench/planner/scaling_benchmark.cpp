@@ -102,7 +102,8 @@ int main(int argc, char** argv) {
   std::printf(
       "| shore vertices | islands | vertices | cells | outcome | planning s (timing) | run s "
       "(timing) "
-      "| peak MB (timing) | slowest stage (timing) |\n|---|---|---|---|---|---|---|---|---|\n");
+      "| peak MB (at most 2048) | slowest stage (timing) "
+      "|\n|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::string> details;
   std::vector<std::pair<double, double>> planning_times;  // (vertices, s) of planned charts
   std::vector<std::pair<double, double>> run_times;

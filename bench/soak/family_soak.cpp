@@ -422,7 +422,7 @@ int main(int argc, char** argv) {
                "unsmoothed, median | oracle checked | "
                "coverage_percent against the oracle, largest difference | unseen reachable "
                "against the oracle, largest difference (% of free area) | median plan s "
-               "(timing) | max plan s (timing) | peak RSS MB (timing) |\n"
+               "(timing) | max plan s (timing) | peak RSS MB (at most 2048) |\n"
                "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
             << std::endl;
   bool any_failed = false;

@@ -106,6 +106,37 @@ class CheckTest(unittest.TestCase):
         with self.assertRaises(doc_figures.DocumentError):
             self.check()
 
+    def test_a_bound_column_checks_its_bound_not_its_figures(self):
+        bounded = os.path.join(self.directory.name, 'MEMORY.md')
+        with open(bounded, 'w') as stream:
+            stream.write('    fake_memory\n\n<!-- figures: command="fake_memory" -->\n'
+                         '| map | peak MB (at most 100) |\n|---|---|\n| lake | 80 |\n')
+        path = os.path.join(self.bin, 'fake_memory')
+        for printed, status in (('95', 0), ('120', 1)):
+            with open(path, 'w') as stream:
+                stream.write('#!/bin/sh\necho "| map | peak MB (at most 100) |"\n'
+                             f'echo "|---|---|"\necho "| lake | {printed} |"\n')
+            os.chmod(path, os.stat(path).st_mode | stat.S_IEXEC)
+            self.assertEqual(doc_figures.check([bounded], self.build, False), status, printed)
+
+    def test_a_generated_document_is_checked_in_its_prose_too(self):
+        generated = os.path.join(self.directory.name, 'REPORT.md')
+        text = ('<!-- document: command="fake_report" source="scripts/fake_report.py" -->\n'
+                '# Report\n\nThe robot took 391.0 s, 2.3 % less than unsmoothed.\n\n'
+                '    fake_report\n\n<!-- figures: command="fake_report" -->\n'
+                '| run | time s |\n|---|---|\n| lake | 391.0 |\n')
+        with open(generated, 'w') as stream:
+            stream.write(text)
+        path = os.path.join(self.bin, 'fake_report')
+        for printed, status in ((text, 0), (text.replace('391.0 s', '391.1 s'), 0),
+                                (text.replace('2.3 %', '2.5 %'), 1),
+                                (text.replace('less than', 'more than'), 1),
+                                (text.replace('# Report\n', ''), 1)):
+            with open(path, 'w') as stream:
+                stream.write(f"#!/bin/sh\ncat <<'END'\n{printed}END\n")
+            os.chmod(path, os.stat(path).st_mode | stat.S_IEXEC)
+            self.assertEqual(doc_figures.check([generated], self.build, False), status, printed)
+
     def test_regenerate_writes_the_fresh_table(self):
         self.program(['| lake | 52 | 7420.95 | 13.2 |', '| pond | 3 | 19.34 | 0.2 |'])
         self.assertEqual(doc_figures.regenerate([self.document], self.build), 0)
