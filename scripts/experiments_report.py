@@ -5,17 +5,33 @@
 
 OUT_DIR holds one folder per run (NAME/plan/metrics.json, NAME/simulate/metrics.json). The
 statements about the thesis's trends are computed from the figures, so the text says what the
-tables show under each strategy.
+tables show under each strategy. The settings the text states are read from their files
+(config/default.yaml, the missions, the `--set` values of run_experiments.sh), each followed
+by the marker by which scripts/prose_figures.py checks it there; no figure of the prose is
+typed here.
 """
 import json
+import math
+import os
+import re
 import sys
 
+import prose_figures
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PERCENTILES = ['1', '5', '10', '25', '50', '75', '90', '95', '99']
 STRATEGIES = [('local', 'smoothed, Alg. 1 (`local`)'), ('default', 'smoothed, default'),
               ('clothoid', 'smoothed, default, clothoid turns'), ('unsmoothed', 'unsmoothed')]
 COMMAND = 'scripts/run_experiments.sh --print'
-# position_tolerance of the sensitivity study, metres: the default first.
-TOLERANCES = ['0.05', '0.1', '0.2', '0.3']
+SCRIPT = 'scripts/run_experiments.sh'
+DEFAULTS = 'config/default.yaml'
+# position_tolerance of the sensitivity study beyond the default, metres (run_experiments.sh's
+# loop; the runs' folders are named by them).
+TOLERANCES = ['0.1', '0.2', '0.3']
+# The thesis's traversal times (s) and tracking error sums (m), smoothed and unsmoothed
+# (Tables 4.1 and 4.3).
+THESIS = {'lake_30x30': {'time': (1529, 1241), 'error': (293.44, 452.20)},
+          'lake_7_5': {'time': (531, 703), 'error': (283.98, 239.34)}}
 
 
 def main():
@@ -30,12 +46,53 @@ def main():
                  f'{mission}_{strategy}_calm_{vehicle}' for mission in ('lake_30x30', 'lake_7_5')
                  for strategy, vehicle in [(strategy, 'dynamic') for strategy, _ in STRATEGIES] +
                  [('local', 'kinematic'), ('unsmoothed', 'kinematic')]] + [
-                 f'lake_30x30_{strategy}_tolerance_{tolerance}' for tolerance in TOLERANCES[1:]
+                 f'lake_30x30_{strategy}_tolerance_{tolerance}' for tolerance in TOLERANCES
                  for strategy in ('local', 'unsmoothed')]
     sim = {name: load(name, 'simulate') for name in names}
     plan = {name: load(name, 'plan') for name in names
             if '_calm_' not in name and '_tolerance_' not in name}
     sys.stdout.write(Report(sim, plan).text())
+
+
+def mission_file(name):
+    """The mission file of a mission, relative to the repository."""
+    return f'config/missions/{name}.yaml'
+
+
+def setting(path, name):
+    """The number that a repository file assigns to `name`: a `name: number` line of a YAML
+    file (a parameter default, a mission's setting), or `name=number` in run_experiments.sh
+    (a `--set` of its runs). Read as scripts/prose_figures.py reads a marker's source."""
+    kind = 'yaml' if path.endswith('.yaml') else 'code'
+    return prose_figures.file_value(kind, {kind: path, 'key': name, 'name': name}, ROOT, path)
+
+
+def figure(path, name, unit, scale=1):
+    """A setting as a figure of the prose, followed by the marker by which prose_figures.py
+    checks it against its file."""
+    kind = 'yaml' if path.endswith('.yaml') else 'code'
+    text = f'{setting(path, name) * scale:g} {unit}'
+    end = prose_figures.FIGURE.match(text).end()
+    marker = f'<!-- checked: {kind}="{path}" {"key" if kind == "yaml" else "name"}="{name}"'
+    marker += f' scale="{scale:g}" -->' if scale != 1 else ' -->'
+    return text[:end] + marker + text[end:]
+
+
+def script_settings(array):
+    """The `--set` arguments of a bash array of run_experiments.sh, as written there."""
+    with open(os.path.join(ROOT, SCRIPT), encoding='utf-8') as stream:
+        match = re.search(rf'^{array}=\((.*)\)$', stream.read(), re.MULTILINE)
+    if not match:
+        raise SystemExit(f'experiments_report.py: {SCRIPT} has no array {array}')
+    return match.group(1)
+
+
+def extent(name):
+    """'A m x B m', the extent of a mission's hull."""
+    with open(os.path.join(ROOT, mission_file(name)), encoding='utf-8') as stream:
+        hull = json.loads(re.search(r'^\s*hull:\s*(\[.*\])\s*$', stream.read(), re.MULTILINE).group(1))
+    xs, ys = [x for x, _ in hull], [y for _, y in hull]
+    return f'{max(xs) - min(xs):g} m x {max(ys) - min(ys):g} m'
 
 
 def seconds(value):
@@ -55,9 +112,11 @@ def ratio(a, b):
 
 
 def change(a, b):
-    """How `a` compares with `b`, as 'N % less' or 'N % more'."""
+    """How `a` compares with `b`, as 'N % less' or 'N % more' (with a decimal where N would
+    round to nothing)."""
     share = 100 * (1 - a / b)
-    return f'{share:.0f} % less' if share >= 0 else f'{-share:.0f} % more'
+    digits = 1 if f'{abs(share):.0f}' == '0' else 0
+    return f'{share:.{digits}f} % less' if share >= 0 else f'{-share:.{digits}f} % more'
 
 
 class Report:
@@ -73,12 +132,14 @@ class Report:
         return (f'<!-- figures: id="experiments-{self.tables}" command="{COMMAND}" '
                 f'table={self.tables} -->\n')
 
-    def metrics_table(self, mission, thesis, extra_rows):
-        """Metric rows for the three trajectories of `mission` beside the thesis's figures."""
+    def metrics_table(self, mission, extra_rows):
+        """Metric rows for the four trajectories of `mission` beside the thesis's figures."""
         runs = [self.sim[f'{mission}_{strategy}'] for strategy, _ in STRATEGIES]
         plans = [self.plan[f'{mission}_{strategy}'] for strategy, _ in STRATEGIES]
+        thesis = THESIS[mission]
         rows = [
-            ('traversing time', [seconds(r['traversal_time_s']) for r in runs], thesis['time']),
+            ('traversing time', [seconds(r['traversal_time_s']) for r in runs],
+             [f'{time:g} s' for time in thesis['time']]),
             ('coverage loss (actual poses)', [percent(r['coverage_loss_percent']) for r in runs],
              ['0 %', '0 %']),
             ('coverage loss (planned trajectory)',
@@ -90,7 +151,7 @@ class Report:
             ('closest approach to a wall or obstacle (driven)',
              [metres(r['driven_min_clearance_m'], 3) for r in runs], ['-', '-']),
             ('trajectory error (sum)', [metres(r['tracking_error_sum_m']) for r in runs],
-             thesis['error']),
+             [metres(error) for error in thesis['error']]),
             ('trajectory error (mean)', [metres(r['tracking_error_mean_m'], 4) for r in runs],
              ['-', '-']),
             ('error to the targeted piece (sum)',
@@ -125,13 +186,14 @@ class Report:
         return text
 
     def tolerance_table(self):
-        """Experiment 1 in the lake with each of TOLERANCES: time and error sum of Algorithm 1
-        and unsmoothed."""
+        """Experiment 1 in the lake with the default position_tolerance and each of TOLERANCES:
+        time and error sum of Algorithm 1 and unsmoothed."""
         text = self.marker()
         text += '| `position_tolerance` | Algorithm 1: time | error sum | unsmoothed: time '
         text += '| error sum |\n|---|---|---|---|---|\n'
-        for tolerance in TOLERANCES:
-            suffix = '' if tolerance == TOLERANCES[0] else f'_tolerance_{tolerance}'
+        default = f"{setting(DEFAULTS, 'position_tolerance'):g}"
+        for tolerance in [default] + TOLERANCES:
+            suffix = '' if tolerance == default else f'_tolerance_{tolerance}'
             runs = [self.sim[f'lake_30x30_{strategy}{suffix}'] for strategy in ('local', 'unsmoothed')]
             label = f'{tolerance} m' + (' (default, the tables above)' if not suffix else '')
             text += f'| {label} | ' + ' | '.join(
@@ -153,6 +215,17 @@ class Report:
         calm_local1, calm_default1, calm_clothoid1, calm_unsmoothed1 = self.trends('lake_30x30', '_calm_dynamic')
         calm_local2, calm_default2, calm_clothoid2, calm_unsmoothed2 = self.trends('lake_7_5', '_calm_dynamic')
         calm, drift = sim['lake_30x30_default'], sim['lake_30x30_current']
+        m30, m7 = mission_file('lake_30x30'), mission_file('lake_7_5')
+        lake, low_gain = script_settings('lake'), script_settings('robot_low_gain')
+        thesis1, thesis2 = THESIS['lake_30x30'], THESIS['lake_7_5']
+        # Experiment 2's footprint (docs/REFERENCE.md, Sensor footprint and coverage) and
+        # the largest radius of the default strategy's turns (max_turning_radius, its 0 the
+        # radius of full speed at full yaw rate).
+        width, length = (2 * setting(m7, 'sensor_distance') * math.tan(setting(m7, fov) / 2)
+                         for fov in ('lateral_fov', 'onward_fov'))
+        largest_radius = setting(DEFAULTS, 'max_turning_radius') or max(
+            setting(m7, 'turning_radius'), setting(DEFAULTS, 'v_max') / setting(DEFAULTS, 'yaw_rate_max'))
+        mean_current = f"({setting(SCRIPT, 'current_x'):g}, {setting(SCRIPT, 'current_y'):g}) m/s"
 
         def holds(condition):
             return 'holds' if condition else 'does NOT hold'
@@ -176,8 +249,8 @@ the legs leave room and the turn comes no nearer an obstacle and sees no less), 
 unsmoothed (`smoothing: false`), all four from the same waypoints (with the default
 `coverage_repair`); the same robot follows every trajectory with `coverage_tool simulate`.
 The metrics (docs/REFERENCE.md, Metrics) are the traversal time, the tracking error (the
-distance from the robot to the nearest point of the desired path, once per 0.1 s
-simulation step: its sum, mean and percentiles; the error to the targeted trajectory
+distance from the robot to the nearest point of the desired path, once per simulation
+step: its sum, mean and percentiles; the error to the targeted trajectory
 piece; the mean x and y parts) and the coverage loss of the poses the robot actually
 drove. The robot meets the lake's disturbances (below); the same trajectories in calm
 water with exact navigation are compared at the end of each experiment. The trend
@@ -218,26 +291,29 @@ comes out of its dynamics and controllers:
   the Proteus's kind, set in `config/default.yaml` before any of these experiments ran
   and not changed after. `vehicle_model: kinematic` is the first model, whose speed and
   yaw rate follow their commands at once;
-- the lake (`--set current_sigma=0.02 --set navigation_sigma=0.1`, with the defaults
-  `current_time_constant` 60 s, `navigation_time_constant` 2 s, `disturbance_seed` 1):
-  a current that fluctuates about no mean by 0.02 m/s per axis (lake currents are a few
+- the lake (`{lake}`, with the defaults
+  `current_time_constant` {figure(DEFAULTS, 'current_time_constant', 's')}, `navigation_time_constant` {figure(DEFAULTS, 'navigation_time_constant', 's')},
+  `disturbance_seed` {setting(DEFAULTS, 'disturbance_seed'):g}):
+  a current that fluctuates about no mean by {figure(SCRIPT, 'current_sigma', 'm/s')} per axis (lake currents are a few
   cm/s; Wuest and Lorke, Annu. Rev. Fluid Mech. 35:373, 2003), of which the controller
-  knows nothing, and a navigation error of 0.1 m per axis (an acoustic short-baseline
-  system such as the Water Linked Underwater GPS is good to about 1 % of its range), each
-  axis a first-order Gauss-Markov process (Fossen 2011, Section 8.3). These values were set
+  knows nothing, and a navigation error of {figure(SCRIPT, 'navigation_sigma', 'm')} per axis
+  (what an acoustic short-baseline system such as the Water Linked Underwater GPS achieves
+  at short range: config/default.yaml, `navigation_sigma`), each axis a first-order
+  Gauss-Markov process (Fossen 2011, Section 8.3). These values were set
   before the experiments first ran with them and not changed after; the thesis does not
   say how Proteus navigated.
 
 The braking and the surge loop's acceleration feedforward were added after the first
 runs of these experiments, to mend a defect those runs showed: the robot braked too late
-and ran 0.1 to 0.3 m past every corner it was to turn in place at, towards the walls.
+and ran past every corner it was to turn in place at, towards the walls.
 Those runs had the smoothed trajectory tracked better in experiment 1, as the thesis
 did; it was the overshoot that made the unsmoothed errors large, and with the defect
 mended that trend is gone (below).
 
 Two mechanisms produce the thesis's time trends. The set-point controller slows towards
-every pose it is handed, so following densely sampled arcs (a pose every 0.1 m) costs
-time, while a turn in place with a high yaw gain runs at the saturated yaw rate. With a low
+every pose it is handed, so following densely sampled arcs (a pose every
+{figure(m30, 'arc_sampling_distance', 'm')}) costs time,
+while a turn in place with a high yaw gain runs at the saturated yaw rate. With a low
 yaw gain each rotation pose is approached exponentially, so finely sampled rotations are
 slow: the in-place turns lose their advantage. The tracking errors come from the lake and
 the vehicle: the robot holds its estimate on the path, so its true position strays by the
@@ -246,23 +322,24 @@ smoothed robot also slips outwards on the arcs and lags behind its targets.
 
 ## Experiment 1: lake_30x30, high yaw gain (Tables 4.1 and 4.2)
 
-Mission `config/missions/lake_30x30.yaml` (the thesis's 30 m x 30 m map with two
-obstacles, boustrophedon, time cost, 1 m wall offset, 40 % overlap, frustum sensor 3 m
-above the bottom, 1 m turning radius, sampling 0.5 m on segments, 0.1 m on arcs). Robot,
-the same for every trajectory: `config/default.yaml`, i.e. the dynamic vehicle, `v_max`
-0.5 m/s, `a_max` 0.2 m/s^2, `yaw_rate_max` 0.5 rad/s, `yaw_gain` 5 1/s, `position_gain` 1.5 1/s,
-`position_tolerance` 0.05 m, `yaw_tolerance` 0.05 rad, `rotation_sampling_angle` 0.2 rad,
-`sim_dt` 0.1 s, in the lake.
+Mission `{m30}` (the thesis's {extent('lake_30x30')} map with two
+obstacles, boustrophedon, time cost, {figure(m30, 'wall_distance', 'm')} wall offset, {figure(m30, 'lateral_overlap', '%', 100)} overlap, frustum
+sensor {figure(m30, 'sensor_distance', 'm')} above the bottom, {figure(m30, 'turning_radius', 'm')} turning radius, sampling
+{figure(m30, 'segment_sampling_distance', 'm')} on segments, {figure(m30, 'arc_sampling_distance', 'm')} on arcs). Robot, the same for
+every trajectory: `config/default.yaml`, i.e. the dynamic vehicle, `v_max`
+{figure(DEFAULTS, 'v_max', 'm/s')}, `a_max` {figure(DEFAULTS, 'a_max', 'm/s^2')}, `yaw_rate_max` {figure(DEFAULTS, 'yaw_rate_max', 'rad/s')},
+`yaw_gain` {setting(DEFAULTS, 'yaw_gain'):g} 1/s, `position_gain` {setting(DEFAULTS, 'position_gain'):g} 1/s,
+`position_tolerance` {figure(DEFAULTS, 'position_tolerance', 'm')}, `yaw_tolerance` {figure(DEFAULTS, 'yaw_tolerance', 'rad')},
+`rotation_sampling_angle` {figure(DEFAULTS, 'rotation_sampling_angle', 'rad')}, `sim_dt` {figure(DEFAULTS, 'sim_dt', 's')}, in the lake.
 
-    coverage_tool plan config/missions/lake_30x30.yaml --out DIR \\
+    coverage_tool plan {m30} --out DIR \\
         --set smoothing=true --set smoothing_strategy=local --set smoothing_clearance=0
         # or the default, with or without --set turn_curve=clothoid, or smoothing=false
-    coverage_tool simulate config/missions/lake_30x30.yaml --trajectory DIR/trajectory.csv --out SIM \\
-        --set current_sigma=0.02 --set navigation_sigma=0.1
+    coverage_tool simulate {m30} --trajectory DIR/trajectory.csv --out SIM \\
+        {lake}
 
 '''
-        text += self.metrics_table('lake_30x30', {'time': ['1529 s', '1241 s'],
-                                                  'error': ['293.44 m', '452.20 m']}, [
+        text += self.metrics_table('lake_30x30', [
             ('planned traversal time', lambda run, p: seconds(p['traversal_time_s'])),
             ('turns smoothed', lambda run, p: f"{p['turns_smoothed']} / {p['turns_total']}"),
         ])
@@ -295,8 +372,8 @@ Against Table 4.2, from the 50th to the 99th percentile: Algorithm 1's smoothed 
 {within_three('local')}; the unsmoothed run {within_three('unsmoothed')}.
 
 The thesis's two findings, turning in place is faster (the thesis: the unsmoothed run took
-0.81 of the smoothed run's time) and the smoothed trajectory is tracked better (the thesis:
-35 % less error):
+{ratio(thesis1['time'][1], thesis1['time'][0])} of the smoothed run's time) and the smoothed trajectory is tracked better (the thesis:
+{change(*thesis1['error'])} error):
 
 - Algorithm 1: the unsmoothed run takes {ratio(unsmoothed1[0], local1[0])} of the smoothed run's time (faster in place:
   {holds(unsmoothed1[0] < local1[0])}); error sum {metres(local1[1])} against {metres(unsmoothed1[1])}, {change(local1[1], unsmoothed1[1])}
@@ -327,20 +404,20 @@ Where the numbers differ from the thesis, and why:
 
 - The percentiles are the lake's kind: the navigation error puts the median near the
   thesis's, and both trajectories share it, so it says little about the turns.
-- The smoothed trajectory is not tracked better: the sums count one error every 0.1 s, so
-  the slower run adds more of the same navigation error, and the arcs add their slip. The
-  thesis's sums and percentiles imply about two samples per second; the vehicle was not
-  tuned to reproduce its 35 %.
-- Times are {ratio(local1[0], 1529)} (Algorithm 1) and {ratio(unsmoothed1[0], 1241)} (unsmoothed) times the thesis's. The
+- The smoothed trajectory is not tracked better: the sums count one error per simulation
+  step, so the slower run adds more of the same navigation error, and the arcs add their
+  slip. The thesis's sums and percentiles imply about two samples per second; the vehicle
+  was not tuned to reproduce its finding.
+- Times are {ratio(local1[0], thesis1['time'][0])} (Algorithm 1) and {ratio(unsmoothed1[0], thesis1['time'][1])} (unsmoothed) times the thesis's. The
   model uses the planner's `v_max` and `a_max` (the thesis gives no speed or acceleration of
-  Proteus), and with the navigation error it hunts near every pose: close to a pose, 0.1 m
-  of error turns the bearing to it by tenths of a radian, the high yaw gain turns that
+  Proteus), and with the navigation error it hunts near every pose: close to a pose, the
+  navigation error turns the bearing to it by tenths of a radian, the high yaw gain turns that
   into a yaw-rate command near `yaw_rate_max`, and the shared thrust leaves no surge for
   it. In calm water with exact navigation (below) the same
   trajectories take {seconds(calm_local1[0])} and {seconds(calm_unsmoothed1[0])}; the lake's Proteus was not slowed this much, so
   its navigation error was smoother, or its controller steered through it, or it counted
-  a pose as reached farther from it. The default `position_tolerance` (0.05 m) is half
-  the navigation error's standard deviation, so the estimate wanders out of the tolerance
+  a pose as reached farther from it. The default `position_tolerance` (the first row of
+  the table below) is half the navigation error's standard deviation, so the estimate wanders out of the tolerance
   of a pose it has reached (`simulate` warns of a tolerance under 3 standard deviations).
   The same runs with larger tolerances, a sensitivity study after the fact (the tables
   above keep the default):
@@ -351,8 +428,8 @@ Where the numbers differ from the thesis, and why:
         loose_unsmoothed = sim[f'lake_30x30_unsmoothed_tolerance_{TOLERANCES[-1]}']
         text += f'''
   With a tolerance of {TOLERANCES[-1]} m (three standard deviations) the hunting has mostly gone and the
-  times come near the lake's: {seconds(loose_local['traversal_time_s'])} (Algorithm 1) and {seconds(loose_unsmoothed['traversal_time_s'])} (unsmoothed), the
-  thesis's 1529 s and 1241 s; the smoothed trajectory is tracked better there:
+  times (the last row) come near the thesis's: {ratio(loose_local['traversal_time_s'], thesis1['time'][0])} (Algorithm 1) and {ratio(loose_unsmoothed['traversal_time_s'], thesis1['time'][1])} (unsmoothed) times
+  them; the smoothed trajectory is tracked better there:
   {holds(loose_local['tracking_error_sum_m'] < loose_unsmoothed['tracking_error_sum_m'])}.
 - In calm water with exact navigation the straight sweeps have no error at all: the
   unsmoothed robot brakes to a stop on each corner and turns there, and the smoothed one
@@ -363,7 +440,7 @@ Where the numbers differ from the thesis, and why:
 
 '''
         text += self.conditions_table('lake_30x30')
-        text += '''
+        text += f'''
 Smoothed by Algorithm 1, by the default strategy, by the default strategy with clothoid
 turns, and unsmoothed (left to right): the desired trajectory in black, the path the robot drove coloured by its tracking error, over
 the heatmap of what its sensor saw.
@@ -387,22 +464,21 @@ histograms of its x and y parts, and the x, y and Euclidean errors over time:
 
 ## Experiment 2: lake_7_5, low yaw gain, finer rotations (Table 4.3)
 
-Mission `config/missions/lake_7_5.yaml` (a 7.5 m x 7.5 m map with many turns and an
-obstacle beside the lanes, 0.3 m turning radius). Robot, the same for every trajectory:
-as in experiment 1 but `yaw_gain` 2 1/s (from 5) and `rotation_sampling_angle` 0.1 rad
-(from 0.2: twice as many poses on each in-place rotation), the thesis's two changes; in the
-lake.
+Mission `{m7}` (a {extent('lake_7_5')} map with many turns and an
+obstacle beside the lanes, {figure(m7, 'turning_radius', 'm')} turning radius). Robot, the same for every trajectory:
+as in experiment 1 but `yaw_gain` {setting(SCRIPT, 'yaw_gain'):g} 1/s (from {setting(DEFAULTS, 'yaw_gain'):g}) and `rotation_sampling_angle`
+{figure(SCRIPT, 'rotation_sampling_angle', 'rad')} (from {setting(DEFAULTS, 'rotation_sampling_angle'):g}: twice as many poses on each in-place rotation), the
+thesis's two changes; in the lake.
 
-    coverage_tool plan config/missions/lake_7_5.yaml --out DIR --set smoothing=true \\
-        --set smoothing_strategy=local --set smoothing_clearance=0 --set yaw_gain=2 \\
-        --set rotation_sampling_angle=0.1
-    coverage_tool simulate config/missions/lake_7_5.yaml --trajectory DIR/trajectory.csv --out SIM \\
-        --set yaw_gain=2 --set rotation_sampling_angle=0.1 \\
-        --set current_sigma=0.02 --set navigation_sigma=0.1
+    coverage_tool plan {m7} --out DIR --set smoothing=true \\
+        --set smoothing_strategy=local --set smoothing_clearance=0 \\
+        {low_gain}
+    coverage_tool simulate {m7} --trajectory DIR/trajectory.csv --out SIM \\
+        {low_gain} \\
+        {lake}
 
 '''
-        text += self.metrics_table('lake_7_5', {'time': ['531 s', '703 s'],
-                                                'error': ['283.98 m', '239.34 m']}, [
+        text += self.metrics_table('lake_7_5', [
             ('trajectory error (99th percentile)',
              lambda run, p: metres(run['tracking_error_percentiles_m']['99'], 3)),
             ('turns smoothed', lambda run, p: f"{p['turns_smoothed']} / {p['turns_total']}"),
@@ -412,12 +488,12 @@ The smoothed trajectories see less of the lake bottom as planned than the unsmoo
 ({percent(plan['lake_7_5_default']['coverage_loss_percent'])} unseen with the default strategy against {percent(plan['lake_7_5_unsmoothed']['coverage_loss_percent'])}; of what the unsmoothed trajectory sees, the default
 one misses {plan['lake_7_5_default']['smoothing_lost_area_m2']:.3f} m^2, and `plan` warns of it), almost all of it outside the reachable area
 ({plan['lake_7_5_default']['smoothing_lost_reachable_area_m2']:.3f} m^2 of it reachable, of {plan['lake_7_5_default']['unreachable_area_m2']:.2f} m^2 outside the reachable area): here the
-footprint is 1.72 m wide and 0.21 m long, so the reachable area reaches only 0.11 m
-beyond the 0.4 m wall distance, while the unsmoothed path, running along the walls
+footprint is {metres(width)} wide and {metres(length)} long, so the reachable area reaches only {metres(length / 2)}
+beyond the {figure(m7, 'wall_distance', 'm')} wall distance, while the unsmoothed path, running along the walls
 between lanes and turning in place at the corners, sees more of the wall band. No stage
 guards the area beyond the reachable area (docs/REFERENCE.md, Reachable area).
 
-The thesis's reversal, the smoothed trajectory now the faster one (the thesis: 0.76 of the
+The thesis's reversal, the smoothed trajectory now the faster one (the thesis: {ratio(*thesis2['time'])} of the
 unsmoothed run's time):
 
 - Algorithm 1: {ratio(local2[0], unsmoothed2[0])} of the unsmoothed run's time ({holds(local2[0] < unsmoothed2[0])}).
@@ -428,10 +504,10 @@ unsmoothed run's time):
 - In calm water with exact navigation: Algorithm 1 {ratio(calm_local2[0], calm_unsmoothed2[0])} of the unsmoothed run's time
   ({holds(calm_local2[0] < calm_unsmoothed2[0])}), the default strategy {ratio(calm_default2[0], calm_unsmoothed2[0])} ({holds(calm_default2[0] < calm_unsmoothed2[0])}), with clothoid turns
   {ratio(calm_clothoid2[0], calm_unsmoothed2[0])} ({holds(calm_clothoid2[0] < calm_unsmoothed2[0])}); the clothoid turns' error sum is {change(calm_clothoid2[1], calm_default2[1])} than the arcs'
-  ({holds(calm_clothoid2[1] < calm_default2[1])}) but not less than unsmoothed ({metres(calm_clothoid2[1])} against {metres(calm_unsmoothed2[1])}).
+  (tracked better than arcs: {holds(calm_clothoid2[1] < calm_default2[1])}), and not less than unsmoothed ({metres(calm_clothoid2[1])} against {metres(calm_unsmoothed2[1])}).
 
 It comes from the robot, not from the map: the same map with experiment 1's robot
-(`yaw_gain` 5, `rotation_sampling_angle` 0.2):
+(`yaw_gain` {setting(DEFAULTS, 'yaw_gain'):g}, `rotation_sampling_angle` {setting(DEFAULTS, 'rotation_sampling_angle'):g}):
 
 '''
         text += self.marker()
@@ -447,13 +523,13 @@ With experiment 1's robot, turning in place is faster than Algorithm 1's smoothi
 
 Where the numbers differ from the thesis, and why:
 
-- The thesis's smoothed run tracked worse (283.98 m against 239.34 m). In the lake the
+- The thesis's smoothed run tracked worse ({change(*thesis2['error'])} error). In the lake the
   smoothed run tracks worse under Algorithm 1: {holds(local2[1] > unsmoothed2[1])}; under the default strategy:
   {holds(default2[1] > unsmoothed2[1])}. The unsmoothed robot stops at every corner and turns in place there,
   slowly with the low yaw gain and twice the rotation poses, while the unknown current
-  and the navigation error push it off the corner: every 0.1 s of the turn adds its offset to the sum. In calm
+  and the navigation error push it off the corner: every simulation step of the turn adds its offset to the sum. In calm
   water with exact navigation there is nothing to push it, the unsmoothed robot turns on
-  the path, and the smoothed one lags on the tight 0.3 m arcs with the low gain: there
+  the path, and the smoothed one lags on the tight arcs with the low gain: there
   the smoothed run tracks worse ({holds(calm_local2[1] > calm_unsmoothed2[1])}, {metres(calm_local2[1])} against {metres(calm_unsmoothed2[1])}). The thesis's
   reversal thus appears in calm water and not in the lake; neither vehicle nor lake was
   tuned to reproduce it.
@@ -464,14 +540,15 @@ Where the numbers differ from the thesis, and why:
 - The planned times order the trajectories otherwise: {seconds(plan['lake_7_5_local']['traversal_time_s'])} (Algorithm 1),
   {seconds(plan['lake_7_5_default']['traversal_time_s'])} (default) and {seconds(plan['lake_7_5_unsmoothed']['traversal_time_s'])} (unsmoothed) by the planner's velocity model, in
   which an arc is driven at `yaw_rate_max` times its radius. The default strategy takes
-  its turns at up to `max_turning_radius` (1 m here, where that keeps coverage), which the
+  its turns at up to `max_turning_radius` ({largest_radius:g} m here, where that keeps coverage), which the
   planner drives at full speed and full yaw rate; the robot model shares thrust between
   surge and yaw and has no surge left at full yaw rate, so it slows to about half speed on
   those arcs, and its set-point controller slows it towards every pose along them.
 - The coverage loss is a few percent here even for the planned trajectories: with the
-  sensor 0.4 m above the bottom, the strips along the walls, the map's corners and a
+  sensor {figure(m7, 'sensor_distance', 'm')} above the bottom, the strips along the walls, the map's corners and a
   strip beside the obstacle lie beyond the footprints (the red cells); the thesis reports
-  0 % for its 7.5 m map, whose sensor height and wall offset it does not state.
+  no loss for its map of that size (the table's thesis columns), whose sensor height and
+  wall offset it does not state.
 
 <img src="images/experiments_lake_7_5_local.png" width="24%"> <img src="images/experiments_lake_7_5_default.png" width="24%"> <img src="images/experiments_lake_7_5_clothoid.png" width="24%"> <img src="images/experiments_lake_7_5_unsmoothed.png" width="24%">
 
@@ -488,12 +565,12 @@ heatmaps, the driven poses and the error statistics.
 
 The thesis's outlook asks for trials "in an underwater environment with stronger water
 currents". The default-strategy lake_30x30 trajectory of experiment 1, followed by the same
-robot in the same lake with a mean current of (0.2, 0.1) m/s added (`--set current_x=0.2
---set current_y=0.1`):
+robot in the same lake with a mean current of {mean_current} added
+(`{script_settings('current')}`):
 
 '''
         text += self.marker()
-        text += f'''| metric | no mean current | mean current (0.2, 0.1) m/s |
+        text += f'''| metric | no mean current | mean current {mean_current} |
 |---|---|---|
 | traversing time | {seconds(calm['traversal_time_s'])} | {seconds(drift['traversal_time_s'])} |
 | trajectory error (sum) | {metres(calm['tracking_error_sum_m'])} | {metres(drift['tracking_error_sum_m'])} |
