@@ -3,7 +3,7 @@
 say where they come from.
 
 A figure is a number followed by a unit (%, s, ms, min, h, d, MB, GB, m, m^2, km, km^2, cm,
-mm, m/s, rad, Hz, x), outside tables, code blocks, inline code, HTML tags and comments.
+mm, m/s, m/s^2, rad, rad/s, Hz, x), outside tables, code blocks, inline code, HTML tags and comments.
 Tables are checked by doc_figures. A figure in prose is checked when a marker follows it
 directly (after at most closing emphasis, a parenthesis and spaces) and names its source:
 
@@ -42,11 +42,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import doc_figures  # noqa: E402
 
 # A number (digits, optionally grouped by spaces or commas in threes, optionally with a
-# decimal part, optionally negative), optional space, a unit, not followed by a letter,
+# decimal part and an exponent, optionally negative), optional space, a unit, not followed by a letter,
 # digit or caret (so "3 max" is no figure and "2 m^2" one figure); "x" is a ratio ("1.6x"),
 # not a size ("64 x 64").
 FIGURE = re.compile(
-    r'(?<![\w.])-?\d+(?:[ ,]\d{3})*(?:\.\d+)?\s?(?:%|ms|MB|GB|km\^2|km|m\^2|m/s|m|s|min|h|d|cm|mm|rad|Hz|x(?!\s?\d))(?![\w^])')
+    r'(?<![\w.\-+])-?\d+(?:[ ,]\d{3})*(?:\.\d+)?(?:[eE][-+]?\d+)?\s?(?:%|ms|MB|GB|km\^2|km|m\^2|m/s\^2|m/s|m|s|min|h|d|cm|mm|rad/s|rad|Hz|x(?!\s?\d))(?![\w^])')
 CHECKED = re.compile(r'<!-- checked: (.*?) -->')
 # What may stand between a figure and its marker.
 BETWEEN = re.compile(r'[\s*_)]*\x00(\d+)\x00')
@@ -126,10 +126,11 @@ def figures(path):
 
 def figure_value(figure):
     """The number of a figure and one unit of its last printed digit."""
-    digits = re.match(r'-?\d+(?:[ ,]\d{3})*(?:\.\d+)?', figure).group(0)
-    digits = re.sub(r'[ ,]', '', digits)
-    decimals = len(digits.split('.')[1]) if '.' in digits else 0
-    return float(digits), 10.0 ** -decimals
+    match = re.match(r'(-?\d+(?:[ ,]\d{3})*(?:\.(\d+))?)(?:[eE]([-+]?\d+))?', figure)
+    exponent = int(match.group(3) or 0)
+    decimals = len(match.group(2) or '')
+    value = float(re.sub(r'[ ,]', '', match.group(1))) * 10.0 ** exponent
+    return value, 10.0 ** (exponent - decimals)
 
 
 def attributes_of(text, where):

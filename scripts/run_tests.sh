@@ -29,7 +29,8 @@ export ROS_HOSTNAME=localhost ROS_HOME="$build_dir/ros_home" ROSCONSOLE_STDOUT_L
 mkdir -p "$ROS_HOME"
 cd "$build_dir"
 xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j"${JOBS:-2}"
+fuzz_smoke_seconds=5
 if [ "${KC_FUZZ_SMOKE:-1}" != 0 ]; then
   echo "== fuzz smoke"
-  BUILD_DIR="$build_dir-fuzz" "$root/scripts/run_fuzzers.sh" --seconds 5
+  BUILD_DIR="$build_dir-fuzz" "$root/scripts/run_fuzzers.sh" --seconds "$fuzz_smoke_seconds"
 fi

@@ -16,6 +16,7 @@ DOCUMENT = '''# A document
 
 The lake plans in 1.24 s and sees 99.9 % of it; the 73 km lake, 536 km^2, 2 m^2 and 0.5 m/s.
 It took 6 min and 2 h at 10 Hz, a turn of 0.2 rad, 5 cm, 3 mm, a 1.6x speed-up, 1 864 624 s.
+It brakes at 0.2 m/s^2 and turns at 0.5 rad/s, within 1e-9 m.
 A 64 x 64 grid, 3 max, the 2nd lane, version 1.2, 5 minutes: none of these.
 
 | table | 5 m |
@@ -46,7 +47,7 @@ class ProseFiguresTest(unittest.TestCase):
             os.unlink(stream.name)
         self.assertEqual(found, ['1.24 s', '99.9 %', '73 km', '536 km^2', '2 m^2', '0.5 m/s',
                                  '6 min', '2 h', '10 Hz', '0.2 rad', '5 cm', '3 mm', '1.6x',
-                                 '1 864 624 s', '12 m'])
+                                 '1 864 624 s', '0.2 m/s^2', '0.5 rad/s', '1e-9 m', '12 m'])
 
     def test_line_numbers_point_at_the_figures(self):
         with tempfile.NamedTemporaryFile('w', suffix='.md', delete=False) as stream:
@@ -55,7 +56,7 @@ class ProseFiguresTest(unittest.TestCase):
             lines = sorted({number for number, _, _ in prose_figures.figures(stream.name)})
         finally:
             os.unlink(stream.name)
-        self.assertEqual(lines, [3, 4, 21])
+        self.assertEqual(lines, [3, 4, 5, 22])
 
 
 BENCHMARKS = '''# Benchmarks
@@ -69,6 +70,7 @@ BENCHMARKS = '''# Benchmarks
 
 CONFIG = '''wall_distance: 1.5  # m
 trajectory_sampling_distance: 0.1
+same_position_tolerance: 1e-9
 '''
 
 SOURCE = '''constexpr double kMaxExtentMeters = 5e4;
@@ -134,7 +136,9 @@ class CheckedMarkerTest(unittest.TestCase):
                            'yaml="config/default.yaml" key="trajectory_sampling_distance" '
                            'scale="100" --> apart, 50 km<!-- checked: code="src/frame.cpp" '
                            'name="kMaxExtentMeters" scale="0.001" --> and 2.5 mm<!-- checked: '
-                           'code="src/frame.cpp" name="kFoldTolerance" scale="1000" -->.')
+                           'code="src/frame.cpp" name="kFoldTolerance" scale="1000" -->, '
+                           'within 1e-9 m<!-- checked: yaml="config/default.yaml" '
+                           'key="same_position_tolerance" -->.')
         self.assertRefused('A wall distance of 1.4 m<!-- checked: yaml="config/default.yaml" '
                            'key="wall_distance" -->.', 'the prose says 1.4 m')
 
