@@ -328,6 +328,13 @@ std::vector<ParameterDeclaration> vehicleBodyDeclarations() {
       number("yaw_torque_max", &P::yaw_torque_max, "N m", 30.0, positive(), S::kSimulation,
              "Dynamic vehicle: largest yaw torque.",
              "the same thrusters on a 0.189 m lever arm: 4 x 40 x 0.189"),
+      flag("sway_actuated", &P::sway_actuated, true, S::kSimulation,
+           "Dynamic vehicle: true, the four vectored thrusters drive surge, sway and yaw, "
+           "sharing their limits (a sway force up to thrust_max; a demand beyond the "
+           "thrusters is scaled down whole); false, a torpedo-like variant whose sway is not "
+           "actuated (surge and yaw limited apart).",
+           "the BlueROV2's vectored frame, whose four horizontal thrusters at 45 degrees drive "
+           "sway as they drive surge (Wu 2018; Blue Robotics, BlueROV2 vectored frame)"),
       number("surge_loop_gain", &P::surge_loop_gain, "1/s", 5.0, loopGain(), S::kSimulation,
              "Dynamic vehicle: bandwidth of the speed loop that turns the surge speed command "
              "into force.",

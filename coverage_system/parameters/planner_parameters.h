@@ -69,6 +69,7 @@ struct PlannerParameters {
   double damping_yaw_quadratic{};
   double thrust_max{};
   double yaw_torque_max{};
+  bool sway_actuated{};
   double surge_loop_gain{};
   double yaw_rate_loop_gain{};
   double yaw_gain{};

@@ -149,6 +149,7 @@ RobotModel robotModelOf(const PlannerParameters& parameters) {
   body.damping_yaw_quadratic = p.damping_yaw_quadratic;
   body.thrust_max = p.thrust_max;
   body.yaw_torque_max = p.yaw_torque_max;
+  body.sway_actuated = p.sway_actuated;
   model.surge_loop_gain = p.surge_loop_gain;
   model.yaw_rate_loop_gain = p.yaw_rate_loop_gain;
   model.yaw_gain = p.yaw_gain;

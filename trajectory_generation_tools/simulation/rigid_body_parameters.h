@@ -28,6 +28,10 @@ struct RigidBodyParameters {
   double thrust_max = 113.0;
   /// N m: largest yaw torque, 4 x 40 N x 0.189 m.
   double yaw_torque_max = 30.0;
+  /// Whether the thrusters drive sway: the vectored frame's four thrusters drive surge,
+  /// sway (up to thrust_max) and yaw together, sharing their limits; false is a
+  /// torpedo-like variant, sway unactuated, surge and yaw limited apart.
+  bool sway_actuated = true;
 
   /// kg: surge inertia with added mass, m11.
   double surgeInertia() const { return mass + added_mass_surge; }
