@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
@@ -77,7 +78,7 @@ TEST(PlanarRigidBodyTest, TurnsSteadilyOnTheCircleOfItsSteadyVelocities) {
     const int steps = static_cast<int>(std::lround(duration / 0.1));
     for (int i = 0; i < steps; ++i) {
       const double feedback = p.yawInertia() * 5.0 * (r - state.yaw_rate);
-      state = body.advance(state, {surge_force, yaw_torque + feedback}, 0.1);
+      state = body.advance(state, {surge_force, 0.0, yaw_torque + feedback}, 0.1);
     }
     return state;
   };
@@ -113,6 +114,115 @@ TEST(PlanarRigidBodyTest, DriftsWithTheCurrent) {
   EXPECT_NEAR(end.pose.x, 3.0, 1e-12);
   EXPECT_NEAR(end.pose.y, 1.0, 1e-12);
   EXPECT_DOUBLE_EQ(end.pose.yaw, 0.7);
+}
+
+/// Kinetic energy (J) of the body's motion through the water, added masses included.
+double kineticEnergy(const RigidBodyParameters& p, const RigidBodyState& s) {
+  return 0.5 * (p.surgeInertia() * s.surge * s.surge + p.swayInertia() * s.sway * s.sway +
+                p.yawInertia() * s.yaw_rate * s.yaw_rate);
+}
+
+TEST(PlanarRigidBodyTest, WithoutForcesItGainsNoEnergy) {
+  // The Coriolis and Munk terms exchange energy between surge, sway and yaw without adding
+  // any (u m22 v r - v m11 u r + r (m11 - m22) u v = 0); damping only takes it away.
+  const RigidBodyParameters p;
+  const PlanarRigidBody body(p, 0.0, 0.0);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> speed(-1.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    RigidBodyState state;
+    state.surge = speed(rng);
+    state.sway = speed(rng);
+    state.yaw_rate = speed(rng);
+    double energy = kineticEnergy(p, state);
+    for (int step = 0; step < 100; ++step) {
+      state = body.advance(state, {}, 0.1);
+      const double next = kineticEnergy(p, state);
+      EXPECT_LE(next, energy + 1e-12) << trial << " " << step;
+      energy = next;
+    }
+  }
+}
+
+TEST(PlanarRigidBodyTest, UnforcedSwayAndYawHaveTheSignsOfCoriolisAndMunk) {
+  // m22 v' = -m11 u r: a left turn (r > 0) ahead (u > 0) slips to the right, outwards;
+  // m33 r' = (m11 - m22) u v: with m22 > m11 a body moving ahead and to the left turns right.
+  const RigidBodyParameters p;
+  ASSERT_GT(p.swayInertia(), p.surgeInertia());
+  const PlanarRigidBody body(p, 0.0, 0.0);
+  RigidBodyState turning;
+  turning.surge = 0.5;
+  turning.yaw_rate = 0.5;
+  EXPECT_LT(body.advance(turning, {}, 0.01).sway, 0.0);
+  turning.yaw_rate = -0.5;
+  EXPECT_GT(body.advance(turning, {}, 0.01).sway, 0.0);
+  RigidBodyState slipping;
+  slipping.surge = 0.5;
+  slipping.sway = 0.2;
+  EXPECT_LT(body.advance(slipping, {}, 0.01).yaw_rate, 0.0);
+  slipping.sway = -0.2;
+  EXPECT_GT(body.advance(slipping, {}, 0.01).yaw_rate, 0.0);
+}
+
+TEST(PlanarRigidBodyTest, HalvingTheStepCutsTheIntegrationErrorSixteenfold) {
+  // The classical Runge-Kutta method is of fourth order: under a constant input within the
+  // thrusters' limits, halving the step divides the error by about 2^4 (at steps like the
+  // simulator's, well below those at which the stiff yaw dynamics make it unstable).
+  const RigidBodyParameters p;
+  const PlanarRigidBody body(p, 0.0, 0.0);
+  RigidBodyState start;
+  start.surge = 0.4;
+  start.sway = -0.1;
+  start.yaw_rate = 0.6;
+  const BodyForces forces{20.0, 5.0, 1.0};
+  ASSERT_DOUBLE_EQ(body.limited(forces).surge, forces.surge);
+  const RigidBodyState exact = body.advance(start, forces, 5.0, 1e-4);
+  const auto error = [&](double step) {
+    const RigidBodyState end = body.advance(start, forces, 5.0, step);
+    return std::hypot(end.pose.x - exact.pose.x, end.pose.y - exact.pose.y);
+  };
+  const double ratio = error(0.025) / error(0.0125);
+  EXPECT_GT(ratio, 12.0);
+  EXPECT_LT(ratio, 20.0);
+}
+
+TEST(PlanarRigidBodyTest, TheVectoredThrustersDriveSwayAndTheTorpedoVariantDoesNot) {
+  // Y = d1 v + d2 v^2 at steady sway; without sway actuation the sway force is not applied.
+  RigidBodyParameters p;
+  const double force = 20.0;
+  const double d1 = p.damping_sway_linear;
+  const double d2 = p.damping_sway_quadratic;
+  const double expected = (-d1 + std::sqrt(d1 * d1 + 4.0 * d2 * force)) / (2.0 * d2);
+  const RigidBodyState actuated = run(PlanarRigidBody(p, 0.0, 0.0), {}, {0.0, force, 0.0}, 60.0);
+  EXPECT_NEAR(actuated.sway, expected, 1e-9);
+  EXPECT_GT(actuated.pose.y, 0.0);
+  p.sway_actuated = false;
+  const RigidBodyState torpedo = run(PlanarRigidBody(p, 0.0, 0.0), {}, {0.0, force, 0.0}, 60.0);
+  EXPECT_EQ(torpedo.sway, 0.0);
+  EXPECT_EQ(torpedo.pose.y, 0.0);
+}
+
+TEST(PlanarRigidBodyTest, AppliedForcesStayWithinTheThrustersLimits) {
+  // Sway actuated: every thruster within its limit, and a demand they can meet met exactly;
+  // the torpedo variant: surge and yaw clamped apart, no sway force.
+  RigidBodyParameters p;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> share(-2.0, 2.0);
+  const VectoredThrustAllocation allocation(p.thrust_max, p.yaw_torque_max);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const BodyForces demand{share(rng) * p.thrust_max, share(rng) * p.thrust_max,
+                            share(rng) * p.yaw_torque_max};
+    p.sway_actuated = true;
+    const BodyForces applied = PlanarRigidBody(p, 0.0, 0.0).limited(demand);
+    for (const double thrust : allocation.thrusterShares(applied)) {
+      EXPECT_LE(std::abs(thrust), 1.0 + 1e-12) << trial;
+    }
+    p.sway_actuated = false;
+    const BodyForces torpedo = PlanarRigidBody(p, 0.0, 0.0).limited(demand);
+    EXPECT_LE(std::abs(torpedo.surge), p.thrust_max);
+    EXPECT_LE(std::abs(torpedo.yaw_torque), p.yaw_torque_max);
+    EXPECT_EQ(torpedo.sway, 0.0);
+  }
 }
 
 TEST(PlanarRigidBodyTest, WrapsTheHeading) {

@@ -8,8 +8,7 @@ kc_add_gtest(test_simulation
   test/simulation/standard_normal_source_test.cpp
   test/simulation/tracking_error_statistics_test.cpp
   test/simulation/trajectory_follower_test.cpp
+  test/simulation/vectored_thrust_allocation_test.cpp
   test/simulation/actual_path_plot_test.cpp
   LIBRARIES kc_parameters kc_simulation kc_plot PkgConfig::CAIRO)
-kc_add_gtest(test_simulation_thesis_trends
-  test/simulation/thesis_trends_test.cpp
-  LIBRARIES kc_parameters kc_mission kc_simulation)
+

@@ -266,27 +266,47 @@ TEST(TrajectoryFollowerTest, AFluctuatingCurrentPushesTheRobotOffItsLine) {
   }
 }
 
-TEST(TrajectoryFollowerTest, TheDynamicVehicleSlipsOutwardsOnAnArc) {
-  // A quarter circle of radius 1 m sampled every 0.1 m, as the thesis's arcs are: the
-  // unactuated sway slips to the right in a left turn, and the robot ends up off the arc.
+/// A quarter circle of radius 1 m sampled every 0.1 m, as the thesis's arcs are.
+std::vector<Pose2> quarterCircle() {
   std::vector<Pose2> arc;
   for (int i = 0; i <= 16; ++i) {
     const double angle = M_PI / 2 * i / 16.0;
     arc.push_back({std::sin(angle), 1.0 - std::cos(angle), angle});
   }
+  return arc;
+}
+
+/// The largest sway speed (m/s) through the water, with its sign, while following `arc`.
+double mostSway(const PlannerParameters& parameters, const std::vector<Pose2>& arc) {
   RobotState start;
   start.pose = arc.front();
-  TrajectoryFollower follower(robotModelOf(withVehicle("dynamic")), arc, start);
+  TrajectoryFollower follower(robotModelOf(parameters), arc, start);
   double most_sway = 0.0;
   while (!follower.finished()) {
     follower.step();
-    most_sway = std::min(most_sway, follower.state().sway);
+    if (std::abs(follower.state().sway) > std::abs(most_sway)) most_sway = follower.state().sway;
   }
-  EXPECT_LT(most_sway, -1e-4);
-  const SimulationResult result =
-      RobotSimulator(robotModelOf(withVehicle("dynamic"))).simulate(arc);
+  return most_sway;
+}
+
+TEST(TrajectoryFollowerTest, TheTorpedoVariantSlipsOutwardsOnAnArc) {
+  // Without sway actuation, the body slips to the right in a left turn, and the robot ends
+  // up off the arc.
+  PlannerParameters torpedo = withVehicle("dynamic");
+  torpedo.sway_actuated = false;
+  const std::vector<Pose2> arc = quarterCircle();
+  EXPECT_LT(mostSway(torpedo, arc), -1e-4);
+  const SimulationResult result = RobotSimulator(robotModelOf(torpedo)).simulate(arc);
   EXPECT_GT(result.tracking.mean_m, 1e-4);
   EXPECT_LT(result.tracking.percentiles_m.back(), 0.2);
+}
+
+TEST(TrajectoryFollowerTest, TheSwayLoopHoldsTheVectoredVehicleOffSlipping) {
+  // With sway actuated (the default), the sway loop feeds the Coriolis force forward: the
+  // sway speed through the water stays within a hundredth of the speed limit.
+  const PlannerParameters vectored = withVehicle("dynamic");
+  ASSERT_TRUE(vectored.sway_actuated);
+  EXPECT_LT(std::abs(mostSway(vectored, quarterCircle())), 1e-2 * vectored.v_max);
 }
 
 TEST(TrajectoryFollowerTest, CrabsIntoACrossCurrentAndStillArrives) {

@@ -16,7 +16,10 @@ using StateVector = std::array<double, 6>;
 
 PlanarRigidBody::PlanarRigidBody(const RigidBodyParameters& parameters, double current_x,
                                  double current_y)
-    : parameters_(parameters), current_x_(current_x), current_y_(current_y) {}
+    : parameters_(parameters),
+      allocation_(parameters.thrust_max, parameters.yaw_torque_max),
+      current_x_(current_x),
+      current_y_(current_y) {}
 
 void PlanarRigidBody::setCurrent(double current_x, double current_y) {
   current_x_ = current_x;
@@ -24,7 +27,8 @@ void PlanarRigidBody::setCurrent(double current_x, double current_y) {
 }
 
 BodyForces PlanarRigidBody::limited(const BodyForces& forces) const {
-  return {std::clamp(forces.surge, -parameters_.thrust_max, parameters_.thrust_max),
+  if (parameters_.sway_actuated) return allocation_.achievable(forces);
+  return {std::clamp(forces.surge, -parameters_.thrust_max, parameters_.thrust_max), 0.0,
           std::clamp(forces.yaw_torque, -parameters_.yaw_torque_max, parameters_.yaw_torque_max)};
 }
 
@@ -40,14 +44,14 @@ void PlanarRigidBody::derivative(const double* s, const BodyForces& forces, doub
   ds[1] = std::sin(psi) * u + std::cos(psi) * v + current_y_;
   ds[2] = r;
   ds[3] = (forces.surge + m22 * v * r - p.surgeDamping(u)) / m11;
-  ds[4] = (-m11 * u * r - p.swayDamping(v)) / m22;
+  ds[4] = (forces.sway - m11 * u * r - p.swayDamping(v)) / m22;
   ds[5] = (forces.yaw_torque + (m11 - m22) * u * v - p.yawDamping(r)) / p.yawInertia();
 }
 
 RigidBodyState PlanarRigidBody::advance(const RigidBodyState& state, const BodyForces& forces,
-                                        double duration) const {
+                                        double duration, double max_step) const {
   const BodyForces applied = limited(forces);
-  const int steps = std::max(1, static_cast<int>(std::ceil(duration / kIntegrationStep - 1e-9)));
+  const int steps = std::max(1, static_cast<int>(std::ceil(duration / max_step - 1e-9)));
   const double h = duration / steps;
   StateVector s{state.pose.x, state.pose.y, state.pose.yaw,
                 state.surge,  state.sway,   state.yaw_rate};

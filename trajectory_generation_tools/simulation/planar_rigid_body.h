@@ -1,7 +1,9 @@
 #pragma once
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
+#include "trajectory_generation_tools/simulation/body_forces.h"
 #include "trajectory_generation_tools/simulation/rigid_body_parameters.h"
+#include "trajectory_generation_tools/simulation/vectored_thrust_allocation.h"
 
 namespace kinematic_coverage::core {
 
@@ -13,18 +15,12 @@ struct RigidBodyState {
   double yaw_rate = 0.0;  ///< r, rad/s
 };
 
-/// The forces a controller applies, in the body frame.
-struct BodyForces {
-  double surge = 0.0;       ///< N along the heading
-  double yaw_torque = 0.0;  ///< N m, counter-clockwise
-};
-
 /// A planar rigid body in surge, sway and yaw, the dynamic vehicle of the simulator
 /// (vehicle_model: dynamic). Its equations of motion, for velocities relative to the
 /// water nu = (u, v, r) and a constant, irrotational current V_c (Fossen 2011, its
 /// relative-velocity form for such a current):
 ///   m11 u' = X + m22 v r - D_u(u)
-///   m22 v' =   - m11 u r - D_v(v)            (sway is not actuated)
+///   m22 v' = Y - m11 u r - D_v(v)            (Y = 0 where sway is not actuated)
 ///   m33 r' = N + (m11 - m22) u v - D_r(r)    (the Munk moment)
 ///   (x, y)' = R(psi) (u, v) + V_c,  psi' = r
 /// with D_*(s) = (d_linear + d_quadratic |s|) s. It is integrated with the classical
@@ -40,12 +36,14 @@ class PlanarRigidBody {
   /// Sets the current (m/s) that later advances see, for a current that varies in time.
   void setCurrent(double current_x, double current_y);
 
-  /// The state after `duration` s under constant `forces` (each clamped to the thrust and
-  /// torque limits first), starting from `state`; the heading wrapped into (-pi, pi].
-  RigidBodyState advance(const RigidBodyState& state, const BodyForces& forces,
-                         double duration) const;
+  /// The state after `duration` s under constant `forces` (limited first), starting from
+  /// `state`, in equal steps of at most `max_step` s; the heading wrapped into (-pi, pi].
+  RigidBodyState advance(const RigidBodyState& state, const BodyForces& forces, double duration,
+                         double max_step = kIntegrationStep) const;
 
-  /// `forces` clamped to +-thrust_max and +-yaw_torque_max.
+  /// What the thrusters give of `forces`: with sway actuated, the vectored frame's
+  /// achievable forces (VectoredThrustAllocation); without, no sway force, surge clamped to
+  /// +-thrust_max and yaw torque to +-yaw_torque_max apart.
   BodyForces limited(const BodyForces& forces) const;
 
   const RigidBodyParameters& parameters() const { return parameters_; }
@@ -55,6 +53,7 @@ class PlanarRigidBody {
   void derivative(const double* s, const BodyForces& forces, double* ds) const;
 
   RigidBodyParameters parameters_;
+  VectoredThrustAllocation allocation_;
   double current_x_ = 0.0;
   double current_y_ = 0.0;
 };

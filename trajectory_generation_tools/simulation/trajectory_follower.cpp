@@ -134,6 +134,12 @@ void TrajectoryFollower::advanceDynamic(const Command& command, double previous_
   forces.yaw_torque =
       b.yawInertia() * model_.yaw_rate_loop_gain * (command.yaw_rate - state_.yaw_rate) +
       b.yawDamping(command.yaw_rate);
+  if (b.sway_actuated) {
+    // No sideslip through the water: the Coriolis force that slips a turning body outwards
+    // fed forward, and the sway speed's error on the surge loop's bandwidth.
+    forces.sway = b.surgeInertia() * state_.speed * state_.yaw_rate -
+                  b.swayInertia() * model_.surge_loop_gain * state_.sway;
+  }
   const Point2 current = disturbance_.current();
   body_.setCurrent(current.x(), current.y());
   const RigidBodyState next = body_.advance(

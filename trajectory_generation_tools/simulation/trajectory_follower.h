@@ -59,9 +59,12 @@ struct RobotState {
 ///   each a proportional term on its inertia plus feedforwards of its damping (and, in
 ///   surge, of the reference's acceleration, so that braking is not late):
 ///   X = m11 * (u_ref' + surge_loop_gain * (u_ref(t0) - u)) + D_u(u_ref) and
-///   N = m33 * yaw_rate_loop_gain * (r_cmd - r) + D_r(r_cmd), clamped to thrust_max and
-///   yaw_torque_max and held over the step. Sway is not actuated: in a turn the body slips
-///   outwards.
+///   N = m33 * yaw_rate_loop_gain * (r_cmd - r) + D_r(r_cmd). With sway actuated (the
+///   vectored frame, the default) a third loop holds the sway speed through the water at
+///   zero: Y = m11 u r - m22 * surge_loop_gain * v, the Coriolis force fed forward. The
+///   thrusters give what they can of (X, Y, N) (PlanarRigidBody::limited), held over the
+///   step. Without sway actuation (the torpedo-like variant) the body slips outwards in a
+///   turn.
 /// The thesis's time trends come out of it (docs/EXPERIMENTS.md): with a high yaw_gain the
 /// turns in place are fast (the yaw rate saturates) while densely sampled arcs cost a slow
 /// down at every pose; with a low yaw_gain each rotation pose is approached exponentially,
