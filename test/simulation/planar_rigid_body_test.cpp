@@ -150,18 +150,16 @@ TEST(PlanarRigidBodyTest, UnforcedSwayAndYawHaveTheSignsOfCoriolisAndMunk) {
   const RigidBodyParameters p;
   ASSERT_GT(p.swayInertia(), p.surgeInertia());
   const PlanarRigidBody body(p, 0.0, 0.0);
-  RigidBodyState turning;
-  turning.surge = 0.5;
-  turning.yaw_rate = 0.5;
-  EXPECT_LT(body.advance(turning, {}, 0.01).sway, 0.0);
-  turning.yaw_rate = -0.5;
-  EXPECT_GT(body.advance(turning, {}, 0.01).sway, 0.0);
-  RigidBodyState slipping;
-  slipping.surge = 0.5;
-  slipping.sway = 0.2;
-  EXPECT_LT(body.advance(slipping, {}, 0.01).yaw_rate, 0.0);
-  slipping.sway = -0.2;
-  EXPECT_GT(body.advance(slipping, {}, 0.01).yaw_rate, 0.0);
+  for (const double side : {1.0, -1.0}) {
+    RigidBodyState turning;
+    turning.surge = 0.5;
+    turning.yaw_rate = 0.5 * side;
+    EXPECT_LT(side * body.advance(turning, {}, 0.01).sway, 0.0) << side;
+    RigidBodyState slipping;
+    slipping.surge = 0.5;
+    slipping.sway = 0.2 * side;
+    EXPECT_LT(side * body.advance(slipping, {}, 0.01).yaw_rate, 0.0) << side;
+  }
 }
 
 TEST(PlanarRigidBodyTest, HalvingTheStepCutsTheIntegrationErrorSixteenfold) {

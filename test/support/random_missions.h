@@ -10,6 +10,12 @@
 namespace kinematic_coverage::core {
 namespace testing {
 
+/// m: the range of the hull's size and of the footprint's width.
+constexpr double kMinHullSize = 50.0;
+constexpr double kMaxHullSize = 200.0;
+constexpr double kMinFootprintWidth = 2.0;
+constexpr double kMaxFootprintWidth = 12.9;
+
 /// A seeded random mission as the planner's tests size them: a hull 50 to 200 m across with up to
 /// `holes_max` holes, a footprint 2 to 12.9 m wide, a wall distance of 0.5 to 1.5 m and a
 /// lateral overlap of 0.2 to 0.6; start and goal near two hull vertices, pulled inwards out
@@ -22,8 +28,8 @@ struct RandomMission {
 
 inline RandomMission randomMission(std::uint64_t seed, int holes_max) {
   std::mt19937 rng(static_cast<std::mt19937::result_type>(seed));
-  std::uniform_real_distribution<double> size(50.0, 200.0);
-  std::uniform_real_distribution<double> footprint_width(2.0, 12.9);
+  std::uniform_real_distribution<double> size(kMinHullSize, kMaxHullSize);
+  std::uniform_real_distribution<double> footprint_width(kMinFootprintWidth, kMaxFootprintWidth);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   RandomMission random;
   random.size_m = size(rng);

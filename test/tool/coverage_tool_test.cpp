@@ -746,6 +746,30 @@ TEST(CoverageTool, SimulatesPlansTrajectoryAndWritesItsFiles) {
             5.0 * metric(json, "tracking_error_mean_m"));
 }
 
+TEST(CoverageTool, SimulateRepeatsExactlyForTheSameSeed) {
+  // The lake's disturbances are seeded (disturbance_seed): two runs give identical files,
+  // and another seed another run.
+  const std::string lake = std::string(KC_SOURCE_DIR) + "/config/missions/lake_7_5.yaml";
+  const std::string plan_dir = scratchDir() + "/repeat_plan_out";
+  std::filesystem::remove_all(plan_dir);
+  ASSERT_EQ(runTool("plan '" + lake + "' --out '" + plan_dir + "'").exit_status, 0);
+  const auto simulate = [&](const std::string& name, const std::string& seed) {
+    const std::string out_dir = scratchDir() + "/" + name;
+    std::filesystem::remove_all(out_dir);
+    const ToolRun run = runTool("simulate '" + lake + "' --trajectory '" + plan_dir +
+                                "/trajectory.csv' --out '" + out_dir +
+                                "' --set current_sigma=0.02 --set navigation_sigma=0.1 "
+                                "--set disturbance_seed=" +
+                                seed);
+    EXPECT_EQ(run.exit_status, 0) << name;
+    return readText(out_dir + "/actual.csv");
+  };
+  const std::string first = simulate("repeat_a", "1");
+  EXPECT_GT(first.size(), 1000u);
+  EXPECT_EQ(simulate("repeat_b", "1"), first);
+  EXPECT_NE(simulate("repeat_c", "2"), first);
+}
+
 TEST(CoverageTool, SimulateWarnsLoudlyWhenTheRobotHitsAnObstacle) {
   // A trajectory straight through the obstacle (8..12, 8..12): the run is valid, but the
   // contact is the first thing the output says about it.
