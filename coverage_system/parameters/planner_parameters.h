@@ -72,6 +72,12 @@ struct PlannerParameters {
   bool sway_actuated{};
   double surge_loop_gain{};
   double yaw_rate_loop_gain{};
+  std::string controller{};
+  bool braking{};
+  double tracking_natural_frequency{};
+  double tracking_damping{};
+  double pose_rate{};
+  double los_lookahead{};
   double yaw_gain{};
   double position_gain{};
   double position_tolerance{};

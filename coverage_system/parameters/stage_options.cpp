@@ -152,6 +152,12 @@ RobotModel robotModelOf(const PlannerParameters& parameters) {
   body.sway_actuated = p.sway_actuated;
   model.surge_loop_gain = p.surge_loop_gain;
   model.yaw_rate_loop_gain = p.yaw_rate_loop_gain;
+  model.controller = choiceOf(p.controller, kTrackingControllers);
+  model.braking = p.braking;
+  model.tracking_natural_frequency = p.tracking_natural_frequency;
+  model.tracking_damping = p.tracking_damping;
+  model.pose_rate = p.pose_rate;
+  model.los_lookahead = p.los_lookahead;
   model.yaw_gain = p.yaw_gain;
   model.position_gain = p.position_gain;
   model.position_tolerance = p.position_tolerance;

@@ -433,7 +433,9 @@ TEST(ThesisYaml, DiffersFromTheDefaultsOnlyWhereTheDefaultsGoBeyondTheThesis) {
                                                             {"smoothing_strategy", "local"},
                                                             {"coverage_repair", "false"},
                                                             {"boundary_simplification", "0"},
-                                                            {"smoothing_clearance", "0"}};
+                                                            {"smoothing_clearance", "0"},
+                                                            {"controller", "setpoint"},
+                                                            {"braking", "false"}};
   const PlannerParameters thesis =
       MissionFileReader().readParameters(std::string(KC_SOURCE_DIR) + "/config/thesis.yaml");
   const PlannerParameters defaults;
