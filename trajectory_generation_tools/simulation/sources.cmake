@@ -8,6 +8,7 @@ kc_add_stage_library(kc_simulation
     trajectory_generation_tools/simulation/robot_model_warnings.cpp
     trajectory_generation_tools/simulation/robot_simulator.cpp
     trajectory_generation_tools/simulation/standard_normal_source.cpp
+    trajectory_generation_tools/simulation/timed_reference.cpp
     trajectory_generation_tools/simulation/tracking_error_statistics.cpp
     trajectory_generation_tools/simulation/trajectory_follower.cpp
     trajectory_generation_tools/simulation/vectored_thrust_allocation.cpp
