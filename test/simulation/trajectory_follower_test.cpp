@@ -34,6 +34,7 @@ std::vector<Pose2> rotation(double angle, double step) {
 /// The default parameters with `vehicle_model`.
 PlannerParameters withVehicle(const std::string& vehicle_model) {
   PlannerParameters parameters;
+  parameters.controller = "setpoint";
   parameters.vehicle_model = vehicle_model;
   return parameters;
 }
@@ -386,6 +387,71 @@ TEST(TrajectoryFollowerTest, RejectsInvalidInput) {
   too_long.sim_time_limit = 1e9;
   EXPECT_THROW(RobotSimulator{robotModelOf(too_long)}, InvalidInputError);
   EXPECT_THROW(RobotSimulator(robotModelOf(parameters)).simulate({}), InvalidInputError);
+}
+
+/// A robot model of the dynamic, vectored vehicle with the timed controller, in calm water.
+RobotModel timedModel(double sim_dt) {
+  PlannerParameters parameters;
+  parameters.controller = "timed";
+  parameters.sim_dt = sim_dt;
+  return robotModelOf(parameters);
+}
+
+TEST(TrajectoryFollowerTest, TheTimedControllerHasNoSteadyErrorOnAConstantVelocityReference) {
+  // A straight line at 0.3 m/s, a pose every 0.1 s: once the start's transient has died
+  // away, the feedforward carries the robot on the reference with no error left.
+  std::vector<Pose2> poses;
+  std::vector<double> times;
+  for (int k = 0; k <= 600; ++k) {
+    poses.push_back({0.03 * k, 0.0, 0.0});
+    times.push_back(0.1 * k);
+  }
+  const TimedReference reference(poses, times);
+  TrajectoryFollower follower(timedModel(0.1), poses, RobotState{}, times);
+  double largest_late_error = 0.0;
+  while (!follower.finished() && follower.state().t < 50.0) {
+    follower.step();
+    if (follower.state().t > 30.0) {
+      largest_late_error = std::max(
+          largest_late_error,
+          (follower.state().pose.position() - reference.at(follower.state().t).position).norm());
+    }
+  }
+  EXPECT_LT(largest_late_error, 1e-6);
+}
+
+TEST(TrajectoryFollowerTest, TheTimedControllerHasTheAnalyticStepResponse) {
+  // A robot a small step e0 ahead of a resting reference: the PD law with the damping fed
+  // forward at the reference velocity (zero) leaves the body's own linear damping d in the
+  // loop, m e'' + (Kd + d) e' + Kp e = 0, whose solution from rest is
+  // e0 (l2 e^(l1 t) - l1 e^(l2 t)) / (l2 - l1) with l1, l2 = -wn (z +- sqrt(z^2 - 1)) and
+  // z = zeta + d / (2 m wn). The step is small enough that the quadratic damping is a
+  // percent of the linear; the step is 0.01 s.
+  RobotModel model = timedModel(0.01);
+  model.position_tolerance = 1e-6;  // so that the run goes on until the step has died away
+  const RigidBodyParameters& body = model.body;
+  const double wn = model.tracking_natural_frequency;
+  const double z =
+      model.tracking_damping + body.damping_surge_linear / (2.0 * body.surgeInertia() * wn);
+  ASSERT_GT(z, 1.0);
+  const double l1 = -wn * (z - std::sqrt(z * z - 1.0));
+  const double l2 = -wn * (z + std::sqrt(z * z - 1.0));
+  const double e0 = 0.01;
+  RobotState start;
+  start.pose = {e0, 0.0, 0.0};
+  TrajectoryFollower follower(model, {{0.0, 0.0, 0.0}}, start, {0.0});
+  for (const double t : {1.0, 2.0, 4.0}) {
+    while (!follower.finished() && follower.state().t < t - 1e-9) follower.step();
+    ASSERT_FALSE(follower.finished()) << t;
+    const double expected = e0 * (l2 * std::exp(l1 * t) - l1 * std::exp(l2 * t)) / (l2 - l1);
+    EXPECT_NEAR(follower.state().pose.x, expected, 0.03 * e0) << t;
+    EXPECT_NEAR(follower.state().pose.y, 0.0, 1e-12) << t;
+  }
+}
+
+TEST(TrajectoryFollowerTest, TheTimedControllerNeedsTheTrajectorysTimes) {
+  EXPECT_THROW(TrajectoryFollower(timedModel(0.1), {{0.0, 0.0, 0.0}}, RobotState{}),
+               InvalidInputError);
 }
 
 }  // namespace

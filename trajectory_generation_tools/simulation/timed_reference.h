@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -33,6 +34,8 @@ class TimedReference {
   /// s: the last pose's time.
   double endTime() const { return times_.back(); }
   const Pose2& lastPose() const { return poses_.back(); }
+  /// The index of the pose the reference is heading to at `t` (the end of its piece).
+  std::size_t pieceEnd(double t) const { return std::min(pieceAt(t) + 1, poses_.size() - 1); }
 
  private:
   /// The index k of the piece [t_k, t_k+1] that holds `t` (times clamped to the ends).

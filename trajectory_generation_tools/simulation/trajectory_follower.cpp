@@ -21,13 +21,15 @@ bool isFinite(const Pose2& pose) {
 }  // namespace
 
 TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets,
-                                       const RobotState& start)
+                                       const RobotState& start, std::vector<double> times)
     : TrajectoryFollower(
           model, std::move(targets), start,
-          EnvironmentDisturbance(model.disturbance, model.current_x, model.current_y)) {}
+          EnvironmentDisturbance(model.disturbance, model.current_x, model.current_y),
+          std::move(times)) {}
 
 TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets,
-                                       const RobotState& start, const EnvironmentDisturbance& lake)
+                                       const RobotState& start, const EnvironmentDisturbance& lake,
+                                       std::vector<double> times)
     : model_(model),
       targets_(std::move(targets)),
       state_(start),
@@ -60,6 +62,15 @@ TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose
   }
   speed_reference_ = std::max(state_.speed, 0.0);
   start_time_ = state_.t;
+  if (model_.controller == TrackingController::kTimed) {
+    if (times.empty()) {
+      throw InvalidInputError(
+          "trajectory follower: controller timed needs the trajectory's times (its t column); "
+          "controller setpoint follows poses alone");
+    }
+    reference_.emplace(targets_, std::move(times));
+    return;
+  }
   skipReachedTargets();
 }
 
@@ -140,6 +151,10 @@ void TrajectoryFollower::advanceDynamic(const Command& command, double previous_
     forces.sway = b.surgeInertia() * state_.speed * state_.yaw_rate -
                   b.swayInertia() * model_.surge_loop_gain * state_.sway;
   }
+  advanceBody(forces);
+}
+
+void TrajectoryFollower::advanceBody(const BodyForces& forces) {
   const Point2 current = disturbance_.current();
   body_.setCurrent(current.x(), current.y());
   const RigidBodyState next = body_.advance(
@@ -150,8 +165,92 @@ void TrajectoryFollower::advanceDynamic(const Command& command, double previous_
   state_.yaw_rate = next.yaw_rate;
 }
 
+BodyForces TrajectoryFollower::timedForces(const ReferenceState& reference) const {
+  // Per world axis, the acceleration a_d + Kd / M (v_d - v) + Kp / M (p_d - p), with
+  // Kp = M wn^2 and Kd = 2 zeta wn M; in the body frame, the rigid body's Coriolis terms
+  // cancelled and its damping at the reference velocity fed forward (sway actuated). The
+  // controller knows the mean current, not its fluctuation, and steers by its estimate.
+  const RigidBodyParameters& b = model_.body;
+  const double wn = model_.tracking_natural_frequency;
+  const double zeta = model_.tracking_damping;
+  const Pose2 estimate = estimatedPose();
+  const double c = std::cos(state_.pose.yaw);
+  const double s = std::sin(state_.pose.yaw);
+  const double u = state_.speed;
+  const double v = state_.sway;
+  const double r = state_.yaw_rate;
+  const Point2 current(model_.current_x, model_.current_y);
+  const Point2 over_ground = Point2(c * u - s * v, s * u + c * v) + current;
+  const Point2 wanted = reference.acceleration +
+                        2.0 * zeta * wn * (reference.velocity - over_ground) +
+                        wn * wn * (reference.position - estimate.position());
+  const Point2 through_water = reference.velocity - current;
+  const double u_ref = c * through_water.x() + s * through_water.y();
+  const double v_ref = -s * through_water.x() + c * through_water.y();
+  BodyForces forces;
+  forces.surge = b.surgeInertia() * (c * wanted.x() + s * wanted.y() + r * v) -
+                 b.swayInertia() * v * r + b.surgeDamping(u_ref);
+  if (b.sway_actuated) {
+    forces.sway = b.swayInertia() * (-s * wanted.x() + c * wanted.y() - r * u) +
+                  b.surgeInertia() * u * r + b.swayDamping(v_ref);
+  }
+  // Heading: the same PD on the reference's heading.
+  const double heading_error = wrapAngle(reference.yaw - state_.pose.yaw);
+  forces.yaw_torque =
+      b.yawInertia() * (2.0 * zeta * wn * (reference.yaw_rate - r) + wn * wn * heading_error) +
+      b.yawDamping(reference.yaw_rate) - (b.surgeInertia() - b.swayInertia()) * u * v;
+  return forces;
+}
+
+TrajectoryFollower::Command TrajectoryFollower::timedCommand(
+    const ReferenceState& reference) const {
+  // The kinematic vehicle takes speed and yaw rate: the reference's velocity plus wn times
+  // the position error, steered by yaw_gain (towards the reference's heading at rest).
+  const VehicleLimits& limits = model_.vehicle;
+  const Point2 wanted =
+      reference.velocity +
+      model_.tracking_natural_frequency * (reference.position - estimatedPose().position()) -
+      Point2(model_.current_x, model_.current_y);
+  const double heading =
+      wanted.norm() > model_.position_tolerance * model_.tracking_natural_frequency
+          ? std::atan2(wanted.y(), wanted.x())
+          : reference.yaw;
+  Command command;
+  command.yaw_rate = std::clamp(model_.yaw_gain * wrapAngle(heading - state_.pose.yaw),
+                                -limits.yaw_rate_max, limits.yaw_rate_max);
+  const Point2 along(std::cos(state_.pose.yaw), std::sin(state_.pose.yaw));
+  command.speed = std::clamp(wanted.dot(along), 0.0, limits.v_max);
+  return command;
+}
+
+void TrajectoryFollower::stepTimed() {
+  const ReferenceState reference = reference_->at(state_.t);
+  if (model_.vehicle_model == VehicleModel::kKinematic) {
+    speed_reference_ = timedCommand(reference).speed;
+    advanceKinematic(timedCommand(reference));
+  } else {
+    advanceBody(timedForces(reference));
+  }
+  disturbance_.advance(model_.sim_dt);
+  ++steps_;
+  state_.t = start_time_ + static_cast<double>(steps_) * model_.sim_dt;
+  // Done once the reference has ended and the robot is at its last pose.
+  const Pose2& last = reference_->lastPose();
+  if (state_.t >= reference_->endTime() &&
+      (estimatedPose().position() - last.position()).norm() <= model_.position_tolerance &&
+      std::abs(wrapAngle(last.yaw - state_.pose.yaw)) <= model_.yaw_tolerance) {
+    next_target_ = targets_.size();
+  } else {
+    next_target_ = std::min(reference_->pieceEnd(state_.t), targets_.size() - 1);
+  }
+}
+
 void TrajectoryFollower::step() {
   if (finished()) return;
+  if (reference_) {
+    stepTimed();
+    return;
+  }
   const Command command = this->command();
   const double speed_change = model_.vehicle.a_max * model_.sim_dt;
   const double previous_reference = speed_reference_;

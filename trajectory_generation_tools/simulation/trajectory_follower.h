@@ -1,12 +1,14 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/simulation/environment_disturbance.h"
 #include "trajectory_generation_tools/simulation/planar_rigid_body.h"
 #include "trajectory_generation_tools/simulation/robot_model.h"
+#include "trajectory_generation_tools/simulation/timed_reference.h"
 
 namespace kinematic_coverage::core {
 
@@ -75,13 +77,17 @@ class TrajectoryFollower {
   /// Follows `targets` from `start` with the robot `model` (its ranges checked where it
   /// was made: robotModelOf). Targets already reached at the start are skipped. Throws
   /// InvalidInputError for no targets, or a non-finite target or start.
-  TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets, const RobotState& start);
+  /// With `controller: timed`, `times` holds each target's time (the trajectory's t
+  /// column) and the robot tracks the reference p_d(t) they make (TimedReference) instead
+  /// of homing on each target; it throws InvalidInputError without them.
+  TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets, const RobotState& start,
+                     std::vector<double> times = {});
 
   /// As above, in a lake whose disturbances have already run on (`lake`, e.g. the
   /// disturbance() of the follower of the trajectory before, for a robot handed a new
   /// trajectory mid-mission) instead of the model's disturbances from their first draws.
   TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets, const RobotState& start,
-                     const EnvironmentDisturbance& lake);
+                     const EnvironmentDisturbance& lake, std::vector<double> times = {});
 
   /// Advances the robot by sim_dt; does nothing once finished().
   void step();
@@ -116,9 +122,18 @@ class TrajectoryFollower {
   void advanceKinematic(const Command& command);
   /// `previous_reference`: m/s, the surge-speed reference at the start of the step.
   void advanceDynamic(const Command& command, double previous_reference);
+  /// The dynamic vehicle under `forces` for one step, in the lake's current.
+  void advanceBody(const BodyForces& forces);
+  /// controller: timed. One step of tracking the reference.
+  void stepTimed();
+  /// The forces of the timed controller: feedforward plus PD on the reference, per axis.
+  BodyForces timedForces(const ReferenceState& reference) const;
+  /// The kinematic vehicle's command under the timed controller.
+  Command timedCommand(const ReferenceState& reference) const;
 
   RobotModel model_;
   std::vector<Pose2> targets_;
+  std::optional<TimedReference> reference_;  ///< controller: timed
   /// Per target: true for a heading target (same position as the target before it).
   std::vector<bool> heading_target_;
   /// Per target: m along the targets from it to the next stop (0 at a stop), for braking.
