@@ -17,6 +17,7 @@
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/base/text_file_writer.h"
+#include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/validation/free_area_builder.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
@@ -224,7 +225,20 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const Mission& mission = input->mission;
 
   auto stage_start = std::chrono::steady_clock::now();
-  const std::vector<Pose2> desired = PoseCsvReader().readPoses(trajectory_path);
+  const PoseTable table = PoseCsvReader().read(trajectory_path);
+  std::vector<Pose2> desired;
+  std::vector<double> times;
+  desired.reserve(table.rows.size());
+  for (const PoseRecord& row : table.rows) {
+    desired.push_back(row.pose);
+    if (table.has_time) times.push_back(row.t);
+  }
+  if (robotModelOf(mission.parameters).controller == TrackingController::kTimed &&
+      !table.has_time) {
+    throw InvalidInputError(trajectory_path +
+                            ": controller timed tracks the trajectory's times, and the file has "
+                            "no t column (controller setpoint follows poses alone)");
+  }
   out << "read: " << trajectory_path << ": " << desired.size() << " poses ("
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
@@ -242,7 +256,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
 
   stage_start = std::chrono::steady_clock::now();
   const RobotModel robot = robotModelOf(mission.parameters);
-  const SimulationResult simulation = RobotSimulator(robot).simulate(desired);
+  const SimulationResult simulation = RobotSimulator(robot).simulate(desired, times);
   const TrackingErrorStatistics& tracking = simulation.tracking;
   out << "simulate: the " << mission.parameters.vehicle_model << " vehicle reached the last of "
       << desired.size() << " poses after " << simulation.traversal_time_s << " s in "

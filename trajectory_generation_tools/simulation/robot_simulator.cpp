@@ -62,11 +62,14 @@ AxisErrorStatistics axisStatistics(const std::vector<SimulationStep>& steps) {
 
 }  // namespace
 
-SimulationResult RobotSimulator::simulate(const std::vector<Pose2>& trajectory) const {
+SimulationResult RobotSimulator::simulate(const std::vector<Pose2>& trajectory,
+                                          const std::vector<double>& times) const {
   if (trajectory.empty()) throw InvalidInputError("simulate: the trajectory has no poses");
   RobotState start;
   start.pose = trajectory.front();
-  TrajectoryFollower follower(model_, trajectory, start);
+  TrajectoryFollower follower(
+      model_, trajectory, start,
+      model_.controller == TrackingController::kTimed ? times : std::vector<double>{});
   std::vector<Point2> path;
   path.reserve(trajectory.size());
   for (const Pose2& pose : trajectory) path.push_back(pose.position());

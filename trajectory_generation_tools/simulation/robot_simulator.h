@@ -58,10 +58,12 @@ class RobotSimulator {
   /// Throws InvalidInputError for a sim_time_limit of more than kMaxSteps steps of sim_dt.
   explicit RobotSimulator(const RobotModel& model);
 
-  /// Simulates following `trajectory` (its poses in order). Throws InvalidInputError for
-  /// no poses or a non-finite one, and when the robot has not reached the last pose within
-  /// sim_time_limit (a current faster than the robot, say).
-  SimulationResult simulate(const std::vector<Pose2>& trajectory) const;
+  /// Simulates following `trajectory` (its poses in order; `times`, one per pose, for the
+  /// timed controller). Throws InvalidInputError for no poses or a non-finite one, for the
+  /// timed controller without times, and when the robot has not reached the last pose
+  /// within sim_time_limit (a current faster than the robot, say).
+  SimulationResult simulate(const std::vector<Pose2>& trajectory,
+                            const std::vector<double>& times = {}) const;
 
  private:
   RobotModel model_;
