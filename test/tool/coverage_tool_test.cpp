@@ -737,10 +737,10 @@ TEST(CoverageTool, SimulatesPlansTrajectoryAndWritesItsFiles) {
               metric(json, "tracking_error_mean_m") * static_cast<double>(actual.size() - 2),
               1e-6 * metric(json, "tracking_error_sum_m"));
 
-  // --set reaches the robot: a current makes it track worse.
-  const ToolRun drift =
-      runTool("simulate '" + lake + "' --trajectory '" + trajectory + "' --out '" + out_dir +
-              "' --set current_x=0.2 --set current_y=0.1");
+  // --set reaches the robot: a current that the controller does not know of makes it track
+  // worse.
+  const ToolRun drift = runTool("simulate '" + lake + "' --trajectory '" + trajectory +
+                                "' --out '" + out_dir + "' --set current_sigma=0.05");
   ASSERT_EQ(drift.exit_status, 0);
   EXPECT_GT(metric(readText(out_dir + "/metrics.json"), "tracking_error_mean_m"),
             5.0 * metric(json, "tracking_error_mean_m"));
@@ -774,7 +774,8 @@ TEST(CoverageTool, SimulateWarnsLoudlyWhenTheRobotHitsAnObstacle) {
   // A trajectory straight through the obstacle (8..12, 8..12): the run is valid, but the
   // contact is the first thing the output says about it.
   const std::string path = writeMission("simulate_contact", mission(kSquareWithHole));
-  const std::string through = writeTrajectory("simulate_through", "x,y,yaw\n5,10,0\n15,10,0\n");
+  const std::string through =
+      writeTrajectory("simulate_through", "t,x,y,yaw\n0,5,10,0\n20,15,10,0\n");
   const std::string out_dir = scratchDir() + "/simulate_contact_out";
   std::filesystem::remove_all(out_dir);
   const ToolRun run =
@@ -795,7 +796,7 @@ TEST(CoverageTool, SimulateWarnsLoudlyWhenTheRobotHitsAnObstacle) {
   EXPECT_GE(metric(json, "driven_obstacle_time_s"), 7.5);
 
   // A navigation error larger than the position tolerance: the robot will hunt.
-  const std::string beside = writeTrajectory("simulate_beside", "x,y,yaw\n5,4,0\n15,4,0\n");
+  const std::string beside = writeTrajectory("simulate_beside", "t,x,y,yaw\n0,5,4,0\n20,15,4,0\n");
   const ToolRun noisy = runTool("simulate '" + path + "' --trajectory '" + beside + "' --out '" +
                                 out_dir + "' --set navigation_sigma=0.1");
   ASSERT_EQ(noisy.exit_status, 0);
@@ -809,7 +810,7 @@ TEST(CoverageTool, SimulateWarnsLoudlyWhenTheRobotHitsAnObstacle) {
 
 TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {
   const std::string path = writeMission("simulate_ok", mission(kSquareWithHole));
-  const std::string good = writeTrajectory("simulate_good", "x,y,yaw\n5,5,0\n9,5,0\n");
+  const std::string good = writeTrajectory("simulate_good", "t,x,y,yaw\n0,5,5,0\n8,9,5,0\n");
   const std::string out_dir = scratchDir() + "/simulate_invalid_out";
   std::filesystem::remove_all(out_dir);
   const auto simulate = [&](const std::string& trajectory, const std::string& options,
@@ -825,6 +826,9 @@ TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {
            "simulate_bad_row.csv:3: column y: 'abc' is not a number");
   simulate(writeTrajectory("simulate_empty", "x,y,yaw\n"), "",
            "simulate_empty.csv: the file has no rows");
+  simulate(writeTrajectory("simulate_untimed", "x,y,yaw\n5,5,0\n9,5,0\n"), "",
+           "simulate_untimed.csv: controller timed tracks the trajectory's times, and the file "
+           "has no t column (controller setpoint follows poses alone)");
   simulate(good, "--set sim_dt=0", "sim_dt = 0 is out of range: it must be a finite number > 0");
   simulate(good, "--set yaw_gain=20",
            "--set yaw_gain=20: yaw_gain = 20 is out of range: it must be a finite number > 0 "
@@ -833,8 +837,9 @@ TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {
   simulate(good, "--set sim_time_limit=1e9",
            "sim_time_limit = 1000000000 is out of range: it must be a finite number > 0 (s), and "
            "sim_time_limit / sim_dt <= 5000000 (sim_dt = 0.1)");
-  // An impossible request: a current faster than the robot, against its way.
-  simulate(good, "--set current_x=-1 --set sim_time_limit=60",
+  // An impossible request: a current faster than the robot, against its way (the setpoint
+  // follower, whose commands v_max bounds).
+  simulate(good, "--set controller=setpoint --set current_x=-1 --set sim_time_limit=60",
            "did not reach the last pose within sim_time_limit = 60 s (it was driving to pose 2 "
            "of 2)");
   expectInvalid("simulate '" + path + "' --out '" + out_dir + "'",
