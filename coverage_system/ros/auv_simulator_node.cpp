@@ -11,6 +11,7 @@
 #include "coverage_system/ros/message_conversion.h"
 #include "coverage_system/ros/ros_parameter_reader.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "trajectory_generation_tools/simulation/pose_sequence_timing.h"
 #include "trajectory_generation_tools/simulation/robot_model_warnings.h"
 
 namespace kinematic_coverage::nodes {
@@ -74,20 +75,25 @@ void AuvSimulatorNode::onTrajectory(const geometry_msgs::PoseArray::ConstPtr& me
       start.pose = poses.front();
     }
     const core::RobotModel robot = core::robotModelOf(parameters);
+    // The topic's poses carry no times: the timed controller's reference is timed by the
+    // planner's velocity model.
+    const std::vector<double> times = robot.controller == core::TrackingController::kTimed
+                                          ? core::PoseSequenceTiming(robot.vehicle).times(poses)
+                                          : std::vector<double>{};
     for (const std::string& warning : core::robotModelWarnings(robot)) {
       ROS_WARN("auv_simulator: %s", warning.c_str());
     }
     if (follower_ &&
         follower_->disturbance().isLakeOf(robot.disturbance, robot.current_x, robot.current_y)) {
-      follower_.emplace(robot, poses, start,
-                        core::EnvironmentDisturbance(follower_->disturbance()));
+      follower_.emplace(robot, poses, start, core::EnvironmentDisturbance(follower_->disturbance()),
+                        times);
     } else {
       if (follower_) {
         ROS_INFO(
             "auv_simulator: the current or disturbance parameters changed: the lake's "
             "disturbances start again from disturbance_seed");
       }
-      follower_.emplace(robot, poses, start);
+      follower_.emplace(robot, poses, start, times);
     }
     trajectory_stamp_ = message->header.stamp;
     trajectory_start_s_ = start.t;

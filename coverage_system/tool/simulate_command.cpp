@@ -24,6 +24,7 @@
 #include "trajectory_generation_tools/plot/coverage_plot.h"
 #include "trajectory_generation_tools/plot/tracking_error_plot.h"
 #include "trajectory_generation_tools/simulation/driven_path_clearance.h"
+#include "trajectory_generation_tools/simulation/pose_sequence_timing.h"
 #include "trajectory_generation_tools/simulation/robot_model_warnings.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 
@@ -215,6 +216,36 @@ std::string SimulateCommand::usage() {
          "  config/thesis.yaml) over the built-in defaults, before the mission file.\n";
 }
 
+namespace {
+
+/// A trajectory file's poses and, for the timed controller, their times.
+struct TimedPoses {
+  std::vector<Pose2> poses;
+  std::vector<double> times;
+};
+
+/// The poses of the file at `path`; with the timed controller their t column, or where the
+/// file has none, times from the planner's velocity model (said on `out`).
+TimedPoses readTimedPoses(const std::string& path, const RobotModel& robot, std::ostream& out) {
+  const PoseTable table = PoseCsvReader().read(path);
+  TimedPoses timed;
+  timed.poses.reserve(table.rows.size());
+  for (const PoseRecord& row : table.rows) {
+    timed.poses.push_back(row.pose);
+    if (table.has_time) timed.times.push_back(row.t);
+  }
+  if (robot.controller != TrackingController::kTimed) {
+    timed.times.clear();
+  } else if (!table.has_time) {
+    timed.times = PoseSequenceTiming(robot.vehicle).times(timed.poses);
+    out << "timed: " << path << " has no t column: its poses are timed by the planner's "
+        << "velocity model (" << timed.times.back() << " s)" << std::endl;
+  }
+  return timed;
+}
+
+}  // namespace
+
 void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& out,
                           std::ostream& err) const {
   const std::optional<MissionCommandInput> input = startMissionCommand(
@@ -225,20 +256,9 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   const Mission& mission = input->mission;
 
   auto stage_start = std::chrono::steady_clock::now();
-  const PoseTable table = PoseCsvReader().read(trajectory_path);
-  std::vector<Pose2> desired;
-  std::vector<double> times;
-  desired.reserve(table.rows.size());
-  for (const PoseRecord& row : table.rows) {
-    desired.push_back(row.pose);
-    if (table.has_time) times.push_back(row.t);
-  }
-  if (robotModelOf(mission.parameters).controller == TrackingController::kTimed &&
-      !table.has_time) {
-    throw InvalidInputError(trajectory_path +
-                            ": controller timed tracks the trajectory's times, and the file has "
-                            "no t column (controller setpoint follows poses alone)");
-  }
+  const RobotModel robot = robotModelOf(mission.parameters);
+  const TimedPoses trajectory = readTimedPoses(trajectory_path, robot, out);
+  const std::vector<Pose2>& desired = trajectory.poses;
   out << "read: " << trajectory_path << ": " << desired.size() << " poses ("
       << formatSeconds(secondsSince(stage_start)) << ")" << std::endl;
 
@@ -255,8 +275,7 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
       << std::endl;
 
   stage_start = std::chrono::steady_clock::now();
-  const RobotModel robot = robotModelOf(mission.parameters);
-  const SimulationResult simulation = RobotSimulator(robot).simulate(desired, times);
+  const SimulationResult simulation = RobotSimulator(robot).simulate(desired, trajectory.times);
   const TrackingErrorStatistics& tracking = simulation.tracking;
   out << "simulate: the " << mission.parameters.vehicle_model << " vehicle reached the last of "
       << desired.size() << " poses after " << simulation.traversal_time_s << " s in "

@@ -7,6 +7,7 @@ kc_add_gtest(test_simulation
   test/simulation/robot_model_warnings_test.cpp
   test/simulation/standard_normal_source_test.cpp
   test/simulation/tracking_error_statistics_test.cpp
+  test/simulation/pose_sequence_timing_test.cpp
   test/simulation/timed_reference_test.cpp
   test/simulation/trajectory_follower_test.cpp
   test/simulation/vectored_thrust_allocation_test.cpp

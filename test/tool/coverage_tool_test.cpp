@@ -826,9 +826,6 @@ TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {
            "simulate_bad_row.csv:3: column y: 'abc' is not a number");
   simulate(writeTrajectory("simulate_empty", "x,y,yaw\n"), "",
            "simulate_empty.csv: the file has no rows");
-  simulate(writeTrajectory("simulate_untimed", "x,y,yaw\n5,5,0\n9,5,0\n"), "",
-           "simulate_untimed.csv: controller timed tracks the trajectory's times, and the file "
-           "has no t column (controller setpoint follows poses alone)");
   simulate(good, "--set sim_dt=0", "sim_dt = 0 is out of range: it must be a finite number > 0");
   simulate(good, "--set yaw_gain=20",
            "--set yaw_gain=20: yaw_gain = 20 is out of range: it must be a finite number > 0 "

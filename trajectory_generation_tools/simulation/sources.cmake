@@ -5,6 +5,7 @@ kc_add_stage_library(kc_simulation
     trajectory_generation_tools/simulation/gauss_markov_process.cpp
     trajectory_generation_tools/simulation/path_distance.cpp
     trajectory_generation_tools/simulation/planar_rigid_body.cpp
+    trajectory_generation_tools/simulation/pose_sequence_timing.cpp
     trajectory_generation_tools/simulation/robot_model_warnings.cpp
     trajectory_generation_tools/simulation/robot_simulator.cpp
     trajectory_generation_tools/simulation/standard_normal_source.cpp

@@ -224,7 +224,9 @@ TrajectoryFollower::Command TrajectoryFollower::timedCommand(
 }
 
 void TrajectoryFollower::stepTimed() {
-  const ReferenceState reference = reference_->at(state_.t);
+  // The trajectory's times count from its start, which a robot handed a new trajectory
+  // mid-mission reaches at start_time_.
+  const ReferenceState reference = reference_->at(state_.t - start_time_);
   if (model_.vehicle_model == VehicleModel::kKinematic) {
     speed_reference_ = timedCommand(reference).speed;
     advanceKinematic(timedCommand(reference));
@@ -236,12 +238,13 @@ void TrajectoryFollower::stepTimed() {
   state_.t = start_time_ + static_cast<double>(steps_) * model_.sim_dt;
   // Done once the reference has ended and the robot is at its last pose.
   const Pose2& last = reference_->lastPose();
-  if (state_.t >= reference_->endTime() &&
+  const double elapsed = state_.t - start_time_;
+  if (elapsed >= reference_->endTime() &&
       (estimatedPose().position() - last.position()).norm() <= model_.position_tolerance &&
       std::abs(wrapAngle(last.yaw - state_.pose.yaw)) <= model_.yaw_tolerance) {
     next_target_ = targets_.size();
   } else {
-    next_target_ = std::min(reference_->pieceEnd(state_.t), targets_.size() - 1);
+    next_target_ = std::min(reference_->pieceEnd(elapsed), targets_.size() - 1);
   }
 }
 
