@@ -267,9 +267,11 @@ and its controllers' laws (test/simulation), never which trajectory wins.
 
 ## The robot model
 
-`TrajectoryFollower` (trajectory_generation_tools/simulation/trajectory_follower.h) is
-handed the trajectory's poses one after the other, not a timetable, so the traversal time
-comes out of its dynamics and controllers:
+`TrajectoryFollower` (trajectory_generation_tools/simulation/trajectory_follower.h) with
+`controller: setpoint`, as the thesis's robot: it is handed the trajectory's poses one after
+the other, not a timetable, so the traversal time comes out of its dynamics and controllers
+(the default controller, `timed`, tracks the planned times instead, and is not studied
+here yet):
 
 - a pose at the same position as the pose before it (an in-place rotation) is a heading
   target, reached within `yaw_tolerance`; any other pose is a position target, reached

@@ -50,6 +50,9 @@ lake=(--set current_sigma=0.02 --set navigation_sigma=0.1)
 robot_high_gain=()
 robot_low_gain=(--set yaw_gain=2 --set rotation_sampling_angle=0.1)
 current=(--set current_x=0.2 --set current_y=0.1)
+# The follower of these experiments: the setpoint follower, homing on each pose as the
+# thesis's robot did (the default controller, timed, tracks the planned times instead).
+follower=(--set controller=setpoint)
 # The four trajectories of each run: Algorithm 1 (with the thesis's no-contact check), the
 # default strategy, the default strategy with continuous-curvature (clothoid) turns,
 # unsmoothed.
@@ -67,7 +70,7 @@ run() {
   mkdir -p "$out/$name"
   "$tool" plan "$missions/$mission.yaml" --out "$out/$name/plan" "$@" >"$out/$name/plan.log"
   "$tool" simulate "$missions/$mission.yaml" --trajectory "$out/$name/plan/trajectory.csv" \
-    --out "$out/$name/simulate" "$@" >"$out/$name/simulate.log"
+    --out "$out/$name/simulate" "${follower[@]}" "$@" >"$out/$name/simulate.log"
   grep '^simulate: ' "$out/$name/simulate.log" >&2
 }
 
@@ -80,7 +83,7 @@ resimulate() {
   rm -rf "${out:?}/$name"
   mkdir -p "$out/$name"
   "$tool" simulate "$missions/$mission.yaml" --trajectory "$out/$from/plan/trajectory.csv" \
-    --out "$out/$name/simulate" "$@" >"$out/$name/simulate.log"
+    --out "$out/$name/simulate" "${follower[@]}" "$@" >"$out/$name/simulate.log"
   grep '^simulate: ' "$out/$name/simulate.log" >&2
 }
 

@@ -178,6 +178,18 @@ TEST(TrajectoryFollowerTest, BrakesInTimeToTurnInPlaceAtACorner) {
   }
 }
 
+TEST(TrajectoryFollowerTest, WithoutBrakingItRunsPastTheCorner) {
+  // braking: false is the plain P controller: the speed is not held to what a_max can stop,
+  // so the kinematic robot runs past the corner by more than the tolerance.
+  PlannerParameters parameters = withVehicle("kinematic");
+  parameters.braking = false;
+  const SimulationResult result =
+      RobotSimulator(robotModelOf(parameters)).simulate(unsmoothedCorner());
+  double furthest = 0.0;
+  for (const SimulationStep& step : result.steps) furthest = std::max(furthest, step.pose.x);
+  EXPECT_GT(furthest, 5.0 + parameters.position_tolerance);
+}
+
 TEST(TrajectoryFollowerTest, TheErrorsOfAStepAreConsistent) {
   // The axis parts make up the nearest-point error, and the target piece is never nearer
   // than the nearest point of the whole path.

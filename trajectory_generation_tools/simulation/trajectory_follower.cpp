@@ -106,7 +106,9 @@ TrajectoryFollower::Command TrajectoryFollower::command() const {
     // the water that gives it in the current.
     const Point2 to_target = target.position() - estimatedPose().position();
     const double braking_speed =
-        std::sqrt(2.0 * limits.a_max * (to_target.norm() + distance_to_stop_[next_target_]));
+        p.braking
+            ? std::sqrt(2.0 * limits.a_max * (to_target.norm() + distance_to_stop_[next_target_]))
+            : limits.v_max;
     const Point2 over_ground =
         std::min({limits.v_max, p.position_gain * to_target.norm(), braking_speed}) *
         to_target.normalized();
@@ -165,7 +167,8 @@ void TrajectoryFollower::advanceBody(const BodyForces& forces) {
   state_.yaw_rate = next.yaw_rate;
 }
 
-BodyForces TrajectoryFollower::timedForces(const ReferenceState& reference) const {
+BodyForces TrajectoryFollower::timedForces(const ReferenceState& reference,
+                                           const ReferenceState& ahead) const {
   // Per world axis, the acceleration a_d + Kd / M (v_d - v) + Kp / M (p_d - p), with
   // Kp = M wn^2 and Kd = 2 zeta wn M; in the body frame, the rigid body's Coriolis terms
   // cancelled and its damping at the reference velocity fed forward (sway actuated). The
@@ -194,11 +197,20 @@ BodyForces TrajectoryFollower::timedForces(const ReferenceState& reference) cons
     forces.sway = b.swayInertia() * (-s * wanted.x() + c * wanted.y() - r * u) +
                   b.surgeInertia() * u * r + b.swayDamping(v_ref);
   }
-  // Heading: the same PD on the reference's heading.
-  const double heading_error = wrapAngle(reference.yaw - state_.pose.yaw);
+  // Heading: the same PD on the reference's heading; a body that cannot push sideways
+  // steers towards the reference a little ahead instead, turning its surge onto the
+  // lateral error.
+  double heading = reference.yaw;
+  double yaw_rate = reference.yaw_rate;
+  const Point2 to_ahead = ahead.position - estimate.position();
+  if (!b.sway_actuated && to_ahead.norm() > model_.position_tolerance) {
+    heading = std::atan2(to_ahead.y(), to_ahead.x());
+    yaw_rate = 0.0;
+  }
+  const double heading_error = wrapAngle(heading - state_.pose.yaw);
   forces.yaw_torque =
-      b.yawInertia() * (2.0 * zeta * wn * (reference.yaw_rate - r) + wn * wn * heading_error) +
-      b.yawDamping(reference.yaw_rate) - (b.surgeInertia() - b.swayInertia()) * u * v;
+      b.yawInertia() * (2.0 * zeta * wn * (yaw_rate - r) + wn * wn * heading_error) +
+      b.yawDamping(yaw_rate) - (b.surgeInertia() - b.swayInertia()) * u * v;
   return forces;
 }
 
@@ -228,20 +240,28 @@ void TrajectoryFollower::stepTimed() {
   // mid-mission reaches at start_time_.
   const ReferenceState reference = reference_->at(state_.t - start_time_);
   if (model_.vehicle_model == VehicleModel::kKinematic) {
-    speed_reference_ = timedCommand(reference).speed;
-    advanceKinematic(timedCommand(reference));
+    const Command command = timedCommand(reference);
+    speed_reference_ = command.speed;
+    advanceKinematic(command);
   } else {
-    advanceBody(timedForces(reference));
+    const double lookahead_s = 1.0 / model_.tracking_natural_frequency;
+    advanceBody(timedForces(reference, reference_->at(state_.t - start_time_ + lookahead_s)));
   }
   disturbance_.advance(model_.sim_dt);
   ++steps_;
   state_.t = start_time_ + static_cast<double>(steps_) * model_.sim_dt;
-  // Done once the reference has ended and the robot is at its last pose.
+  // Done once the reference has ended and the robot is at its last pose, with its heading;
+  // a body that cannot push sideways (nor hold a heading on the spot against a lateral
+  // error) is done once at or past the last pose, as the setpoint follower is.
   const Pose2& last = reference_->lastPose();
   const double elapsed = state_.t - start_time_;
-  if (elapsed >= reference_->endTime() &&
-      (estimatedPose().position() - last.position()).norm() <= model_.position_tolerance &&
-      std::abs(wrapAngle(last.yaw - state_.pose.yaw)) <= model_.yaw_tolerance) {
+  const Point2 offset = estimatedPose().position() - last.position();
+  const bool lateral = model_.vehicle_model == VehicleModel::kDynamic && model_.body.sway_actuated;
+  const bool arrived =
+      lateral ? offset.norm() <= model_.position_tolerance &&
+                    std::abs(wrapAngle(last.yaw - state_.pose.yaw)) <= model_.yaw_tolerance
+              : reached(targets_.size() - 1);
+  if (elapsed >= reference_->endTime() && arrived) {
     next_target_ = targets_.size();
   } else {
     next_target_ = std::min(reference_->pieceEnd(elapsed), targets_.size() - 1);

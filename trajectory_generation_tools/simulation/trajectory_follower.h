@@ -126,8 +126,9 @@ class TrajectoryFollower {
   void advanceBody(const BodyForces& forces);
   /// controller: timed. One step of tracking the reference.
   void stepTimed();
-  /// The forces of the timed controller: feedforward plus PD on the reference, per axis.
-  BodyForces timedForces(const ReferenceState& reference) const;
+  /// The forces of the timed controller: feedforward plus PD on the reference, per axis;
+  /// without sway actuation the heading steers towards `ahead`, the reference 1 / wn later.
+  BodyForces timedForces(const ReferenceState& reference, const ReferenceState& ahead) const;
   /// The kinematic vehicle's command under the timed controller.
   Command timedCommand(const ReferenceState& reference) const;
 
