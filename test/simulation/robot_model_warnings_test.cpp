@@ -17,15 +17,24 @@ TEST(RobotModelWarningsTest, NoneForTheDefaultsOrAToleranceAboveTheNavigationErr
 }
 
 TEST(RobotModelWarningsTest, AToleranceWithinTheNavigationErrorMakesItHunt) {
+  // The setpoint follower hunts near every pose; the timed controller only where a run ends.
   RobotModel model;
   model.disturbance.navigation_sigma = 0.1;
   model.position_tolerance = 0.05;
-  const std::vector<std::string> warnings = robotModelWarnings(model);
+  model.controller = TrackingController::kSetpoint;
+  std::vector<std::string> warnings = robotModelWarnings(model);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0],
             "position_tolerance = 0.05 m is less than 3 x navigation_sigma = 0.3 m: the robot's "
             "estimate wanders beyond the tolerance, so it slows and hunts near every pose it is "
             "handed");
+  model.controller = TrackingController::kTimed;
+  warnings = robotModelWarnings(model);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0],
+            "position_tolerance = 0.05 m is less than 3 x navigation_sigma = 0.3 m: the robot's "
+            "estimate wanders beyond the tolerance, so it hunts at the last pose before it counts "
+            "as arrived");
 }
 
 }  // namespace

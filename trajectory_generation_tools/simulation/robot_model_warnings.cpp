@@ -16,8 +16,10 @@ std::vector<std::string> robotModelWarnings(const RobotModel& model) {
     text << "position_tolerance = " << model.position_tolerance << " m is less than "
          << kToleranceNavigationSigmas
          << " x navigation_sigma = " << kToleranceNavigationSigmas * sigma
-         << " m: the robot's estimate wanders beyond the tolerance, so it slows and hunts "
-            "near every pose it is handed";
+         << " m: the robot's estimate wanders beyond the tolerance, so it "
+         << (model.controller == TrackingController::kSetpoint
+                 ? "slows and hunts near every pose it is handed"
+                 : "hunts at the last pose before it counts as arrived");
     warnings.push_back(text.str());
   }
   return warnings;
