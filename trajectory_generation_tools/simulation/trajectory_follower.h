@@ -21,9 +21,15 @@ struct RobotState {
   double yaw_rate = 0.0;  ///< rad/s
 };
 
-/// A planar robot that follows a trajectory's poses as a sequence of targets, as the
-/// thesis's robot did in the lake (Chapter 4): it is handed one pose after the other, not
-/// a timetable, so its traversal time comes out of its dynamics and controllers.
+/// A planar robot that tracks a trajectory. By default (controller: timed) it tracks the
+/// reference p_d(t) that the poses and their times make (TimedReference): per world axis
+/// the reference's acceleration plus PD on its velocity and position (Kp = M wn^2, Kd =
+/// 2 zeta wn M), turned into body forces through the rigid body's model (timedForces), the
+/// kinematic vehicle's speed and yaw rate from v_d + wn (p_d - p); it is done once the
+/// reference has ended and the robot is at its last pose. With controller: setpoint it
+/// follows the poses as a sequence of targets, as the thesis's robot did in the lake
+/// (Chapter 4): it is handed one pose after the other, not a timetable, so its traversal
+/// time comes out of its dynamics and controllers, as follows.
 ///
 /// Every step of `sim_dt`:
 /// - Navigation. The robot knows its position only through its navigation solution: the
