@@ -224,8 +224,8 @@ struct TimedPoses {
   std::vector<double> times;
 };
 
-/// The poses of the file at `path`; with the timed controller their t column, or where the
-/// file has none, times from the planner's velocity model (said on `out`).
+/// The poses of the file at `path` and their t column, or where the file has none and the
+/// controller is timed, times from the planner's velocity model (said on `out`).
 TimedPoses readTimedPoses(const std::string& path, const RobotModel& robot, std::ostream& out) {
   const PoseTable table = PoseCsvReader().read(path);
   TimedPoses timed;
@@ -234,9 +234,7 @@ TimedPoses readTimedPoses(const std::string& path, const RobotModel& robot, std:
     timed.poses.push_back(row.pose);
     if (table.has_time) timed.times.push_back(row.t);
   }
-  if (robot.controller != TrackingController::kTimed) {
-    timed.times.clear();
-  } else if (!table.has_time) {
+  if (robot.controller == TrackingController::kTimed && !table.has_time) {
     timed.times = PoseSequenceTiming(robot.vehicle).times(timed.poses);
     out << "timed: " << path << " has no t column: its poses are timed by the planner's "
         << "velocity model (" << timed.times.back() << " s)" << std::endl;

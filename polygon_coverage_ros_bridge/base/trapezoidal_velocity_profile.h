@@ -48,6 +48,11 @@ class TrapezoidalVelocityProfile {
   /// end is slowed to the reachable speed and the time that costs on the neighbouring arc
   /// is approximated by the braking time.
   double pieceTime(double length, double entry, double exit) const {
+    return pieceTime(length, entry, exit, v_max_);
+  }
+
+  /// The same under a speed `limit` (at most v_max; entry and exit at most it).
+  double pieceTime(double length, double entry, double exit, double limit) const {
     length = std::max(0.0, length);
     double penalty = 0.0;
     const double reachable_high = reachableSpeed(std::min(entry, exit), length);
@@ -59,7 +64,7 @@ class TrapezoidalVelocityProfile {
         exit = reachable_high;
       }
     }
-    const double peak = peakSpeed(entry, exit, length, v_max_);
+    const double peak = peakSpeed(entry, exit, length, limit);
     if (peak <= 0.0) return penalty;
     const double accelerating = std::max(0.0, changeDistance(entry, peak));
     const double braking = std::max(0.0, changeDistance(exit, peak));

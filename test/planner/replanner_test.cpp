@@ -158,13 +158,18 @@ TEST(Replanner, InvalidInput) {
   EXPECT_THROW(replanner.replan(scenario.updated, scenario.visited, {10, 12}), InvalidInputError);
 }
 
+/// The lake with `followed` of its trajectory driven and no obstacle moved, replanned to
+/// `goal` with parts under `min_area` (m^2) dropped.
+ReplannedMission replannedLake(double followed, double min_area, const Point2& goal) {
+  const testing::DriftScenario scenario = testing::lakeDriftScenario(followed, {0.0, 0.0});
+  PlannerParameters parameters = scenario.mission.parameters;
+  parameters.replanning_min_area = min_area;
+  return Replanner(parameters).replan(scenario.updated, scenario.visited, goal);
+}
+
 /// Everything seen already: no parts, and the plan goes from the last pose to the goal.
 TEST(Replanner, NothingLeftGoesToTheGoal) {
-  const testing::DriftScenario scenario = testing::lakeDriftScenario(1.0, {0.0, 0.0});
-  PlannerParameters parameters = scenario.mission.parameters;
-  parameters.replanning_min_area = 50.0;
-  const ReplannedMission replanned =
-      Replanner(parameters).replan(scenario.updated, scenario.visited, {20, 2});
+  const ReplannedMission replanned = replannedLake(1.0, 50.0, {20, 2});
   EXPECT_TRUE(replanned.remaining.parts.empty());
   ASSERT_GE(replanned.plan.waypoints.size(), 2u);
   EXPECT_LT((replanned.plan.waypoints.back().position() - Point2(20, 2)).norm(), 1e-9);
@@ -173,11 +178,7 @@ TEST(Replanner, NothingLeftGoesToTheGoal) {
 
 TEST(Replanner, PartsTooSmallToPlanAreNamedInAWarning) {
   // Half the lake followed; a minimum area above the lake's leaves every part unplanned.
-  const testing::DriftScenario scenario = testing::lakeDriftScenario(0.5, {0.0, 0.0});
-  PlannerParameters parameters = scenario.mission.parameters;
-  parameters.replanning_min_area = 1000.0;
-  const ReplannedMission replanned =
-      Replanner(parameters).replan(scenario.updated, scenario.visited, {29, 29});
+  const ReplannedMission replanned = replannedLake(0.5, 1000.0, {29, 29});
   EXPECT_TRUE(replanned.remaining.parts.empty());
   // Every part left unplanned is named in one warning: its area and where it lies.
   ASSERT_FALSE(replanned.remaining.dropped.empty());

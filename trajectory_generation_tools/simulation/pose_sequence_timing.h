@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/trapezoidal_velocity_profile.h"
 #include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
@@ -22,10 +23,8 @@ class PoseSequenceTiming {
   std::vector<double> times(const std::vector<Pose2>& poses) const;
 
  private:
-  /// Seconds to drive `length` m from speed `entry` to `exit` at most at `cap`.
-  double pieceTime(double length, double entry, double exit, double cap) const;
-
   VehicleLimits limits_;
+  TrapezoidalVelocityProfile profile_;
 };
 
 }  // namespace kinematic_coverage::core

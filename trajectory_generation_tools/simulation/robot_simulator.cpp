@@ -67,9 +67,7 @@ SimulationResult RobotSimulator::simulate(const std::vector<Pose2>& trajectory,
   if (trajectory.empty()) throw InvalidInputError("simulate: the trajectory has no poses");
   RobotState start;
   start.pose = trajectory.front();
-  TrajectoryFollower follower(
-      model_, trajectory, start,
-      model_.controller == TrackingController::kTimed ? times : std::vector<double>{});
+  TrajectoryFollower follower(model_, trajectory, start, times);
   std::vector<Point2> path;
   path.reserve(trajectory.size());
   for (const Pose2& pose : trajectory) path.push_back(pose.position());

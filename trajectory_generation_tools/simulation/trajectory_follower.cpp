@@ -235,7 +235,7 @@ TrajectoryFollower::Command TrajectoryFollower::timedCommand(
   return command;
 }
 
-void TrajectoryFollower::stepTimed() {
+void TrajectoryFollower::advanceTimed() {
   // The trajectory's times count from its start, which a robot handed a new trajectory
   // mid-mission reaches at start_time_.
   const ReferenceState reference = reference_->at(state_.t - start_time_);
@@ -247,9 +247,9 @@ void TrajectoryFollower::stepTimed() {
     const double lookahead_s = 1.0 / model_.tracking_natural_frequency;
     advanceBody(timedForces(reference, reference_->at(state_.t - start_time_ + lookahead_s)));
   }
-  disturbance_.advance(model_.sim_dt);
-  ++steps_;
-  state_.t = start_time_ + static_cast<double>(steps_) * model_.sim_dt;
+}
+
+void TrajectoryFollower::updateTimedProgress() {
   // Done once the reference has ended and the robot is at its last pose, with its heading;
   // a body that cannot push sideways (nor hold a heading on the spot against a lateral
   // error) is done once at or past the last pose, as the setpoint follower is.
@@ -268,12 +268,7 @@ void TrajectoryFollower::stepTimed() {
   }
 }
 
-void TrajectoryFollower::step() {
-  if (finished()) return;
-  if (reference_) {
-    stepTimed();
-    return;
-  }
+void TrajectoryFollower::advanceSetpoint() {
   const Command command = this->command();
   const double speed_change = model_.vehicle.a_max * model_.sim_dt;
   const double previous_reference = speed_reference_;
@@ -284,10 +279,23 @@ void TrajectoryFollower::step() {
   } else {
     advanceDynamic(command, previous_reference);
   }
+}
+
+void TrajectoryFollower::step() {
+  if (finished()) return;
+  if (reference_) {
+    advanceTimed();
+  } else {
+    advanceSetpoint();
+  }
   disturbance_.advance(model_.sim_dt);
   ++steps_;
   state_.t = start_time_ + static_cast<double>(steps_) * model_.sim_dt;
-  skipReachedTargets();
+  if (reference_) {
+    updateTimedProgress();
+  } else {
+    skipReachedTargets();
+  }
 }
 
 }  // namespace kinematic_coverage::core

@@ -85,7 +85,8 @@ class TrajectoryFollower {
   /// InvalidInputError for no targets, or a non-finite target or start.
   /// With `controller: timed`, `times` holds each target's time (the trajectory's t
   /// column) and the robot tracks the reference p_d(t) they make (TimedReference) instead
-  /// of homing on each target; it throws InvalidInputError without them.
+  /// of homing on each target; it throws InvalidInputError without them. Other controllers
+  /// ignore them.
   TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets, const RobotState& start,
                      std::vector<double> times = {});
 
@@ -130,8 +131,12 @@ class TrajectoryFollower {
   void advanceDynamic(const Command& command, double previous_reference);
   /// The dynamic vehicle under `forces` for one step, in the lake's current.
   void advanceBody(const BodyForces& forces);
-  /// controller: timed. One step of tracking the reference.
-  void stepTimed();
+  /// controller: setpoint. The commands towards the next target, applied for a step.
+  void advanceSetpoint();
+  /// controller: timed. The law on the reference, applied for a step.
+  void advanceTimed();
+  /// controller: timed. The target the reference heads to, or the end once arrived.
+  void updateTimedProgress();
   /// The forces of the timed controller: feedforward plus PD on the reference, per axis;
   /// without sway actuation the heading steers towards `ahead`, the reference 1 / wn later.
   BodyForces timedForces(const ReferenceState& reference, const ReferenceState& ahead) const;
