@@ -15,6 +15,7 @@ import math
 import os
 import re
 import sys
+import textwrap
 
 import prose_figures
 
@@ -51,7 +52,9 @@ def main():
     sim = {name: load(name, 'simulate') for name in names}
     plan = {name: load(name, 'plan') for name in names
             if '_calm_' not in name and '_tolerance_' not in name}
-    sys.stdout.write(Report(sim, plan).text())
+    with open(f'{out}/controller_study.md') as stream:
+        study = stream.read()
+    sys.stdout.write(Report(sim, plan, study).text())
 
 
 def mission_file(name):
@@ -130,9 +133,10 @@ def change(a, b):
 class Report:
     """The document, table by table; each table gets a figures marker for doc_figures.py."""
 
-    def __init__(self, sim, plan):
+    def __init__(self, sim, plan, study):
         self.sim = sim
         self.plan = plan
+        self.study = study
         self.tables = 0
 
     def marker(self):
@@ -270,8 +274,8 @@ and its controllers' laws (test/simulation), never which trajectory wins.
 `TrajectoryFollower` (trajectory_generation_tools/simulation/trajectory_follower.h) with
 `controller: setpoint`, as the thesis's robot: it is handed the trajectory's poses one after
 the other, not a timetable, so the traversal time comes out of its dynamics and controllers
-(the default controller, `timed`, tracks the planned times instead, and is not studied
-here yet):
+(the default controller, `timed`, tracks the planned times instead; it and the others are
+compared in the last section):
 
 - a pose at the same position as the pose before it (an in-place rotation) is a heading
   target, reached within `yaw_tolerance`; any other pose is a position target, reached
@@ -597,7 +601,37 @@ reaches, and the lighter (seen once) stripes between the sweeps.
 
 <img src="images/experiments_lake_30x30_current.png" width="70%">
 '''
-        return text
+        return text + self.study_section()
+
+    def study_section(self):
+        """Both experiments as a sensitivity study of the controllers: controller_study's
+        paragraphs (wrapped) and tables (each with its marker), after a word on why."""
+        planned = [ratio(self.plan[f'{mission}_local']['traversal_time_s'],
+                         self.plan[f'{mission}_unsmoothed']['traversal_time_s'])
+                   for mission in ('lake_30x30', 'lake_7_5')]
+        text = f'''
+## The controllers: both experiments as a sensitivity study
+
+The thesis ran one run per condition and does not state its controller, how its poses were
+released in time, its error sampling or its metric, so its numbers cannot be reproduced; the
+study asks instead under which controllers and settings its trends appear. The simulator's
+controllers (docs/REFERENCE.md, simulate): `setpoint`, the follower of the tables above,
+homing on each pose in turn; `timed`, the default, feedforward plus PD on the planner's
+times; `pose_stream`, the same tracker on poses released at a fixed rate; `los`,
+line-of-sight guidance at the reference's speed. In the planner's own times the smoothed
+trajectory takes {planned[0]} (experiment 1) and {planned[1]} (experiment 2) of the unsmoothed
+one's time, which is what a controller that follows those times drives.
+
+    scripts/run_experiments.sh   # runs build/devel/lib/kinematic_coverage/controller_study on the trajectories above
+
+'''
+        for block in self.study.strip().split('\n\n'):
+            if block.startswith('|'):
+                text += self.marker() + block + '\n\n'
+            else:
+                text += textwrap.fill(block, width=92, break_long_words=False,
+                                      break_on_hyphens=False) + '\n\n'
+        return text.rstrip('\n') + '\n'
 
 
 if __name__ == '__main__':

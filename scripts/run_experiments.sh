@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates docs/EXPERIMENTS.md and docs/images/experiments_*.png: the thesis's two
 # experiments (Chapter 4, Tables 4.1 to 4.3) in simulation, plus a run in a current, and the
-# same trajectories in calm water with exact navigation, for both vehicles. Each mission is planned four times
+# same trajectories in calm water with exact navigation, for both vehicles; then both
+# experiments as a sensitivity study of the controllers (controller_study). Each mission is planned four times
 # with `coverage_tool plan`: smoothed by the thesis's Algorithm 1 (`smoothing_strategy:
 # local`), smoothed with the default strategy, the same with continuous-curvature turns
 # (`turn_curve: clothoid`), and unsmoothed; the same robot follows every trajectory with
@@ -20,6 +21,7 @@ export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$root/build}
 tool=$build_dir/devel/lib/kinematic_coverage/coverage_tool
+study=$build_dir/devel/lib/kinematic_coverage/controller_study
 missions=$root/config/missions
 images=$root/docs/images
 print_only=false
@@ -30,13 +32,16 @@ case "${1:-}" in
 esac
 
 if $print_only; then
-  [ -x "$tool" ] || { echo "run_experiments.sh: no $tool: build it first" >&2; exit 2; }
+  for program in "$tool" "$study"; do
+    [ -x "$program" ] || { echo "run_experiments.sh: no $program: build it first" >&2; exit 2; }
+  done
   out=${OUT_DIR:-$(mktemp -d)}
   [ -n "${OUT_DIR:-}" ] || trap 'rm -rf "$out"' EXIT
 else
   out=${OUT_DIR:-$build_dir/experiments}
-  echo "== build coverage_tool" >&2
-  BUILD_DIR=$build_dir "$root/scripts/build.sh" --target kinematic_coverage_coverage_tool >/dev/null
+  echo "== build coverage_tool and controller_study" >&2
+  BUILD_DIR=$build_dir "$root/scripts/build.sh" --target kinematic_coverage_coverage_tool \
+    kinematic_coverage_controller_study >/dev/null
 fi
 
 # The lake, as the thesis's runs met it: a current that fluctuates by 0.02 m/s per axis
@@ -123,6 +128,18 @@ for tolerance in 0.1 0.2 0.3; do
       "${robot_high_gain[@]}" "${lake[@]}" --set position_tolerance=$tolerance
   done
 done
+# The controllers as a sensitivity study: the trajectories of Algorithm 1 and unsmoothed of
+# both experiments, driven by every controller, in calm water and in the lake with seeds 1
+# to 5.
+echo "== controller_study" >&2
+study_lake=()
+for setting in "${lake[@]}"; do [ "$setting" = --set ] || study_lake+=(--lake "$setting"); done
+"$study" --seeds 5 "${study_lake[@]}" \
+  --experiment 1 "$missions/lake_30x30.yaml" "$out/lake_30x30_local/plan/trajectory.csv" \
+  "$out/lake_30x30_unsmoothed/plan/trajectory.csv" "${robot_high_gain[@]}" \
+  --experiment 2 "$missions/lake_7_5.yaml" "$out/lake_7_5_local/plan/trajectory.csv" \
+  "$out/lake_7_5_unsmoothed/plan/trajectory.csv" "${robot_low_gain[@]}" \
+  >"$out/controller_study.md" 2>"$out/controller_study.log"
 
 if $print_only; then
   /usr/bin/python3 "$root/scripts/experiments_report.py" "$out"

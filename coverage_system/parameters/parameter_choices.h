@@ -47,8 +47,11 @@ inline constexpr ParameterChoices<TurnCurve, 2> kTurnCurves{
     {{"arc", TurnCurve::kArc}, {"clothoid", TurnCurve::kClothoid}}};
 inline constexpr ParameterChoices<VehicleModel, 2> kVehicleModels{
     {{"dynamic", VehicleModel::kDynamic}, {"kinematic", VehicleModel::kKinematic}}};
-inline constexpr ParameterChoices<TrackingController, 2> kTrackingControllers{
-    {{"setpoint", TrackingController::kSetpoint}, {"timed", TrackingController::kTimed}}};
+inline constexpr ParameterChoices<TrackingController, 4> kTrackingControllers{
+    {{"los", TrackingController::kLos},
+     {"pose_stream", TrackingController::kPoseStream},
+     {"setpoint", TrackingController::kSetpoint},
+     {"timed", TrackingController::kTimed}}};
 inline constexpr ParameterChoices<MapProjection, 2> kMapProjections{
     {{"local", MapProjection::kLocal}, {"utm", MapProjection::kUtm}}};
 inline constexpr ParameterChoices<ReplanningMethod, 3> kReplanningMethods{

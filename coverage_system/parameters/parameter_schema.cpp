@@ -363,21 +363,30 @@ std::vector<ParameterDeclaration> controllerDeclarations() {
              "reference's acceleration and damping plus PD on the reference p_d(t) of the "
              "trajectory's t column, per axis; chosen on principle: the planner's output is a "
              "timed trajectory, and this is how such a reference is tracked, Fossen 2021, Ch. "
-             "12) or setpoint (the first follower, homing on each pose in turn)."),
+             "12), setpoint (the first follower, homing on each pose in turn), pose_stream (as "
+             "timed, pose i released at i / pose_rate) or los (line-of-sight guidance on the "
+             "pose polyline with look-ahead los_lookahead, Fossen 2021, Ch. 12)."),
       flag("braking", &P::braking, true, S::kSimulation,
            "setpoint only: brake in time (speed at most sqrt(2 a_max d)) to stop where the "
            "trajectory turns in place; false is a plain P controller, as the thesis's.",
            "the setpoint follower's fix of its late braking (docs/EXPERIMENTS.md)"),
       number("tracking_natural_frequency", &P::tracking_natural_frequency, "rad/s", 1.0,
              natural_frequency, S::kSimulation,
-             "timed: natural frequency wn of the PD tracking loop (Kp = M wn^2, "
+             "timed and pose_stream: natural frequency wn of the PD tracking loop (Kp = M wn^2, "
              "Kd = 2 zeta wn M per axis).",
              "a bandwidth below the vehicle's velocity loops (surge 5 1/s, yaw rate 10 1/s) by "
              "the cascade rule; wn * sim_dt <= 0.5 keeps the discrete loop stable"),
       number("tracking_damping", &P::tracking_damping, "", 1.0, positive(), S::kSimulation,
-             "timed: damping ratio zeta of the PD tracking loop.",
+             "timed and pose_stream: damping ratio zeta of the PD tracking loop.",
              "critical damping: the fastest response without overshoot (Fossen 2021, Ch. 12, "
              "pole placement)"),
+      number("pose_rate", &P::pose_rate, "Hz", 1.0, positive(), S::kSimulation,
+             "pose_stream only: poses released per second (pose i at i / pose_rate).",
+             "a waypoint stream of one pose a second, the rate of a vehicle's mission link"),
+      number("los_lookahead", &P::los_lookahead, "m", 0.0, nonNegative(), S::kSimulation,
+             "los only: look-ahead distance along the pose polyline; 0: the turning radius.",
+             "a look-ahead of the order of the path's radius of curvature (Fossen 2021, Ch. "
+             "12, lookahead-based steering)"),
       number("yaw_gain", &P::yaw_gain, "1/s", 5.0, loopGain(), S::kSimulation,
              "Yaw-rate command per rad of heading error (then limited to yaw_rate_max)."),
       number("position_gain", &P::position_gain, "1/s", 1.5, positive(), S::kSimulation,

@@ -76,6 +76,8 @@ struct PlannerParameters {
   bool braking{};
   double tracking_natural_frequency{};
   double tracking_damping{};
+  double pose_rate{};
+  double los_lookahead{};
   double yaw_gain{};
   double position_gain{};
   double position_tolerance{};

@@ -156,6 +156,8 @@ RobotModel robotModelOf(const PlannerParameters& parameters) {
   model.braking = p.braking;
   model.tracking_natural_frequency = p.tracking_natural_frequency;
   model.tracking_damping = p.tracking_damping;
+  model.pose_rate = p.pose_rate;
+  model.los_lookahead = p.los_lookahead;
   model.yaw_gain = p.yaw_gain;
   model.position_gain = p.position_gain;
   model.position_tolerance = p.position_tolerance;

@@ -75,9 +75,9 @@ void AuvSimulatorNode::onTrajectory(const geometry_msgs::PoseArray::ConstPtr& me
       start.pose = poses.front();
     }
     const core::RobotModel robot = core::robotModelOf(parameters);
-    // The topic's poses carry no times: the timed controller's reference is timed by the
-    // planner's velocity model.
-    const std::vector<double> times = robot.controller == core::TrackingController::kTimed
+    // The topic's poses carry no times: for the controllers that follow times (timed, los),
+    // the planner's velocity model times them.
+    const std::vector<double> times = core::usesTrajectoryTimes(robot.controller)
                                           ? core::PoseSequenceTiming(robot.vehicle).times(poses)
                                           : std::vector<double>{};
     for (const std::string& warning : core::robotModelWarnings(robot)) {
@@ -100,6 +100,7 @@ void AuvSimulatorNode::onTrajectory(const geometry_msgs::PoseArray::ConstPtr& me
     time_limit_s_ = parameters.sim_time_limit;
     sim_dt_ = parameters.sim_dt;
     outcome_reported_ = false;
+    excess_reported_ = false;
     visited_.header.frame_id = frame;
     if (last_tick_.isZero()) last_tick_ = ros::Time::now();
     std::ostringstream summary;
@@ -128,6 +129,15 @@ void AuvSimulatorNode::onTick(const ros::TimerEvent&) {
   for (double step = 0.0; step < steps && !follower_->finished(); step += 1.0) {
     if (follower_->state().t - trajectory_start_s_ >= time_limit_s_) break;
     follower_->step();
+  }
+  const core::ReferenceExcess& excess = follower_->referenceExcess();
+  if (excess.duration_s > 0.0 && !excess_reported_) {
+    ROS_WARN(
+        "auv_simulator: the trajectory asks for more than the vehicle can do at t = %.1f s "
+        "near (%.2f, %.2f), on the way to pose %zu of %zu: %s; the robot lags its reference",
+        excess.first_t - trajectory_start_s_, excess.first_position.x(), excess.first_position.y(),
+        excess.first_pose + 1, follower_->targets().size(), excess.first_demand.c_str());
+    excess_reported_ = true;
   }
   if (!follower_->finished() && follower_->state().t - trajectory_start_s_ >= time_limit_s_ &&
       !outcome_reported_) {

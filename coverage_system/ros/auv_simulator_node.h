@@ -67,6 +67,8 @@ class AuvSimulatorNode {
   double sim_dt_ = 0.1;
   /// Whether the arrival or the time-out of the current trajectory has been reported.
   bool outcome_reported_ = false;
+  /// True once this trajectory's reference was reported to ask more than the vehicle can do.
+  bool excess_reported_ = false;
   geometry_msgs::PoseArray visited_;
 };
 

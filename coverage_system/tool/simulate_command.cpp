@@ -82,6 +82,20 @@ JsonObject simulationMetrics(const SimulationResult& simulation, const Trajector
       .set("tracking_error_target_sum_m", target.sum_m)
       .set("tracking_error_target_mean_m", target.mean_m)
       .set("tracking_error_target_percentiles_m", percentileObject(target));
+  if (const auto& time_matched = simulation.time_matched_tracking) {
+    metrics.set("tracking_error_time_matched_sum_m", time_matched->sum_m)
+        .set("tracking_error_time_matched_mean_m", time_matched->mean_m)
+        .set("tracking_error_time_matched_percentiles_m", percentileObject(*time_matched));
+  }
+  metrics.set("reference_excess_time_s", simulation.reference_excess.duration_s);
+  metrics.set("tracking_error_2hz_sum_m", simulation.sampled_tracking.sum_m)
+      .set("tracking_error_2hz_mean_m", simulation.sampled_tracking.mean_m)
+      .set("tracking_error_target_2hz_sum_m", simulation.sampled_target_tracking.sum_m)
+      .set("tracking_error_target_2hz_mean_m", simulation.sampled_target_tracking.mean_m);
+  if (const auto& time_matched = simulation.sampled_time_matched_tracking) {
+    metrics.set("tracking_error_time_matched_2hz_sum_m", time_matched->sum_m)
+        .set("tracking_error_time_matched_2hz_mean_m", time_matched->mean_m);
+  }
   if (std::isfinite(clearance.min_clearance_m)) {
     metrics.set("driven_min_clearance_m", clearance.min_clearance_m);
   }
@@ -89,6 +103,17 @@ JsonObject simulationMetrics(const SimulationResult& simulation, const Trajector
       .set("driven_outside_hull_time_s", clearance.outside_hull_time_s);
   setCoverageMetrics(coverage.report, metrics);
   return metrics;
+}
+
+/// The warning for a reference that asked for more than the vehicle can do.
+std::string referenceExcessText(const ReferenceExcess& excess, std::size_t pose_count) {
+  std::ostringstream text;
+  text << "the trajectory asks for more than the vehicle can do for " << excess.duration_s
+       << " s of the run, first at t = " << excess.first_t << " s near ("
+       << excess.first_position.x() << ", " << excess.first_position.y() << ") on the way to pose "
+       << excess.first_pose + 1 << " of " << pose_count << ": " << excess.first_demand
+       << "; the robot lags its reference there";
+  return text.str();
 }
 
 /// The `clearance:` line of `simulate`.
@@ -218,14 +243,15 @@ std::string SimulateCommand::usage() {
 
 namespace {
 
-/// A trajectory file's poses and, for the timed controller, their times.
+/// A trajectory file's poses and, for the controllers that follow them, their times.
 struct TimedPoses {
   std::vector<Pose2> poses;
   std::vector<double> times;
 };
 
 /// The poses of the file at `path` and their t column, or where the file has none and the
-/// controller is timed, times from the planner's velocity model (said on `out`).
+/// controller follows times (usesTrajectoryTimes), times from the planner's velocity model (said on
+/// `out`).
 TimedPoses readTimedPoses(const std::string& path, const RobotModel& robot, std::ostream& out) {
   const PoseTable table = PoseCsvReader().read(path);
   TimedPoses timed;
@@ -234,7 +260,7 @@ TimedPoses readTimedPoses(const std::string& path, const RobotModel& robot, std:
     timed.poses.push_back(row.pose);
     if (table.has_time) timed.times.push_back(row.t);
   }
-  if (robot.controller == TrackingController::kTimed && !table.has_time) {
+  if (usesTrajectoryTimes(robot.controller) && !table.has_time) {
     timed.times = PoseSequenceTiming(robot.vehicle).times(timed.poses);
     out << "timed: " << path << " has no t column: its poses are timed by the planner's "
         << "velocity model (" << timed.times.back() << " s)" << std::endl;
@@ -308,6 +334,10 @@ void SimulateCommand::run(const std::vector<std::string>& args, std::ostream& ou
   for (const std::string& warning : cleaned.warnings) notes << "warning: " << warning << "\n";
   for (const std::string& warning : robotModelWarnings(robot)) {
     notes << "warning: " << warning << "\n";
+  }
+  if (simulation.reference_excess.duration_s > 0.0) {
+    notes << "warning: " << referenceExcessText(simulation.reference_excess, desired.size())
+          << "\n";
   }
   if (clearance.contact()) {
     notes << "warning: the robot drove into an obstacle or out through the hull, first at t = "

@@ -10,6 +10,8 @@
 #include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "trajectory_generation_tools/simulation/line_of_sight_guidance.h"
+#include "trajectory_generation_tools/simulation/pose_sequence_timing.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 
 namespace kinematic_coverage::core {
@@ -464,6 +466,164 @@ TEST(TrajectoryFollowerTest, TheTimedControllerHasTheAnalyticStepResponse) {
 TEST(TrajectoryFollowerTest, TheTimedControllerNeedsTheTrajectorysTimes) {
   EXPECT_THROW(TrajectoryFollower(timedModel(0.1), {{0.0, 0.0, 0.0}}, RobotState{}),
                InvalidInputError);
+}
+
+/// A robot at rest at `pose`.
+RobotState restingAt(const Pose2& pose) {
+  RobotState state;
+  state.pose = pose;
+  return state;
+}
+
+TEST(TrajectoryFollowerTest, BrakingKeepsTheSpeedWithinWhatStopsTheRobotAtTheCorner) {
+  // With braking, the setpoint and los controllers keep the surge speed at most
+  // sqrt(2 a_max d), d the distance left to the corner where the trajectory turns in place,
+  // up to a step: the speed is commanded from d at the step's start (at most v_max sim_dt
+  // more than at its end) and its reference changes by at most a_max sim_dt a step.
+  const std::vector<Pose2> corner = unsmoothedCorner();
+  for (const std::string& controller : {"setpoint", "los"}) {
+    PlannerParameters parameters = withVehicle("kinematic");
+    parameters.controller = controller;
+    const RobotModel model = robotModelOf(parameters);
+    TrajectoryFollower follower(model, corner, restingAt(corner.front()),
+                                PoseSequenceTiming(model.vehicle).times(corner));
+    const double slack = parameters.a_max * parameters.sim_dt;
+    int checked = 0;
+    while (!follower.finished() && follower.state().pose.x < 5.0 - 1e-9 &&
+           follower.state().t < 100.0) {
+      const double d = std::max(0.0, 5.0 - follower.state().pose.x);
+      follower.step();
+      EXPECT_LE(
+          follower.state().speed,
+          std::sqrt(2.0 * parameters.a_max * (d + parameters.v_max * parameters.sim_dt)) + slack)
+          << controller << " at t = " << follower.state().t;
+      ++checked;
+    }
+    EXPECT_GT(checked, 10) << controller;
+  }
+}
+
+/// The default parameters with `controller` on `vehicle_model`.
+PlannerParameters withController(const std::string& controller, const std::string& vehicle_model) {
+  PlannerParameters parameters = withVehicle(vehicle_model);
+  parameters.controller = controller;
+  return parameters;
+}
+
+/// `poses` timed at a constant `speed` between distinct positions, 1 s per in-place step.
+std::vector<double> timesAt(const std::vector<Pose2>& poses, double speed) {
+  std::vector<double> times{0.0};
+  for (std::size_t i = 1; i < poses.size(); ++i) {
+    const double length = (poses[i].position() - poses[i - 1].position()).norm();
+    times.push_back(times.back() + (length > 0.0 ? length / speed : 1.0));
+  }
+  return times;
+}
+
+TEST(TrajectoryFollowerTest, ThePoseStreamReleasesPoseIAtIOverTheRate) {
+  // pose_stream tracks the reference that passes pose i at i / pose_rate, whatever the
+  // trajectory's own times, and so cannot finish before the last pose is released.
+  PlannerParameters parameters = withController("pose_stream", "dynamic");
+  parameters.pose_rate = 2.0;
+  const std::vector<Pose2> poses = unsmoothedCorner();
+  TrajectoryFollower follower(robotModelOf(parameters), poses, restingAt(poses.front()),
+                              timesAt(poses, 0.1));
+  const TimedReference* reference = follower.reference();
+  ASSERT_NE(reference, nullptr);
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const ReferenceState at = reference->at(static_cast<double>(i) / parameters.pose_rate);
+    EXPECT_NEAR((at.position - poses[i].position()).norm(), 0.0, 1e-12) << i;
+    EXPECT_NEAR(wrapAngle(at.yaw - poses[i].yaw), 0.0, 1e-12) << i;
+  }
+  const double last_release = static_cast<double>(poses.size() - 1) / parameters.pose_rate;
+  EXPECT_DOUBLE_EQ(reference->endTime(), last_release);
+  while (!follower.finished() && follower.state().t < 200.0) follower.step();
+  ASSERT_TRUE(follower.finished());
+  EXPECT_GE(follower.state().t, last_release);
+  // It needs no times of its own.
+  EXPECT_NO_THROW(TrajectoryFollower(robotModelOf(parameters), poses, restingAt(poses.front())));
+}
+
+TEST(TrajectoryFollowerTest, LineOfSightCommandsTheCourseOfItsLaw) {
+  // A kinematic robot at rest 0.05 m to the left of a line along +x, heading along it: its
+  // first yaw-rate command is yaw_gain times the law's course -atan(y_e / Delta) (no
+  // sideslip at rest), here within yaw_rate_max; Delta is the turning radius by default.
+  const PlannerParameters parameters = withController("los", "kinematic");
+  const RobotModel model = robotModelOf(parameters);
+  const std::vector<Pose2> poses = straightLine(20.0, 20.0);
+  const double offset = 0.05;
+  TrajectoryFollower follower(model, poses, restingAt({0.0, offset, 0.0}), timesAt(poses, 0.4));
+  follower.step();
+  const double course = -std::atan(offset / parameters.turning_radius);
+  ASSERT_LT(std::abs(parameters.yaw_gain * course), parameters.yaw_rate_max);
+  EXPECT_NEAR(follower.state().yaw_rate, parameters.yaw_gain * course, 1e-12);
+  EXPECT_NEAR(course,
+              LineOfSightGuidance(parameters.turning_radius)
+                  .course(poses[0].position(), poses[1].position(), {0.0, offset}),
+              1e-15);
+}
+
+TEST(TrajectoryFollowerTest, LineOfSightClosesTheCrossTrackErrorMonotonically) {
+  // 1 m off a straight line, heading along it: the cross-track error decays without
+  // overshoot on both vehicles and with look-aheads of 0.5, 1 and 2 turning radii.
+  const std::vector<Pose2> poses = straightLine(40.0, 1.0);
+  for (const std::string& vehicle : kVehicles) {
+    for (const double lookahead : {0.5, 1.0, 2.0}) {
+      PlannerParameters parameters = withController("los", vehicle);
+      parameters.los_lookahead = lookahead * parameters.turning_radius;
+      TrajectoryFollower follower(robotModelOf(parameters), poses, restingAt({0.0, 1.0, 0.0}),
+                                  timesAt(poses, 0.4));
+      double previous = 1.0;
+      while (!follower.finished() && follower.state().pose.x < 30.0 && follower.state().t < 200.0) {
+        follower.step();
+        const double error = std::abs(follower.state().pose.y);
+        EXPECT_LE(error, previous + 1e-12)
+            << vehicle << " " << lookahead << " at t = " << follower.state().t;
+        previous = error;
+      }
+      EXPECT_LT(previous, 0.01) << vehicle << " " << lookahead;
+    }
+  }
+}
+
+TEST(TrajectoryFollowerTest, LineOfSightHoldsItsLineInACrossCurrent) {
+  // Steering the heading off the course by the measured sideslip, the robot crabs along
+  // the line in a cross current instead of settling beside it.
+  for (const std::string& vehicle : kVehicles) {
+    PlannerParameters parameters = withController("los", vehicle);
+    parameters.current_y = 0.1;
+    const std::vector<Pose2> poses = straightLine(40.0, 1.0);
+    TrajectoryFollower follower(robotModelOf(parameters), poses, restingAt(poses.front()),
+                                timesAt(poses, 0.4));
+    while (!follower.finished() && follower.state().pose.x < 30.0 && follower.state().t < 300.0) {
+      follower.step();
+    }
+    EXPECT_NEAR(follower.state().pose.x, 30.0, 0.1) << vehicle;
+    EXPECT_LT(std::abs(follower.state().pose.y), 0.02) << vehicle;
+  }
+}
+
+TEST(TrajectoryFollowerTest, LineOfSightTurnsInPlaceAndArrives) {
+  const std::vector<Pose2> poses = unsmoothedCorner();
+  for (const std::string& vehicle : kVehicles) {
+    const PlannerParameters parameters = withController("los", vehicle);
+    const SimulationResult result =
+        RobotSimulator(robotModelOf(parameters)).simulate(poses, timesAt(poses, 0.4));
+    const Pose2& end = result.steps.back().pose;
+    EXPECT_LT((end.position() - poses.back().position()).norm(),
+              2.0 * parameters.position_tolerance)
+        << vehicle;
+    EXPECT_LT(result.tracking.percentiles_m.back(), 0.1) << vehicle;
+  }
+}
+
+TEST(TrajectoryFollowerTest, LineOfSightNeedsTheTrajectorysTimes) {
+  const RobotModel model = robotModelOf(withController("los", "kinematic"));
+  EXPECT_THROW(TrajectoryFollower(model, {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, RobotState{}),
+               InvalidInputError);
+  EXPECT_THROW(
+      TrajectoryFollower(model, {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, RobotState{}, {1.0, 0.0}),
+      InvalidInputError);
 }
 
 }  // namespace

@@ -691,6 +691,17 @@ TEST(CoverageTool, SimulatesPlansTrajectoryAndWritesItsFiles) {
     keys.push_back(key);
   }
   keys.insert(keys.end(), percentiles.begin(), percentiles.end());
+  // The default controller, timed, tracks a reference: its time-matched error.
+  keys.push_back("tracking_error_time_matched_sum_m");
+  keys.push_back("tracking_error_time_matched_mean_m");
+  keys.push_back("tracking_error_time_matched_percentiles_m");
+  keys.insert(keys.end(), percentiles.begin(), percentiles.end());
+  for (const char* key :
+       {"reference_excess_time_s", "tracking_error_2hz_sum_m", "tracking_error_2hz_mean_m",
+        "tracking_error_target_2hz_sum_m", "tracking_error_target_2hz_mean_m",
+        "tracking_error_time_matched_2hz_sum_m", "tracking_error_time_matched_2hz_mean_m"}) {
+    keys.push_back(key);
+  }
   for (const char* key :
        {"driven_min_clearance_m", "driven_obstacle_time_s", "driven_outside_hull_time_s"}) {
     keys.push_back(key);

@@ -14,9 +14,17 @@ enum class VehicleModel {
 
 /// How the simulated robot tracks a trajectory (parameter `controller`).
 enum class TrackingController {
-  kTimed,     ///< feedforward plus PD on the timed reference p_d(t), the default
-  kSetpoint,  ///< the first follower: homing on each pose in turn
+  kTimed,       ///< feedforward plus PD on the timed reference p_d(t), the default
+  kSetpoint,    ///< the first follower: homing on each pose in turn
+  kPoseStream,  ///< as kTimed, pose i released at i / pose_rate
+  kLos,         ///< line-of-sight guidance on the pose polyline
 };
+
+/// True for the controllers that follow the trajectory's times (its t column): timed, and
+/// los for its speeds; setpoint and pose_stream follow the poses alone.
+inline bool usesTrajectoryTimes(TrackingController controller) {
+  return controller == TrackingController::kTimed || controller == TrackingController::kLos;
+}
 
 /// The simulated robot of `coverage_tool simulate` and auv_simulator (TrajectoryFollower,
 /// docs/REFERENCE.md, Parameters): its vehicle, limits, controllers' gains and tolerances,
@@ -28,8 +36,10 @@ struct RobotModel {
   RigidBodyParameters body;  ///< the dynamic vehicle's mass, damping and thrusters
   TrackingController controller = TrackingController::kTimed;
   bool braking = true;                      ///< kSetpoint: brake in time to stop at a turn
-  double tracking_natural_frequency = 1.0;  ///< rad/s: kTimed's wn
-  double tracking_damping = 1.0;            ///< kTimed's zeta
+  double tracking_natural_frequency = 1.0;  ///< rad/s: kTimed and kPoseStream's wn
+  double tracking_damping = 1.0;            ///< kTimed and kPoseStream's zeta
+  double pose_rate = 1.0;                   ///< Hz: kPoseStream's release rate
+  double los_lookahead = 0.0;               ///< m: kLos's look-ahead; 0: the turning radius
   double yaw_gain = 5.0;                    ///< 1/s: yaw-rate command per rad of heading error
   double position_gain = 1.5;               ///< 1/s: surge-speed command per m to the target
   double surge_loop_gain = 5.0;             ///< 1/s: dynamic vehicle's surge-speed loop bandwidth

@@ -40,7 +40,34 @@ SimulationStep recordedStep(const TrajectoryFollower& follower, const PathDistan
   const Point2 piece_end = targets[target].position();
   const Point2 piece_start = target == 0 ? piece_end : targets[target - 1].position();
   step.target_error_m = distanceToSegment(position, piece_start, piece_end);
+  if (const TimedReference* reference = follower.reference()) {
+    step.time_matched_error_m = (position - reference->at(state.t).position).norm();
+  }
   return step;
+}
+
+/// The indices of the steps nearest to t = k / kErrorSampleRate, k >= 1, up to the last.
+std::vector<std::size_t> sampledSteps(const std::vector<SimulationStep>& steps, double sim_dt) {
+  std::vector<std::size_t> indices;
+  const double last_t = steps.back().t;
+  for (int k = 1; k / kErrorSampleRate <= last_t + 0.5 * sim_dt; ++k) {
+    const double index = std::round(k / kErrorSampleRate / sim_dt);
+    indices.push_back(std::min(static_cast<std::size_t>(index), steps.size() - 1));
+  }
+  return indices;
+}
+
+/// Statistics of `error` over `steps`: every step but the start, or those of `indices`.
+TrackingErrorStatistics statisticsOf(const std::vector<SimulationStep>& steps,
+                                     double SimulationStep::*error,
+                                     const std::vector<std::size_t>* indices = nullptr) {
+  std::vector<double> errors;
+  if (indices) {
+    for (const std::size_t i : *indices) errors.push_back(steps[i].*error);
+  } else {
+    for (std::size_t i = 1; i < steps.size(); ++i) errors.push_back(steps[i].*error);
+  }
+  return summarizeTrackingErrors(std::move(errors));
 }
 
 /// The axis statistics of `steps` without the first (the start).
@@ -75,12 +102,10 @@ SimulationResult RobotSimulator::simulate(const std::vector<Pose2>& trajectory,
 
   SimulationResult result;
   result.steps.push_back(recordedStep(follower, desired_path));
-  std::vector<double> errors;
-  std::vector<double> target_errors;
   const std::size_t step_limit =
       static_cast<std::size_t>(std::floor(model_.sim_time_limit / model_.sim_dt));
   while (!follower.finished()) {
-    if (errors.size() >= step_limit) {
+    if (result.steps.size() > step_limit) {
       throw InvalidInputError(
           "simulate: the robot did not reach the last pose within sim_time_limit = " +
           formatNumber(model_.sim_time_limit) + " s (it was driving to pose " +
@@ -89,13 +114,21 @@ SimulationResult RobotSimulator::simulate(const std::vector<Pose2>& trajectory,
     }
     follower.step();
     result.steps.push_back(recordedStep(follower, desired_path));
-    errors.push_back(result.steps.back().tracking_error_m);
-    target_errors.push_back(result.steps.back().target_error_m);
   }
   result.traversal_time_s = follower.state().t;
-  result.tracking = summarizeTrackingErrors(std::move(errors));
-  result.tracking_axes = axisStatistics(result.steps);
-  result.target_tracking = summarizeTrackingErrors(std::move(target_errors));
+  const std::vector<SimulationStep>& steps = result.steps;
+  result.tracking = statisticsOf(steps, &SimulationStep::tracking_error_m);
+  result.tracking_axes = axisStatistics(steps);
+  result.target_tracking = statisticsOf(steps, &SimulationStep::target_error_m);
+  const std::vector<std::size_t> sampled = sampledSteps(steps, model_.sim_dt);
+  result.sampled_tracking = statisticsOf(steps, &SimulationStep::tracking_error_m, &sampled);
+  result.sampled_target_tracking = statisticsOf(steps, &SimulationStep::target_error_m, &sampled);
+  result.reference_excess = follower.referenceExcess();
+  if (follower.reference()) {
+    result.time_matched_tracking = statisticsOf(steps, &SimulationStep::time_matched_error_m);
+    result.sampled_time_matched_tracking =
+        statisticsOf(steps, &SimulationStep::time_matched_error_m, &sampled);
+  }
   return result;
 }
 

@@ -1,11 +1,13 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/simulation/robot_model.h"
 #include "trajectory_generation_tools/simulation/tracking_error_statistics.h"
+#include "trajectory_generation_tools/simulation/trajectory_follower.h"
 
 namespace kinematic_coverage::core {
 
@@ -23,6 +25,9 @@ struct SimulationStep {
   /// (the segment from the pose before it; the first pose itself before any piece), which
   /// shows the lag and overshoot that the nearest point hides.
   double target_error_m = 0.0;
+  /// m from the robot to the reference it tracks at t, |p(t) - p_d(t)| (controllers timed
+  /// and pose_stream; 0 for the others).
+  double time_matched_error_m = 0.0;
 };
 
 /// The tracking error split by axis (the thesis's Fig. 4.5c): over the simulation steps,
@@ -44,6 +49,15 @@ struct SimulationResult {
   TrackingErrorStatistics tracking;
   AxisErrorStatistics tracking_axes;
   TrackingErrorStatistics target_tracking;
+  /// The time-matched errors, for controllers timed and pose_stream.
+  std::optional<TrackingErrorStatistics> time_matched_tracking;
+  /// The same errors sampled at kErrorSampleRate: the steps nearest to t = k / rate for
+  /// k = 1, 2, ... up to the traversal time.
+  TrackingErrorStatistics sampled_tracking;
+  TrackingErrorStatistics sampled_target_tracking;
+  std::optional<TrackingErrorStatistics> sampled_time_matched_tracking;
+  /// Where the tracked reference asked for more than the vehicle can do.
+  ReferenceExcess reference_excess;
 };
 
 /// Runs the robot model of TrajectoryFollower over a whole trajectory, as `coverage_tool

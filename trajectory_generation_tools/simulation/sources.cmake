@@ -3,6 +3,7 @@ kc_add_stage_library(kc_simulation
     trajectory_generation_tools/simulation/driven_path_clearance.cpp
     trajectory_generation_tools/simulation/environment_disturbance.cpp
     trajectory_generation_tools/simulation/gauss_markov_process.cpp
+    trajectory_generation_tools/simulation/line_of_sight_guidance.cpp
     trajectory_generation_tools/simulation/path_distance.cpp
     trajectory_generation_tools/simulation/planar_rigid_body.cpp
     trajectory_generation_tools/simulation/pose_sequence_timing.cpp

@@ -9,6 +9,11 @@ namespace kinematic_coverage::core {
 /// thesis's Table 4.2 (`tracking_error_percentiles_m`; docs/REFERENCE.md, Metrics).
 inline constexpr std::array<int, 9> kTrackingErrorPercentiles{1, 5, 10, 25, 50, 75, 90, 95, 99};
 
+/// Hz: the rate at which `coverage_tool simulate` also samples its errors (the `_2hz` keys;
+/// docs/REFERENCE.md, Metrics), so that sums do not scale with sim_dt and compare with the
+/// thesis's sums, whose sampling it does not state.
+inline constexpr double kErrorSampleRate = 2.0;
+
 /// Summary of a robot's tracking errors (one per simulation step, metres): the thesis's
 /// "trajectory error" of Tables 4.1 and 4.3 is the sum.
 struct TrackingErrorStatistics {

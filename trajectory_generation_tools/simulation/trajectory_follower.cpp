@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
@@ -13,9 +14,28 @@ namespace {
 
 /// Poses closer than this share a position: the poses of an in-place rotation.
 constexpr double kSamePositionTolerance = 1e-9;
+/// Relative margin above a limit before a reference's demand counts as beyond it, so that a
+/// reference planned at exactly v_max or yaw_rate_max does not.
+constexpr double kDemandSlack = 1e-6;
+
+/// m/s: below this surge speed through the water the sideslip angle is left out.
+constexpr double kSlowestCourseSpeed = 0.05;
 
 bool isFinite(const Pose2& pose) {
   return std::isfinite(pose.x) && std::isfinite(pose.y) && std::isfinite(pose.yaw);
+}
+
+std::string missingTimes(const char* controller) {
+  return std::string("trajectory follower: controller ") + controller +
+         " needs the trajectory's times (its t column); controllers setpoint and pose_stream "
+         "follow poses alone";
+}
+
+/// s: pose i released at i / rate (controller: pose_stream).
+std::vector<double> streamTimes(std::size_t count, double rate) {
+  std::vector<double> times(count);
+  for (std::size_t i = 0; i < count; ++i) times[i] = static_cast<double>(i) / rate;
+  return times;
 }
 
 }  // namespace
@@ -62,16 +82,46 @@ TrajectoryFollower::TrajectoryFollower(const RobotModel& model, std::vector<Pose
   }
   speed_reference_ = std::max(state_.speed, 0.0);
   start_time_ = state_.t;
-  if (model_.controller == TrackingController::kTimed) {
-    if (times.empty()) {
-      throw InvalidInputError(
-          "trajectory follower: controller timed needs the trajectory's times (its t column); "
-          "controller setpoint follows poses alone");
-    }
-    reference_.emplace(targets_, std::move(times));
-    return;
+  start_position_ = state_.pose.position();
+  switch (model_.controller) {
+    case TrackingController::kTimed:
+      if (times.empty()) throw InvalidInputError(missingTimes("timed"));
+      reference_.emplace(targets_, std::move(times));
+      return;
+    case TrackingController::kPoseStream:
+      reference_.emplace(targets_, streamTimes(targets_.size(), model_.pose_rate));
+      return;
+    case TrackingController::kLos:
+      if (times.empty()) throw InvalidInputError(missingTimes("los"));
+      setUpLineOfSight(times);
+      break;
+    case TrackingController::kSetpoint:
+      break;
   }
   skipReachedTargets();
+}
+
+void TrajectoryFollower::setUpLineOfSight(const std::vector<double>& times) {
+  if (times.size() != targets_.size()) {
+    throw InvalidInputError("trajectory follower: " + std::to_string(times.size()) + " times for " +
+                            std::to_string(targets_.size()) + " poses");
+  }
+  line_of_sight_.emplace(model_.los_lookahead > 0.0 ? model_.los_lookahead
+                                                    : model_.vehicle.turning_radius);
+  // The surge speed that the reference asks for on the piece to each target: its length
+  // over its duration (v_max for a piece of no duration).
+  piece_speed_.assign(targets_.size(), model_.vehicle.v_max);
+  for (std::size_t i = 1; i < targets_.size(); ++i) {
+    const double duration = times[i] - times[i - 1];
+    if (!std::isfinite(duration) || duration < 0.0) {
+      throw InvalidInputError(
+          "trajectory follower: the trajectory's times decrease or are not "
+          "finite at pose " +
+          std::to_string(i));
+    }
+    const double length = (targets_[i].position() - targets_[i - 1].position()).norm();
+    if (duration > 0.0) piece_speed_[i] = std::min(model_.vehicle.v_max, length / duration);
+  }
 }
 
 Pose2 TrajectoryFollower::estimatedPose() const {
@@ -93,7 +143,7 @@ void TrajectoryFollower::skipReachedTargets() {
   while (next_target_ < targets_.size() && reached(next_target_)) ++next_target_;
 }
 
-TrajectoryFollower::Command TrajectoryFollower::command() const {
+TrajectoryFollower::Command TrajectoryFollower::setpointCommand() const {
   const RobotModel& p = model_;
   const VehicleLimits& limits = model_.vehicle;
   const Pose2& target = targets_[next_target_];
@@ -235,17 +285,74 @@ TrajectoryFollower::Command TrajectoryFollower::timedCommand(
   return command;
 }
 
+std::optional<std::string> TrajectoryFollower::beyondVehicle(
+    const ReferenceState& reference) const {
+  const VehicleLimits& limits = model_.vehicle;
+  const Point2 through_water = reference.velocity - Point2(model_.current_x, model_.current_y);
+  const double r = reference.yaw_rate;
+  if (through_water.norm() > limits.v_max * (1.0 + kDemandSlack)) {
+    return "a speed through the water of " + formatNumber(through_water.norm()) +
+           " m/s, beyond v_max = " + formatNumber(limits.v_max) + " m/s";
+  }
+  if (std::abs(r) > limits.yaw_rate_max * (1.0 + kDemandSlack)) {
+    return "a yaw rate of " + formatNumber(std::abs(r)) +
+           " rad/s, beyond yaw_rate_max = " + formatNumber(limits.yaw_rate_max) + " rad/s";
+  }
+  if (model_.vehicle_model == VehicleModel::kKinematic) return std::nullopt;
+  // In the reference's body frame, nu' = R^T p'' - S(r) nu (its yaw acceleration left out).
+  const RigidBodyParameters& b = model_.body;
+  const double c = std::cos(reference.yaw);
+  const double s = std::sin(reference.yaw);
+  const double u = c * through_water.x() + s * through_water.y();
+  const double v = -s * through_water.x() + c * through_water.y();
+  const Point2& a = reference.acceleration;
+  BodyForces demand;
+  demand.surge = b.surgeInertia() * (c * a.x() + s * a.y() + r * v) - b.swayInertia() * v * r +
+                 b.surgeDamping(u);
+  demand.sway = b.swayInertia() * (-s * a.x() + c * a.y() - r * u) + b.surgeInertia() * u * r +
+                b.swayDamping(v);
+  demand.yaw_torque = b.yawDamping(r) - (b.surgeInertia() - b.swayInertia()) * u * v;
+  const std::string thrust = "more thrust than the thrusters give (surge " +
+                             formatNumber(demand.surge) + " N, sway " + formatNumber(demand.sway) +
+                             " N, yaw " + formatNumber(demand.yaw_torque) + " N m)";
+  if (!b.sway_actuated) {
+    // The torpedo turns its surge onto the path instead of pushing sideways.
+    if (std::abs(demand.surge) > b.thrust_max * (1.0 + kDemandSlack) ||
+        std::abs(demand.yaw_torque) > b.yaw_torque_max * (1.0 + kDemandSlack)) {
+      return thrust;
+    }
+    return std::nullopt;
+  }
+  const BodyForces given = body_.limited(demand);
+  if (std::hypot(demand.surge - given.surge, demand.sway - given.sway) >
+          kDemandSlack * b.thrust_max ||
+      std::abs(demand.yaw_torque - given.yaw_torque) > kDemandSlack * b.yaw_torque_max) {
+    return thrust;
+  }
+  return std::nullopt;
+}
+
 void TrajectoryFollower::advanceTimed() {
   // The trajectory's times count from its start, which a robot handed a new trajectory
   // mid-mission reaches at start_time_.
-  const ReferenceState reference = reference_->at(state_.t - start_time_);
+  const double elapsed = state_.t - start_time_;
+  const ReferenceState reference = reference_->at(elapsed);
+  if (const std::optional<std::string> demand = beyondVehicle(reference)) {
+    if (reference_excess_.duration_s == 0.0) {
+      reference_excess_.first_demand = *demand;
+      reference_excess_.first_t = state_.t;
+      reference_excess_.first_position = reference.position;
+      reference_excess_.first_pose = reference_->pieceEnd(elapsed);
+    }
+    reference_excess_.duration_s += model_.sim_dt;
+  }
   if (model_.vehicle_model == VehicleModel::kKinematic) {
     const Command command = timedCommand(reference);
     speed_reference_ = command.speed;
     advanceKinematic(command);
   } else {
     const double lookahead_s = 1.0 / model_.tracking_natural_frequency;
-    advanceBody(timedForces(reference, reference_->at(state_.t - start_time_ + lookahead_s)));
+    advanceBody(timedForces(reference, reference_->at(elapsed + lookahead_s)));
   }
 }
 
@@ -268,8 +375,40 @@ void TrajectoryFollower::updateTimedProgress() {
   }
 }
 
+TrajectoryFollower::Command TrajectoryFollower::lineOfSightCommand() const {
+  const VehicleLimits& limits = model_.vehicle;
+  const Pose2& target = targets_[next_target_];
+  const Pose2 estimate = estimatedPose();
+  Command command;
+  double heading_error = 0.0;
+  if (heading_target_[next_target_]) {
+    heading_error = wrapAngle(target.yaw - state_.pose.yaw);
+  } else {
+    // The guidance law's course at the reference's speed on this piece, braked in time for
+    // the next stop; the velocity through the water that gives it in the mean current (the
+    // crab angle), steered less the sideslip through the water that the robot measures.
+    const Point2 from = next_target_ == 0 ? start_position_ : targets_[next_target_ - 1].position();
+    const double course = line_of_sight_->course(from, target.position(), estimate.position());
+    const double to_stop =
+        (target.position() - estimate.position()).norm() + distance_to_stop_[next_target_];
+    const double speed = std::min(
+        {piece_speed_[next_target_], limits.v_max, std::sqrt(2.0 * limits.a_max * to_stop)});
+    const Point2 through_water = speed * Point2(std::cos(course), std::sin(course)) -
+                                 Point2(model_.current_x, model_.current_y);
+    const double sideslip =
+        state_.speed > kSlowestCourseSpeed ? std::atan2(state_.sway, state_.speed) : 0.0;
+    heading_error =
+        wrapAngle(std::atan2(through_water.y(), through_water.x()) - sideslip - state_.pose.yaw);
+    command.speed =
+        std::min(limits.v_max, through_water.norm()) * std::max(0.0, std::cos(heading_error));
+  }
+  command.yaw_rate =
+      std::clamp(model_.yaw_gain * heading_error, -limits.yaw_rate_max, limits.yaw_rate_max);
+  return command;
+}
+
 void TrajectoryFollower::advanceSetpoint() {
-  const Command command = this->command();
+  const Command command = line_of_sight_ ? lineOfSightCommand() : setpointCommand();
   const double speed_change = model_.vehicle.a_max * model_.sim_dt;
   const double previous_reference = speed_reference_;
   speed_reference_ = std::max(0.0, speed_reference_ + std::clamp(command.speed - speed_reference_,

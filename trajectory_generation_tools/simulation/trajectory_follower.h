@@ -2,10 +2,12 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "trajectory_generation_tools/simulation/environment_disturbance.h"
+#include "trajectory_generation_tools/simulation/line_of_sight_guidance.h"
 #include "trajectory_generation_tools/simulation/planar_rigid_body.h"
 #include "trajectory_generation_tools/simulation/robot_model.h"
 #include "trajectory_generation_tools/simulation/timed_reference.h"
@@ -21,12 +23,34 @@ struct RobotState {
   double yaw_rate = 0.0;  ///< rad/s
 };
 
+/// Where a tracked reference asked for more than the vehicle can do (controllers timed and
+/// pose_stream): its own demand, before any correction of the robot's error, is beyond the
+/// vehicle: a speed through the water beyond v_max, a yaw rate beyond yaw_rate_max, or, for
+/// the dynamic vehicle, a feedforward (the reference's acceleration through mass and added
+/// mass, the Coriolis terms and the damping at its velocity through the water) that the
+/// thrusters cannot give.
+struct ReferenceExcess {
+  std::string first_demand;                ///< what it first asked for, and the limit it was beyond
+  double duration_s = 0.0;                 ///< simulated time under such a reference; 0: never
+  double first_t = 0.0;                    ///< s: when it first did
+  Point2 first_position = Point2::Zero();  ///< m: where the reference was then
+  std::size_t first_pose = 0;              ///< index of the pose the reference headed to then
+};
+
 /// A planar robot that tracks a trajectory. By default (controller: timed) it tracks the
 /// reference p_d(t) that the poses and their times make (TimedReference): per world axis
 /// the reference's acceleration plus PD on its velocity and position (Kp = M wn^2, Kd =
 /// 2 zeta wn M), turned into body forces through the rigid body's model (timedForces), the
 /// kinematic vehicle's speed and yaw rate from v_d + wn (p_d - p); it is done once the
-/// reference has ended and the robot is at its last pose. With controller: setpoint it
+/// reference has ended and the robot is at its last pose. controller: pose_stream is the
+/// same tracker on the reference that passes pose i at i / pose_rate (the poses streamed at
+/// a fixed rate instead of at the trajectory's times). controller: los steers the course of
+/// line-of-sight guidance (LineOfSightGuidance, look-ahead los_lookahead, 0: the turning
+/// radius) on the piece to the next target, its heading off that course by the measured
+/// sideslip, at the reference's speed on that piece (its length over its duration), braked
+/// as below and scaled by the cosine of the heading error; it turns in place at heading
+/// targets, and uses the targets, yaw controller and vehicle loops of setpoint, below.
+/// With controller: setpoint it
 /// follows the poses as a sequence of targets, as the thesis's robot did in the lake
 /// (Chapter 4): it is handed one pose after the other, not a timetable, so its traversal
 /// time comes out of its dynamics and controllers, as follows.
@@ -83,9 +107,9 @@ class TrajectoryFollower {
   /// Follows `targets` from `start` with the robot `model` (its ranges checked where it
   /// was made: robotModelOf). Targets already reached at the start are skipped. Throws
   /// InvalidInputError for no targets, or a non-finite target or start.
-  /// With `controller: timed`, `times` holds each target's time (the trajectory's t
-  /// column) and the robot tracks the reference p_d(t) they make (TimedReference) instead
-  /// of homing on each target; it throws InvalidInputError without them. Other controllers
+  /// With `controller: timed` or `los`, `times` holds each target's time (the trajectory's
+  /// t column): timed tracks the reference p_d(t) they make (TimedReference), los takes its
+  /// speeds from them; both throw InvalidInputError without them. setpoint and pose_stream
   /// ignore them.
   TrajectoryFollower(const RobotModel& model, std::vector<Pose2> targets, const RobotState& start,
                      std::vector<double> times = {});
@@ -116,6 +140,13 @@ class TrajectoryFollower {
 
   const std::vector<Pose2>& targets() const { return targets_; }
 
+  /// Where the reference asked for more than the vehicle can do, so far.
+  const ReferenceExcess& referenceExcess() const { return reference_excess_; }
+
+  /// The reference p_d(t) the robot tracks (times from its start), for controllers timed
+  /// and pose_stream; nullptr for setpoint and los.
+  const TimedReference* reference() const { return reference_ ? &*reference_ : nullptr; }
+
  private:
   /// The controllers' commands for this step: a surge speed (m/s, >= 0) and a yaw rate.
   struct Command {
@@ -125,13 +156,19 @@ class TrajectoryFollower {
 
   bool reached(std::size_t index) const;
   void skipReachedTargets();
-  Command command() const;
+  /// controller: setpoint. The commands towards the next target.
+  Command setpointCommand() const;
+  /// controller: los. The guidance law's course and the reference's speed, or a turn in
+  /// place towards a heading target.
+  Command lineOfSightCommand() const;
+  /// controller: los. The guidance and each piece's speed from the trajectory's `times`.
+  void setUpLineOfSight(const std::vector<double>& times);
   void advanceKinematic(const Command& command);
   /// `previous_reference`: m/s, the surge-speed reference at the start of the step.
   void advanceDynamic(const Command& command, double previous_reference);
   /// The dynamic vehicle under `forces` for one step, in the lake's current.
   void advanceBody(const BodyForces& forces);
-  /// controller: setpoint. The commands towards the next target, applied for a step.
+  /// controllers setpoint and los: the commands towards the next target, applied for a step.
   void advanceSetpoint();
   /// controller: timed. The law on the reference, applied for a step.
   void advanceTimed();
@@ -140,12 +177,19 @@ class TrajectoryFollower {
   /// The forces of the timed controller: feedforward plus PD on the reference, per axis;
   /// without sway actuation the heading steers towards `ahead`, the reference 1 / wn later.
   BodyForces timedForces(const ReferenceState& reference, const ReferenceState& ahead) const;
+  /// What the reference's own demand at `reference` asks beyond the vehicle
+  /// (ReferenceExcess), if anything.
+  std::optional<std::string> beyondVehicle(const ReferenceState& reference) const;
   /// The kinematic vehicle's command under the timed controller.
   Command timedCommand(const ReferenceState& reference) const;
 
   RobotModel model_;
   std::vector<Pose2> targets_;
-  std::optional<TimedReference> reference_;  ///< controller: timed
+  std::optional<TimedReference> reference_;           ///< controllers timed and pose_stream
+  std::optional<LineOfSightGuidance> line_of_sight_;  ///< controller: los
+  /// Per target, controller los: m/s, the reference's speed on the piece that leads to it.
+  std::vector<double> piece_speed_;
+  Point2 start_position_ = Point2::Zero();  ///< where the robot started
   /// Per target: true for a heading target (same position as the target before it).
   std::vector<bool> heading_target_;
   /// Per target: m along the targets from it to the next stop (0 at a stop), for braking.
@@ -155,6 +199,7 @@ class TrajectoryFollower {
   EnvironmentDisturbance disturbance_;
   /// m/s: the surge-speed reference, the speed command limited by a_max.
   double speed_reference_ = 0.0;
+  ReferenceExcess reference_excess_;
   double start_time_ = 0.0;  ///< state_.t at the start: t = start + steps * sim_dt
   std::size_t steps_ = 0;
   std::size_t next_target_ = 0;
