@@ -146,11 +146,21 @@ TEST(ParameterSchema, ChecksTheRobotModelsRanges) {
            {"thrust_max", &PlannerParameters::thrust_max},
            {"yaw_torque_max", &PlannerParameters::yaw_torque_max},
            {"surge_loop_gain", &PlannerParameters::surge_loop_gain},
-           {"yaw_rate_loop_gain", &PlannerParameters::yaw_rate_loop_gain}}) {
+           {"yaw_rate_loop_gain", &PlannerParameters::yaw_rate_loop_gain},
+           {"tracking_natural_frequency", &PlannerParameters::tracking_natural_frequency},
+           {"tracking_damping", &PlannerParameters::tracking_damping},
+           {"pose_rate", &PlannerParameters::pose_rate}}) {
     const std::string message = errorOf([field = member](PlannerParameters& p) { p.*field = 0.0; });
     EXPECT_EQ(message.rfind(name + " = 0 is out of range: it must be a finite number > 0", 0), 0u)
         << message;
   }
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.los_lookahead = -1.0; }),
+            "los_lookahead = -1 is out of range: it must be a finite number >= 0 (m)");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.tracking_natural_frequency = 6.0; }),
+            "tracking_natural_frequency = 6 is out of range: it must be a finite number > 0 "
+            "(rad/s), and tracking_natural_frequency * sim_dt <= 0.5 (sim_dt = 0.1)");
+  EXPECT_EQ(errorOf([](PlannerParameters& p) { p.controller = "pid"; }),
+            "controller = 'pid' is not one of: los, pose_stream, setpoint, timed");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.yaw_tolerance = M_PI; }),
             "yaw_tolerance = 3.141592654 is out of range: it must be in (0, pi) (rad)");
   EXPECT_EQ(errorOf([](PlannerParameters& p) { p.current_y = std::nan(""); }),

@@ -120,5 +120,27 @@ TEST(RobotSimulatorTest, SaysWhereTheReferenceAsksMoreThanTheVehicleCanDo) {
   EXPECT_NE(excess.first_demand.find("thrust"), std::string::npos) << excess.first_demand;
 }
 
+TEST(RobotSimulatorTest, TheSameSeedGivesTheSameRunForEveryController) {
+  const std::vector<Pose2> poses = lPath();
+  for (const std::string& controller : {"timed", "pose_stream", "setpoint", "los"}) {
+    RobotModel model = modelWith(controller, "dynamic", 0.1);
+    model.disturbance.current_sigma = 0.02;
+    model.disturbance.navigation_sigma = 0.1;
+    model.disturbance.seed = 7;
+    const std::vector<double> times = PoseSequenceTiming(model.vehicle).times(poses);
+    const SimulationResult first = RobotSimulator(model).simulate(poses, times);
+    const SimulationResult second = RobotSimulator(model).simulate(poses, times);
+    ASSERT_EQ(first.steps.size(), second.steps.size()) << controller;
+    for (std::size_t i = 0; i < first.steps.size(); ++i) {
+      EXPECT_EQ(first.steps[i].pose.x, second.steps[i].pose.x) << controller << " " << i;
+      EXPECT_EQ(first.steps[i].pose.y, second.steps[i].pose.y) << controller << " " << i;
+      EXPECT_EQ(first.steps[i].pose.yaw, second.steps[i].pose.yaw) << controller << " " << i;
+    }
+    model.disturbance.seed = 8;
+    const SimulationResult other = RobotSimulator(model).simulate(poses, times);
+    EXPECT_NE(other.tracking.sum_m, first.tracking.sum_m) << controller;
+  }
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core

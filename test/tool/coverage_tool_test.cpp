@@ -842,6 +842,14 @@ TEST(CoverageTool, SimulateRejectsBadInputWithOneLine) {
            "--set yaw_gain=20: yaw_gain = 20 is out of range: it must be a finite number > 0 "
            "(1/s), and yaw_gain * sim_dt <= 1 (sim_dt = 0.1)");
   simulate(good, "--set current_x=.nan", "current_x: the value '.nan' is not finite");
+  simulate(good, "--set pose_rate=0",
+           "--set pose_rate=0: pose_rate = 0 is out of range: it must be a finite number > 0 (Hz)");
+  simulate(good, "--set los_lookahead=-1",
+           "--set los_lookahead=-1: los_lookahead = -1 is out of range: it must be a finite "
+           "number >= 0 (m)");
+  simulate(good, "--set controller=pid",
+           "--set controller=pid: controller = 'pid' is not one of: los, pose_stream, setpoint, "
+           "timed");
   simulate(good, "--set sim_time_limit=1e9",
            "sim_time_limit = 1000000000 is out of range: it must be a finite number > 0 (s), and "
            "sim_time_limit / sim_dt <= 5000000 (sim_dt = 0.1)");
