@@ -157,8 +157,8 @@ std::vector<Pose2> unsmoothedCorner() {
 TEST(TrajectoryFollowerTest, BrakesInTimeToTurnInPlaceAtACorner) {
   // The speed is held to what a_max can stop before the corner, so neither vehicle runs
   // past it (towards a wall, in a planned path) by more than the tolerance; the dynamic
-  // vehicle then slides a few centimetres more in sway while it turns, which it cannot
-  // resist (sway is not actuated).
+  // vehicle may slide a few centimetres more while it turns, before its loops have stopped
+  // it.
   for (const std::string& vehicle : kVehicles) {
     const PlannerParameters parameters = withVehicle(vehicle);
     const SimulationResult result =

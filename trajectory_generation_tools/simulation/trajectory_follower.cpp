@@ -115,8 +115,7 @@ void TrajectoryFollower::setUpLineOfSight(const std::vector<double>& times) {
     const double duration = times[i] - times[i - 1];
     if (!std::isfinite(duration) || duration < 0.0) {
       throw InvalidInputError(
-          "trajectory follower: the trajectory's times decrease or are not "
-          "finite at pose " +
+          "trajectory follower: the trajectory's times decrease or are not finite at pose " +
           std::to_string(i));
     }
     const double length = (targets_[i].position() - targets_[i - 1].position()).norm();
@@ -312,24 +311,20 @@ std::optional<std::string> TrajectoryFollower::beyondVehicle(
   demand.sway = b.swayInertia() * (-s * a.x() + c * a.y() - r * u) + b.surgeInertia() * u * r +
                 b.swayDamping(v);
   demand.yaw_torque = b.yawDamping(r) - (b.surgeInertia() - b.swayInertia()) * u * v;
-  const std::string thrust = "more thrust than the thrusters give (surge " +
-                             formatNumber(demand.surge) + " N, sway " + formatNumber(demand.sway) +
-                             " N, yaw " + formatNumber(demand.yaw_torque) + " N m)";
-  if (!b.sway_actuated) {
+  bool beyond = false;
+  if (b.sway_actuated) {
+    const BodyForces given = body_.limited(demand);
+    beyond = std::hypot(demand.surge - given.surge, demand.sway - given.sway) >
+                 kDemandSlack * b.thrust_max ||
+             std::abs(demand.yaw_torque - given.yaw_torque) > kDemandSlack * b.yaw_torque_max;
+  } else {
     // The torpedo turns its surge onto the path instead of pushing sideways.
-    if (std::abs(demand.surge) > b.thrust_max * (1.0 + kDemandSlack) ||
-        std::abs(demand.yaw_torque) > b.yaw_torque_max * (1.0 + kDemandSlack)) {
-      return thrust;
-    }
-    return std::nullopt;
+    beyond = std::abs(demand.surge) > b.thrust_max * (1.0 + kDemandSlack) ||
+             std::abs(demand.yaw_torque) > b.yaw_torque_max * (1.0 + kDemandSlack);
   }
-  const BodyForces given = body_.limited(demand);
-  if (std::hypot(demand.surge - given.surge, demand.sway - given.sway) >
-          kDemandSlack * b.thrust_max ||
-      std::abs(demand.yaw_torque - given.yaw_torque) > kDemandSlack * b.yaw_torque_max) {
-    return thrust;
-  }
-  return std::nullopt;
+  if (!beyond) return std::nullopt;
+  return "more thrust than the thrusters give (surge " + formatNumber(demand.surge) + " N, sway " +
+         formatNumber(demand.sway) + " N, yaw " + formatNumber(demand.yaw_torque) + " N m)";
 }
 
 void TrajectoryFollower::advanceTimed() {
