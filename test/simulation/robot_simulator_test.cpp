@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "coverage_system/parameters/stage_options.h"
@@ -118,6 +119,42 @@ TEST(RobotSimulatorTest, SaysWhereTheReferenceAsksMoreThanTheVehicleCanDo) {
                                      .reference_excess;
   EXPECT_GT(excess.duration_s, 0.0);
   EXPECT_NE(excess.first_demand.find("thrust"), std::string::npos) << excess.first_demand;
+}
+
+TEST(RobotSimulatorTest, EveryControllerDrivesDegenerateTrajectoriesToTheirEnd) {
+  // Valid input that is degenerate: one pose, a repeated pose, a reversal in place, legs far
+  // shorter than the turning radius, and poses that share a time. Every controller on both
+  // vehicles arrives at the last pose, within twice the position tolerance (the torpedo-like
+  // timed tracker ends at or past it, and los and setpoint count a passed pose as reached).
+  std::vector<Pose2> reversal;
+  for (int i = 0; i <= 4; ++i) reversal.push_back({0.5 * i, 0.0, 0.0});
+  for (int i = 1; i <= 8; ++i) reversal.push_back({2.0, 0.0, M_PI / 8 * i});
+  for (int i = 1; i <= 4; ++i) reversal.push_back({2.0 - 0.5 * i, 0.0, M_PI});
+  std::vector<Pose2> zigzag;
+  for (int i = 0; i <= 20; ++i) zigzag.push_back({0.1 * i, 0.05 * (i % 2), 0.0});
+  const std::vector<std::pair<std::string, std::vector<Pose2>>> trajectories{
+      {"one pose", {{1.0, 2.0, 0.5}}},
+      {"a repeated pose", {{1.0, 2.0, 0.5}, {1.0, 2.0, 0.5}, {3.0, 2.0, 0.0}, {3.0, 2.0, 0.0}}},
+      {"a reversal in place", reversal},
+      {"short legs", zigzag}};
+  for (const auto& [name, poses] : trajectories) {
+    for (const std::string& controller : {"timed", "pose_stream", "setpoint", "los"}) {
+      for (const std::string& vehicle : {"dynamic", "kinematic"}) {
+        SCOPED_TRACE(name + ", " + controller + ", " + vehicle);
+        RobotModel model = modelWith(controller, vehicle, 0.1);
+        model.sim_time_limit = 600.0;
+        std::vector<double> times = PoseSequenceTiming(model.vehicle).times(poses);
+        if (name == "a repeated pose") times = {0.0, 0.0, 5.0, 5.0};
+        const SimulationResult result = RobotSimulator(model).simulate(poses, times);
+        EXPECT_LT((result.steps.back().pose.position() - poses.back().position()).norm(),
+                  2.0 * model.position_tolerance);
+        for (const SimulationStep& step : result.steps) {
+          ASSERT_TRUE(std::isfinite(step.pose.x) && std::isfinite(step.pose.y) &&
+                      std::isfinite(step.pose.yaw));
+        }
+      }
+    }
+  }
 }
 
 TEST(RobotSimulatorTest, TheSameSeedGivesTheSameRunForEveryController) {

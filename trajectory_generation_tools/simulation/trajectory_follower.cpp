@@ -359,10 +359,16 @@ void TrajectoryFollower::updateTimedProgress() {
   const double elapsed = state_.t - start_time_;
   const Point2 offset = estimatedPose().position() - last.position();
   const bool lateral = model_.vehicle_model == VehicleModel::kDynamic && model_.body.sway_actuated;
-  const bool arrived =
-      lateral ? offset.norm() <= model_.position_tolerance &&
-                    std::abs(wrapAngle(last.yaw - state_.pose.yaw)) <= model_.yaw_tolerance
-              : reached(targets_.size() - 1);
+  bool arrived = false;
+  if (lateral) {
+    arrived = offset.norm() <= model_.position_tolerance &&
+              std::abs(wrapAngle(last.yaw - state_.pose.yaw)) <= model_.yaw_tolerance;
+  } else {
+    // The last position target reached (or passed), then the heading of a last rotation.
+    std::size_t last_position = targets_.size() - 1;
+    while (heading_target_[last_position]) --last_position;
+    arrived = reached(last_position) && reached(targets_.size() - 1);
+  }
   if (elapsed >= reference_->endTime() && arrived) {
     next_target_ = targets_.size();
   } else {
