@@ -8,6 +8,11 @@ namespace kinematic_coverage::core {
 
 /// Named tolerances for double geometry (metres); topology-deciding predicates use CGAL.
 constexpr double kLengthTolerance = 1e-9;
+/// Two consecutive poses closer than this (metres) are at the same position: a waypoint
+/// path skips the second; a trajectory sees their two footprints, not the convex hull of
+/// them (docs/REFERENCE.md, Sensor footprint and coverage); a trajectory's pose at the
+/// position of the one before is a turn in place.
+constexpr double kSamePositionTolerance = 1e-9;
 /// m: a path keeps a clearance c (wall_distance, smoothing_clearance) when no point of it is
 /// nearer than c minus this to the hull and holes, so that pieces lying on the offset free
 /// area's boundary keep it (docs/REFERENCE.md, Collisions and clearance).

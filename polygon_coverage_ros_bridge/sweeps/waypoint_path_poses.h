@@ -2,14 +2,10 @@
 
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 
 namespace kinematic_coverage::core {
-
-/// Two consecutive poses closer than this (metres) are at the same position: a waypoint
-/// path skips the second; a trajectory sees their two footprints, not the convex hull of
-/// them (docs/REFERENCE.md, Sensor footprint and coverage).
-constexpr double kSamePositionTolerance = 1e-9;
 
 /// Default angle (radians) between the sampled poses of an in-place rotation.
 constexpr double kDefaultRotationStep = 0.2;

@@ -6,12 +6,6 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
 namespace kinematic_coverage::core {
-namespace {
-
-/// m: poses closer than this share a position (an in-place rotation between them).
-constexpr double kSamePosition = 1e-9;
-
-}  // namespace
 
 PoseSequenceTiming::PoseSequenceTiming(const VehicleLimits& limits)
     : limits_(limits), profile_(limits) {}
@@ -27,7 +21,7 @@ std::vector<double> PoseSequenceTiming::times(const std::vector<Pose2>& poses) c
   for (std::size_t k = 0; k + 1 < n; ++k) {
     length[k] = (poses[k + 1].position() - poses[k].position()).norm();
     turn[k] = std::abs(wrapAngle(poses[k + 1].yaw - poses[k].yaw));
-    rotation[k] = length[k] <= kSamePosition;
+    rotation[k] = length[k] <= kSamePositionTolerance;
     cap[k] = turn[k] > 0.0 ? std::min(limits_.v_max, limits_.yaw_rate_max * length[k] / turn[k])
                            : limits_.v_max;
   }

@@ -12,8 +12,6 @@
 namespace kinematic_coverage::core {
 namespace {
 
-/// Poses closer than this share a position: the poses of an in-place rotation.
-constexpr double kSamePositionTolerance = 1e-9;
 /// Relative margin above a limit before a reference's demand counts as beyond it, so that a
 /// reference planned at exactly v_max or yaw_rate_max does not.
 constexpr double kDemandSlack = 1e-6;
