@@ -147,9 +147,6 @@ StudyOptions parseOptions(int argc, char** argv) {
   return options;
 }
 
-/// `value` in the shortest form that reads back ("0.5", "10").
-std::string levelText(double value) { return formatNumber(value); }
-
 /// Each controller's rows: its baseline (the experiment's robot), then each level of its
 /// own parameters that differs from the baseline, then its vehicle without sway actuation.
 std::vector<StudySetting> settingsOf(const PlannerParameters& base) {
@@ -158,8 +155,8 @@ std::vector<StudySetting> settingsOf(const PlannerParameters& base) {
                  double baseline, double scale = 1.0, const std::string& unit = "") {
     if (level == baseline) return;
     settings.push_back({controller,
-                        controller + ": " + name + " " + levelText(level) + unit,
-                        {"controller=" + controller, name + "=" + levelText(level * scale)}});
+                        controller + ": " + name + " " + formatNumber(level) + unit,
+                        {"controller=" + controller, name + "=" + formatNumber(level * scale)}});
   };
   for (const std::string controller : {"setpoint", "timed", "pose_stream", "los"}) {
     settings.push_back({controller, controller + ": baseline", {"controller=" + controller}});
@@ -319,7 +316,7 @@ template <std::size_t n>
 std::string levelsText(const double (&levels)[n]) {
   std::string text;
   for (std::size_t i = 0; i < n; ++i) {
-    text += (i == 0 ? "" : i + 1 == n ? " and " : ", ") + levelText(levels[i]);
+    text += (i == 0 ? "" : i + 1 == n ? " and " : ", ") + formatNumber(levels[i]);
   }
   return text;
 }
@@ -349,7 +346,7 @@ void printIntroduction(const StudyOptions& options) {
       "the first row; the error trend by the sum, the thesis's metric).\n\n",
       levelsText(kYawGains).c_str(), levelsText(kNaturalFrequencies).c_str(),
       levelsText(kPoseRates).c_str(), levelsText(kLookaheadShares).c_str(),
-      settingsText(options.lake).c_str(), options.seeds, levelText(kErrorSampleRate).c_str());
+      settingsText(options.lake).c_str(), options.seeds, formatNumber(kErrorSampleRate).c_str());
 }
 
 /// The table of one experiment; its trend counts into `trends`.
@@ -390,7 +387,9 @@ std::string trendSentence(const ExperimentTrends& trends, const std::vector<Tren
   std::string text;
   for (std::size_t i = 0; i < trends.controllers.size(); ++i) {
     const TrendCount& count = counts[i];
-    text += (i == 0 ? "" : i + 1 == trends.controllers.size() ? " and " : ", ") +
+    text += (i == 0                               ? ""
+             : i + 1 == trends.controllers.size() ? " and "
+                                                  : ", ") +
             trends.controllers[i] + " in " + std::to_string(count.calm) + " of " +
             std::to_string(count.calm_of) + (i == 0 ? " calm" : "") + " and " +
             std::to_string(count.lake) + " of " + std::to_string(count.lake_of) +

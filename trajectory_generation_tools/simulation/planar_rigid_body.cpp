@@ -26,6 +26,26 @@ void PlanarRigidBody::setCurrent(double current_x, double current_y) {
   current_y_ = current_y;
 }
 
+BodyForces PlanarRigidBody::forcesFor(const RigidBodyState& state, const Point2& acceleration,
+                                      double yaw_acceleration, const RigidBodyState& damped) const {
+  // In the body frame, nu' = R^T p'' - S(r) nu.
+  const RigidBodyParameters& b = parameters_;
+  const double c = std::cos(state.pose.yaw);
+  const double s = std::sin(state.pose.yaw);
+  const double u = state.surge;
+  const double v = state.sway;
+  const double r = state.yaw_rate;
+  const Point2& a = acceleration;
+  BodyForces forces;
+  forces.surge = b.surgeInertia() * (c * a.x() + s * a.y() + r * v) - b.swayInertia() * v * r +
+                 b.surgeDamping(damped.surge);
+  forces.sway = b.swayInertia() * (-s * a.x() + c * a.y() - r * u) + b.surgeInertia() * u * r +
+                b.swayDamping(damped.sway);
+  forces.yaw_torque = b.yawInertia() * yaw_acceleration + b.yawDamping(damped.yaw_rate) -
+                      (b.surgeInertia() - b.swayInertia()) * u * v;
+  return forces;
+}
+
 BodyForces PlanarRigidBody::limited(const BodyForces& forces) const {
   if (parameters_.sway_actuated) return allocation_.achievable(forces);
   return {std::clamp(forces.surge, -parameters_.thrust_max, parameters_.thrust_max), 0.0,

@@ -41,6 +41,13 @@ class PlanarRigidBody {
   RigidBodyState advance(const RigidBodyState& state, const BodyForces& forces, double duration,
                          double max_step = kIntegrationStep) const;
 
+  /// The equations above solved for the forces (inverse dynamics): those that give the
+  /// body in `state` the world-frame acceleration `acceleration` (m/s^2) and the yaw
+  /// acceleration `yaw_acceleration` (rad/s^2), its damping taken at the velocities of
+  /// `damped` (its pose ignored), e.g. a reference's, fed forward by a controller.
+  BodyForces forcesFor(const RigidBodyState& state, const Point2& acceleration,
+                       double yaw_acceleration, const RigidBodyState& damped) const;
+
   /// What the thrusters give of `forces`: with sway actuated, the vectored frame's
   /// achievable forces (VectoredThrustAllocation); without, no sway force, surge clamped to
   /// +-thrust_max and yaw torque to +-yaw_torque_max apart.

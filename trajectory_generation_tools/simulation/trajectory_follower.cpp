@@ -234,16 +234,6 @@ BodyForces TrajectoryFollower::timedForces(const ReferenceState& reference,
   const Point2 wanted = reference.acceleration +
                         2.0 * zeta * wn * (reference.velocity - over_ground) +
                         wn * wn * (reference.position - estimate.position());
-  const Point2 through_water = reference.velocity - current;
-  const double u_ref = c * through_water.x() + s * through_water.y();
-  const double v_ref = -s * through_water.x() + c * through_water.y();
-  BodyForces forces;
-  forces.surge = b.surgeInertia() * (c * wanted.x() + s * wanted.y() + r * v) -
-                 b.swayInertia() * v * r + b.surgeDamping(u_ref);
-  if (b.sway_actuated) {
-    forces.sway = b.swayInertia() * (-s * wanted.x() + c * wanted.y() - r * u) +
-                  b.surgeInertia() * u * r + b.swayDamping(v_ref);
-  }
   // Heading: the same PD on the reference's heading; a body that cannot push sideways
   // steers towards the reference a little ahead instead, turning its surge onto the
   // lateral error.
@@ -255,9 +245,15 @@ BodyForces TrajectoryFollower::timedForces(const ReferenceState& reference,
     yaw_rate = 0.0;
   }
   const double heading_error = wrapAngle(heading - state_.pose.yaw);
-  forces.yaw_torque =
-      b.yawInertia() * (2.0 * zeta * wn * (yaw_rate - r) + wn * wn * heading_error) +
-      b.yawDamping(yaw_rate) - (b.surgeInertia() - b.swayInertia()) * u * v;
+  const Point2 through_water = reference.velocity - current;
+  RigidBodyState damped;
+  damped.surge = c * through_water.x() + s * through_water.y();
+  damped.sway = -s * through_water.x() + c * through_water.y();
+  damped.yaw_rate = yaw_rate;
+  BodyForces forces =
+      body_.forcesFor({state_.pose, u, v, r}, wanted,
+                      2.0 * zeta * wn * (yaw_rate - r) + wn * wn * heading_error, damped);
+  if (!b.sway_actuated) forces.sway = 0.0;
   return forces;
 }
 
@@ -296,19 +292,18 @@ std::optional<std::string> TrajectoryFollower::beyondVehicle(
            " rad/s, beyond yaw_rate_max = " + formatNumber(limits.yaw_rate_max) + " rad/s";
   }
   if (model_.vehicle_model == VehicleModel::kKinematic) return std::nullopt;
-  // In the reference's body frame, nu' = R^T p'' - S(r) nu (its yaw acceleration left out).
+  // The reference's own demand: its acceleration, at its heading and velocity through the
+  // water (its yaw acceleration left out).
   const RigidBodyParameters& b = model_.body;
   const double c = std::cos(reference.yaw);
   const double s = std::sin(reference.yaw);
-  const double u = c * through_water.x() + s * through_water.y();
-  const double v = -s * through_water.x() + c * through_water.y();
-  const Point2& a = reference.acceleration;
-  BodyForces demand;
-  demand.surge = b.surgeInertia() * (c * a.x() + s * a.y() + r * v) - b.swayInertia() * v * r +
-                 b.surgeDamping(u);
-  demand.sway = b.swayInertia() * (-s * a.x() + c * a.y() - r * u) + b.surgeInertia() * u * r +
-                b.swayDamping(v);
-  demand.yaw_torque = b.yawDamping(r) - (b.surgeInertia() - b.swayInertia()) * u * v;
+  RigidBodyState at_reference;
+  at_reference.pose.yaw = reference.yaw;
+  at_reference.surge = c * through_water.x() + s * through_water.y();
+  at_reference.sway = -s * through_water.x() + c * through_water.y();
+  at_reference.yaw_rate = r;
+  const BodyForces demand =
+      body_.forcesFor(at_reference, reference.acceleration, 0.0, at_reference);
   bool beyond = false;
   if (b.sway_actuated) {
     const BodyForces given = body_.limited(demand);
@@ -390,8 +385,8 @@ TrajectoryFollower::Command TrajectoryFollower::lineOfSightCommand() const {
     const double course = line_of_sight_->course(from, target.position(), estimate.position());
     const double to_stop =
         (target.position() - estimate.position()).norm() + distance_to_stop_[next_target_];
-    const double speed = std::min(
-        {piece_speed_[next_target_], limits.v_max, std::sqrt(2.0 * limits.a_max * to_stop)});
+    const double speed =
+        std::min(piece_speed_[next_target_], std::sqrt(2.0 * limits.a_max * to_stop));
     const Point2 through_water = speed * Point2(std::cos(course), std::sin(course)) -
                                  Point2(model_.current_x, model_.current_y);
     const double sideslip =
