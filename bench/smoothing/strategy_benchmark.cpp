@@ -33,6 +33,11 @@
 // least ratio of closest approach to wall_distance and the maps nearer than wall_distance
 // by more than kClearanceTolerance; the share of turns smoothed, the median traversal time
 // and its median ratio to the unsmoothed trajectory's.
+// Table 6, per family, batch and lake set: where the default's traversal time goes. The
+// median traversal time of the map planned with `coverage_repair: false` (unsmoothed, and
+// with the default smoothing under the thesis's no-contact check, `smoothing_clearance: 0`),
+// then of the default plan (unsmoothed, the no-contact check, the default), and the share
+// of turns smoothed under the no-contact check and by default.
 //
 // Usage: strategy_benchmark [--maps N[,N...]] [--families comb,spiral,...] [--lakes 10]
 //                           [--per-map]
@@ -216,9 +221,61 @@ struct Run {
 /// Every strategy's run on one mission, planned once.
 struct MapRuns {
   Run runs[kStrategies];
+  /// Table 6's runs: the default smoothing with the thesis's no-contact check
+  /// (`smoothing_clearance: 0`) on the same plan, and, on the plan made without coverage
+  /// repair, the unsmoothed trajectory and that no-contact smoothing.
+  Run no_contact;
+  Run unrepaired_unsmoothed;
+  Run unrepaired_no_contact;
   double time_cost_s = 0.0;    ///< the plan's
   double wall_distance = 0.0;  ///< m, the map's
 };
+
+/// One trajectory of `planned` with `parameters`, written as plan writes it.
+Run runTrajectory(const PlannerParameters& parameters, const Mission& mission,
+                  const PlannedMission& planned, double planning_s, const std::string& name,
+                  const std::string& out_dir) {
+  PlanOutputRequest request;
+  request.parameters = &parameters;
+  request.free_area = &planned.free_area;
+  request.plan = &planned.plan;
+  request.planning_time_s = planning_s;
+  request.start = mission.start;
+  request.goal = mission.goal;
+  request.title = "strategy_benchmark: " + name;
+  std::ostringstream progress;
+  const auto started = Clock::now();
+  const PlanOutputs outputs = writePlanOutputs(request, out_dir, progress);
+  Run run;
+  run.wall_s = planning_s + secondsSince(started);
+  run.reachable_percent = outputs.coverage.reachable_coverage_percent;
+  run.traversal_time_s = outputs.traversal_time_s;
+  run.turns_smoothed = outputs.turns.turns_smoothed;
+  run.turns_total = outputs.turns.turns_total;
+  run.min_clearance_m = outputs.min_obstacle_clearance_m;
+  if (outputs.smoothing_loss) run.lost = *outputs.smoothing_loss;
+  return run;
+}
+
+/// Table 6's runs of `mission` (MapRuns), `planned` being its default plan.
+void runTimeParts(const Mission& mission, const PlannedMission& planned, double planning_s,
+                  const std::string& out_dir, MapRuns& result) {
+  PlannerParameters no_contact = mission.parameters;
+  no_contact.smoothing_clearance = 0.0;
+  result.no_contact =
+      runTrajectory(no_contact, mission, planned, planning_s, "no-contact check", out_dir);
+  Mission unrepaired = mission;
+  unrepaired.parameters.coverage_repair = false;
+  const auto started = Clock::now();
+  const PlannedMission unrepaired_plan = planMission(unrepaired);
+  const double unrepaired_s = secondsSince(started);
+  no_contact.coverage_repair = false;
+  result.unrepaired_no_contact = runTrajectory(no_contact, unrepaired, unrepaired_plan,
+                                               unrepaired_s, "no-contact, no repair", out_dir);
+  result.unrepaired_unsmoothed =
+      runTrajectory(withStrategy(unrepaired.parameters, kUnsmoothed), unrepaired, unrepaired_plan,
+                    unrepaired_s, "unsmoothed, no repair", out_dir);
+}
 
 MapRuns runMap(const Mission& mission, const std::string& out_dir) {
   MapRuns result;
@@ -240,26 +297,10 @@ MapRuns runMap(const Mission& mission, const std::string& out_dir) {
       result.runs[s] = result.runs[same];
       continue;
     }
-    PlanOutputRequest request;
-    request.parameters = &parameters;
-    request.free_area = &planned.free_area;
-    request.plan = &planned.plan;
-    request.planning_time_s = planning_s;
-    request.start = mission.start;
-    request.goal = mission.goal;
-    request.title = std::string("strategy_benchmark: ") + strategyName(Strategy(s));
-    std::ostringstream progress;
-    const auto started = Clock::now();
-    const PlanOutputs outputs = writePlanOutputs(request, out_dir, progress);
-    Run& run = result.runs[s];
-    run.wall_s = planning_s + secondsSince(started);
-    run.reachable_percent = outputs.coverage.reachable_coverage_percent;
-    run.traversal_time_s = outputs.traversal_time_s;
-    run.turns_smoothed = outputs.turns.turns_smoothed;
-    run.turns_total = outputs.turns.turns_total;
-    run.min_clearance_m = outputs.min_obstacle_clearance_m;
-    if (outputs.smoothing_loss) run.lost = *outputs.smoothing_loss;
+    result.runs[s] =
+        runTrajectory(parameters, mission, planned, planning_s, strategyName(Strategy(s)), out_dir);
   }
+  runTimeParts(mission, planned, planning_s, out_dir, result);
   return result;
 }
 
@@ -343,6 +384,43 @@ void printClearanceTable(const std::vector<MapSet>& sets) {
                   strategyName(strategy).c_str(), set.maps.size(), least, nearer,
                   total > 0 ? 100.0 * smoothed / total : 100.0, median(times), median(ratios));
     }
+  }
+}
+
+/// Table 6: per set, where the default's traversal time goes: the median traversal time of
+/// the plan made without coverage repair (unsmoothed, and smoothed with the no-contact
+/// check), of the default plan (unsmoothed, no-contact check, default), and the share of
+/// turns smoothed with either check.
+void printTimePartsTable(const std::vector<MapSet>& sets) {
+  std::printf(
+      "\n| family, maps | maps | repair off: unsmoothed, traversal time s, median | repair "
+      "off: no-contact check | unsmoothed | no-contact check | default | turns smoothed %%: "
+      "no-contact check | turns smoothed %%: default |\n|---|---:|---:|---:|---:|---:|---:|---:|"
+      "---:|\n");
+  const auto share = [](const std::vector<const Run*>& runs) {
+    int smoothed = 0;
+    int total = 0;
+    for (const Run* run : runs) {
+      smoothed += run->turns_smoothed;
+      total += run->turns_total;
+    }
+    return total > 0 ? 100.0 * smoothed / total : 100.0;
+  };
+  for (const MapSet& set : sets) {
+    std::vector<double> times[5];
+    std::vector<const Run*> no_contact;
+    std::vector<const Run*> defaults;
+    for (const MapRuns& map : set.maps) {
+      const Run* runs[5] = {&map.unrepaired_unsmoothed, &map.unrepaired_no_contact,
+                            &map.runs[kUnsmoothed], &map.no_contact, &map.runs[kDefault]};
+      for (int k = 0; k < 5; ++k) times[k].push_back(runs[k]->traversal_time_s);
+      no_contact.push_back(&map.no_contact);
+      defaults.push_back(&map.runs[kDefault]);
+    }
+    std::printf("| %s | %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f | %.1f |\n",
+                set.label.c_str(), set.maps.size(), median(times[0]), median(times[1]),
+                median(times[2]), median(times[3]), median(times[4]), share(no_contact),
+                share(defaults));
   }
 }
 
@@ -501,6 +579,7 @@ int run(const Options& options) {
   printLossTable(sets);
   sets.insert(sets.end(), lake_sets.begin(), lake_sets.end());
   printClearanceTable(sets);
+  printTimePartsTable(sets);
   return failed == 0 ? 0 : 1;
 }
 
