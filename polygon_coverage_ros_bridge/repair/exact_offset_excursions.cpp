@@ -15,6 +15,13 @@ constexpr double kApexMargin = 1e-6;
 /// (a bisector that runs along a wall nears it slowly).
 constexpr double kTraceTolerance = 1e-4;
 constexpr int kTraceSteps = 32;
+/// A walk's legs after its first excursion, the directions each tries (the target's and
+/// kWalkTurns each side of it, kWalkStep radians apart) and the halvings that find a leg's
+/// length. A leg is driven when it comes nearer the target by min_length.
+constexpr int kWalkLegs = 6;
+constexpr int kWalkTurns = 6;
+constexpr double kWalkStep = 0.25;
+constexpr int kLegHalvings = 20;
 
 void addWalls(const Ring& ring, std::vector<Point2>* from, std::vector<Point2>* to) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -100,6 +107,44 @@ bool ExactOffsetExcursions::keepsDistance(const Point2& a, const Point2& b) cons
   return std::all_of(ids.begin(), ids.end(), [&](int i) {
     return distanceBetweenSegments(a, b, from_[i], to_[i]) >= wall_distance_ - kApexMargin;
   });
+}
+
+Point2 ExactOffsetExcursions::farthestKeeping(const Point2& from, const Point2& direction) const {
+  if (keepsDistance(from, from + max_length_ * direction)) return from + max_length_ * direction;
+  // A shorter segment of a ray keeps the distance where a longer one does.
+  double kept = 0.0;
+  double broken = max_length_;
+  for (int halving = 0; halving < kLegHalvings; ++halving) {
+    const double middle = 0.5 * (kept + broken);
+    (keepsDistance(from, from + middle * direction) ? kept : broken) = middle;
+  }
+  return from + kept * direction;
+}
+
+std::vector<Point2> ExactOffsetExcursions::walk(const Point2& from, const Point2& target,
+                                                double reach) const {
+  std::vector<Point2> way;
+  if (const std::optional<Point2> first = toward(from, target - from)) way.push_back(*first);
+  for (int leg = 0; leg < kWalkLegs; ++leg) {
+    const Point2 at = way.empty() ? from : way.back();
+    const double remaining = (target - at).norm();
+    if (remaining <= reach || remaining <= kLengthTolerance) break;
+    const double heading = std::atan2(target.y() - at.y(), target.x() - at.x());
+    Point2 best = at;
+    double best_remaining = remaining - min_length_;
+    for (int turn = -kWalkTurns; turn <= kWalkTurns; ++turn) {
+      const double angle = heading + turn * kWalkStep;
+      const Point2 end = farthestKeeping(at, Point2(std::cos(angle), std::sin(angle)));
+      const double left = (target - end).norm();
+      if (left < best_remaining) {
+        best = end;
+        best_remaining = left;
+      }
+    }
+    if (best == at) break;
+    way.push_back(best);
+  }
+  return way;
 }
 
 }  // namespace kinematic_coverage::core

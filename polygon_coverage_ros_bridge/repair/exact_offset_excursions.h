@@ -44,7 +44,20 @@ class ExactOffsetExcursions {
   /// distance: a straight way to or from an excursion's far end that keeps it.
   bool keepsDistance(const Point2& a, const Point2& b) const;
 
+  /// The far ends of the legs of a way from `from` (a point at least the wall distance from
+  /// the walls) toward `target`, which keeps the wall distance: first the excursion
+  /// toward() it, then, while the way ends farther than `reach` from it, more legs, each the
+  /// longest that keeps the distance in its direction, of thirteen a quarter radian apart
+  /// centred on the target's, whose end comes nearest to it; the way follows a funnel that the
+  /// walls bend (toward a gap narrower than two wall distances), where one straight excursion stops
+  /// short or cannot start. Ends where no leg comes min_length nearer; empty when none does.
+  std::vector<Point2> walk(const Point2& from, const Point2& target, double reach) const;
+
  private:
+  /// The far end of the longest segment from `from` along the unit `direction`, at most
+  /// max_length long, that keeps the wall distance (`from` itself where none does).
+  Point2 farthestKeeping(const Point2& from, const Point2& direction) const;
+
   /// The distance from p to the nearest wall, or `reach` when none lies nearer.
   double wallDistance(const Point2& p, double reach) const;
 

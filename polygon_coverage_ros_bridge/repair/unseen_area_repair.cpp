@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <set>
@@ -52,8 +53,8 @@ constexpr double kLegSampleReach = 0.95;
 /// True when `patch` is an excursion out and back (ExactOffsetExcursions) whose far end `path`
 /// already reaches: driving it again sees nothing more.
 bool isDrivenExcursion(const std::vector<Point2>& patch, const std::vector<Point2>& path) {
-  return patch.size() == 3 && patch.front() == patch.back() &&
-         std::find(path.begin(), path.end(), patch[1]) != path.end();
+  return patch.size() % 2 == 1 && patch.size() >= 3 && patch.front() == patch.back() &&
+         std::find(path.begin(), path.end(), patch[patch.size() / 2]) != path.end();
 }
 
 double totalArea(const std::vector<UnseenRegion>& regions) {
@@ -250,8 +251,16 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::excursionPatches(
     std::vector<BoundarySample>* beyond) const {
   struct Excursion {
     Point2 corner;
-    Point2 apex;
+    std::vector<Point2> way;  ///< the far ends of its legs, the last its apex
     bool sees = false;
+
+    double distanceTo(const Point2& p) const {
+      double d = distanceToSegment(p, corner, way.front());
+      for (std::size_t i = 1; i < way.size(); ++i) {
+        d = std::min(d, distanceToSegment(p, way[i - 1], way[i]));
+      }
+      return d;
+    }
   };
   // The excursions from the corners of the edges beside the samples.
   std::vector<Excursion> candidates;
@@ -263,7 +272,7 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::excursionPatches(
       if (!tried.insert({sample.position.ring, v}).second) continue;
       if (const std::optional<Point2> apex =
               excursions_.apex(ring[(v + n - 1) % n], ring[v], ring[(v + 1) % n])) {
-        candidates.push_back({ring[v], *apex});
+        candidates.push_back({ring[v], {*apex}});
       }
     }
   }
@@ -272,7 +281,7 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::excursionPatches(
     Excursion* nearest = nullptr;
     double nearest_distance = sample.distance;
     for (Excursion& excursion : candidates) {
-      const double d = distanceToSegment(sample.point, excursion.corner, excursion.apex);
+      const double d = excursion.distanceTo(sample.point);
       if (d < nearest_distance) {
         nearest = &excursion;
         nearest_distance = d;
@@ -281,7 +290,8 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::excursionPatches(
     return std::make_pair(nearest, nearest_distance);
   };
   // And toward the samples farthest from the boundary that no excursion passes near (a
-  // slot's mouth, where the boundary runs straight past the exact offset's bulge).
+  // slot's mouth, where the boundary runs straight past the exact offset's bulge), on
+  // into a funnel that the walls bend.
   const double boundary_reach = kBoundaryReachShare * sensor_.width();
   for (int k = 0; k < kDeepExcursions; ++k) {
     const BoundarySample* deepest = nullptr;
@@ -295,9 +305,9 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::excursionPatches(
     }
     if (deepest == nullptr) break;
     const Point2 from = pointAt(deepest->position.ring, deepest->position.arc_length);
-    const std::optional<Point2> apex = excursions_.toward(from, deepest->point - from);
-    if (!apex) break;
-    candidates.push_back({from, *apex});
+    std::vector<Point2> way = excursions_.walk(from, deepest->point, boundary_reach);
+    if (way.empty()) break;
+    candidates.push_back({from, std::move(way)});
   }
   // The samples an excursion sees leave `beyond`.
   beyond->erase(std::remove_if(beyond->begin(), beyond->end(),
@@ -309,7 +319,13 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::excursionPatches(
                 beyond->end());
   std::vector<std::vector<Point2>> patches;
   for (const Excursion& excursion : candidates) {
-    if (excursion.sees) patches.push_back({excursion.corner, excursion.apex, excursion.corner});
+    if (!excursion.sees) continue;
+    // Out along its legs and back.
+    std::vector<Point2> patch = {excursion.corner};
+    patch.insert(patch.end(), excursion.way.begin(), excursion.way.end());
+    patch.insert(patch.end(), std::next(excursion.way.rbegin()), excursion.way.rend());
+    patch.push_back(excursion.corner);
+    patches.push_back(std::move(patch));
   }
   return patches;
 }

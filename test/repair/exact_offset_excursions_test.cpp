@@ -102,6 +102,59 @@ TEST(ExactOffsetExcursions, TowardASlotsMouthEndsWhereItsCornersAreTheWallDistan
   EXPECT_FALSE(excursions.toward({10, 9}, {0, 0}));
 }
 
+/// A 20 m x 10 m room with a slot 4 m wide up from its top (x 9 to 13) that bends right
+/// into an arm 4 m wide (y 14 to 18): with a wall distance of 1 m the exact offset runs up
+/// the slot and along the arm, round the slot's right wall.
+PolygonWithHoles roomWithBentSlot() {
+  return {{{0, 0},
+           {20, 0},
+           {20, 10},
+           {13, 10},
+           {13, 14},
+           {20, 14},
+           {20, 18},
+           {9, 18},
+           {9, 10},
+           {0, 10}},
+          {}};
+}
+
+// Toward a point of the arm, the straight excursion stops in the slot; the walk goes on
+// up the slot and along the arm to within its reach of the point, every leg keeping the
+// wall distance.
+TEST(ExactOffsetExcursions, AWalkFollowsABentFunnel) {
+  const PolygonWithHoles room = roomWithBentSlot();
+  const ExactOffsetExcursions excursions(room, 1.0, 0.05, 5.0);
+  const Point2 from(11, 9);
+  const Point2 target(17, 16);
+  const std::optional<Point2> straight = excursions.toward(from, target - from);
+  ASSERT_TRUE(straight);
+  EXPECT_GT((*straight - target).norm(), 5.0);
+  const std::vector<Point2> way = excursions.walk(from, target, 0.5);
+  ASSERT_GE(way.size(), 2u);
+  EXPECT_EQ(way.front(), *straight);
+  EXPECT_LE((way.back() - target).norm(), 0.5);
+  Point2 previous = from;
+  for (const Point2& end : way) {
+    EXPECT_TRUE(excursions.keepsDistance(previous, end));
+    EXPECT_GE(testing::sampledWallDistance(room, {previous, end}), 1.0 - 1e-3)
+        << previous.transpose() << " -> " << end.transpose();
+    previous = end;
+  }
+}
+
+// Toward a point in a slot narrower than two wall distances no leg comes nearer after the
+// excursion to the slot's mouth; with no way to start at all the walk is empty.
+TEST(ExactOffsetExcursions, AWalkEndsWhereNoLegComesNearer) {
+  const PolygonWithHoles room{
+      {{0, 0}, {20, 0}, {20, 10}, {10.8, 10}, {10.8, 15}, {9.2, 15}, {9.2, 10}, {0, 10}}, {}};
+  const ExactOffsetExcursions excursions(room, 1.0, 0.05, 5.0);
+  const std::vector<Point2> way = excursions.walk({10, 9}, {10, 14}, 0.5);
+  ASSERT_EQ(way.size(), 1u);
+  EXPECT_NEAR(way.front().y(), 9.4, 1e-3);
+  EXPECT_TRUE(ExactOffsetExcursions().walk({10, 9}, {10, 14}, 0.5).empty());
+}
+
 // Random segments in the room with the slot (fixed seed): keepsDistance agrees with the
 // distance to the walls sampled a centimetre apart wherever that is clear of the wall
 // distance by more than the sampling can miss (half a centimetre); a segment into the slot

@@ -333,6 +333,39 @@ TEST(UnseenAreaRepair, SpursAreTakenThoughTheLegsTheySplitLoseARasterSliver) {
   EXPECT_GE(after.reachable_coverage_percent, 99.9);
 }
 
+// Shorelines 36 and 44: reachable area in the funnel of a gap narrower than two wall
+// distances (0.69 m between an obstacle and a shore spike at wall_distance 0.40; a gap of
+// 1.54 m clearance to a part left out), which the exact offset reaches and the mitred one,
+// stopped by the spikes, does not. One straight excursion toward it stops short (36: it
+// cannot start); a walk along the funnel sees it, every leg out of the route area keeping
+// the wall distance.
+TEST(UnseenAreaRepair, AFunnelTowardANarrowGapIsSeenFromAWalkAlongIt) {
+  for (const std::uint64_t seed : {36, 44}) {
+    const testing::HardMap map =
+        testing::HardMapGenerator(testing::MapFamily::kShoreline).generate(seed);
+    Mission mission = map.mission;
+    mission.parameters.smoothing = false;
+    const PlannedBothWays plans = planBothWays(mission);
+    const PlannedMission& repaired = plans.with;
+    const double wall_distance = mission.parameters.wall_distance;
+    const CoverageEvaluator evaluator(
+        repaired.free_area,
+        exactOffsetParts(repaired.free_area, wall_distance, repaired.plan.offset_parts),
+        plans.sensor, reportingResolution(), kReportingGridAngle);
+    const CoverageReport after =
+        evaluator.report(evaluator.seeWaypointPath(legHeadingPoses(plans.after)));
+    EXPECT_GE(after.reachable_coverage_percent, 99.9) << "seed " << seed;
+    const std::vector<Point2>& path = plans.after;
+    for (std::size_t i = repaired.plan.first_inside; i < repaired.plan.last_inside; ++i) {
+      EXPECT_TRUE(
+          segmentInside(repaired.plan.route_area, path[i], path[i + 1], 1e-6) ||
+          keepsClearance(testing::sampledWallDistance(repaired.free_area, {path[i], path[i + 1]}),
+                         wall_distance))
+          << "seed " << seed << " leg " << i;
+    }
+  }
+}
+
 // The planner with coverage_repair on the first maps of every hard-map family
 // (test/support/hard_map_generator.h; of the shorelines the two that plan in about a
 // second): every plan stays valid, sees at least what the unrepaired plan sees and at
