@@ -55,6 +55,7 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -354,6 +355,20 @@ void printLossTable(const std::vector<MapSet>& sets) {
   }
 }
 
+/// The run of a map that a table's column shows.
+using RunOf = std::function<const Run&(const MapRuns&)>;
+
+/// The share (%) of the turns of `maps` that their runs `run_of` smoothed.
+double turnsSmoothedPercent(const std::vector<MapRuns>& maps, const RunOf& run_of) {
+  int smoothed = 0;
+  int total = 0;
+  for (const MapRuns& map : maps) {
+    smoothed += run_of(map).turns_smoothed;
+    total += run_of(map).turns_total;
+  }
+  return total > 0 ? 100.0 * smoothed / total : 100.0;
+}
+
 /// Table 5: per set, for the default and the unsmoothed trajectory, whether it keeps the
 /// wall distance, its turns smoothed and its traversal time.
 void printClearanceTable(const std::vector<MapSet>& sets) {
@@ -365,8 +380,6 @@ void printClearanceTable(const std::vector<MapSet>& sets) {
     for (const Strategy strategy : {kDefault, kUnsmoothed}) {
       double least = std::numeric_limits<double>::infinity();
       int nearer = 0;
-      int smoothed = 0;
-      int total = 0;
       std::vector<double> times;
       std::vector<double> ratios;
       for (const MapRuns& map : set.maps) {
@@ -375,14 +388,15 @@ void printClearanceTable(const std::vector<MapSet>& sets) {
           least = std::min(least, run.min_clearance_m / map.wall_distance);
           nearer += keepsClearance(run.min_clearance_m, map.wall_distance) ? 0 : 1;
         }
-        smoothed += run.turns_smoothed;
-        total += run.turns_total;
         times.push_back(run.traversal_time_s);
         ratios.push_back(run.traversal_time_s / map.runs[kUnsmoothed].traversal_time_s);
       }
-      std::printf("| %s | %s | %zu | %.3f | %d | %.1f | %.2f | %.3f |\n", set.label.c_str(),
-                  strategyName(strategy).c_str(), set.maps.size(), least, nearer,
-                  total > 0 ? 100.0 * smoothed / total : 100.0, median(times), median(ratios));
+      std::printf(
+          "| %s | %s | %zu | %.3f | %d | %.1f | %.2f | %.3f |\n", set.label.c_str(),
+          strategyName(strategy).c_str(), set.maps.size(), least, nearer,
+          turnsSmoothedPercent(
+              set.maps, [&](const MapRuns& map) -> const Run& { return map.runs[strategy]; }),
+          median(times), median(ratios));
     }
   }
 }
@@ -397,30 +411,22 @@ void printTimePartsTable(const std::vector<MapSet>& sets) {
       "off: no-contact check | unsmoothed | no-contact check | default | turns smoothed %%: "
       "no-contact check | turns smoothed %%: default |\n|---|---:|---:|---:|---:|---:|---:|---:|"
       "---:|\n");
-  const auto share = [](const std::vector<const Run*>& runs) {
-    int smoothed = 0;
-    int total = 0;
-    for (const Run* run : runs) {
-      smoothed += run->turns_smoothed;
-      total += run->turns_total;
-    }
-    return total > 0 ? 100.0 * smoothed / total : 100.0;
-  };
+  const RunOf no_contact = [](const MapRuns& map) -> const Run& { return map.no_contact; };
+  const RunOf by_default = [](const MapRuns& map) -> const Run& { return map.runs[kDefault]; };
+  const std::vector<RunOf> columns = {
+      [](const MapRuns& map) -> const Run& { return map.unrepaired_unsmoothed; },
+      [](const MapRuns& map) -> const Run& { return map.unrepaired_no_contact; },
+      [](const MapRuns& map) -> const Run& { return map.runs[kUnsmoothed]; }, no_contact,
+      by_default};
   for (const MapSet& set : sets) {
-    std::vector<double> times[5];
-    std::vector<const Run*> no_contact;
-    std::vector<const Run*> defaults;
-    for (const MapRuns& map : set.maps) {
-      const Run* runs[5] = {&map.unrepaired_unsmoothed, &map.unrepaired_no_contact,
-                            &map.runs[kUnsmoothed], &map.no_contact, &map.runs[kDefault]};
-      for (int k = 0; k < 5; ++k) times[k].push_back(runs[k]->traversal_time_s);
-      no_contact.push_back(&map.no_contact);
-      defaults.push_back(&map.runs[kDefault]);
+    std::printf("| %s | %zu |", set.label.c_str(), set.maps.size());
+    for (const RunOf& run_of : columns) {
+      std::vector<double> times;
+      for (const MapRuns& map : set.maps) times.push_back(run_of(map).traversal_time_s);
+      std::printf(" %.2f |", median(times));
     }
-    std::printf("| %s | %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f | %.1f |\n",
-                set.label.c_str(), set.maps.size(), median(times[0]), median(times[1]),
-                median(times[2]), median(times[3]), median(times[4]), share(no_contact),
-                share(defaults));
+    std::printf(" %.1f | %.1f |\n", turnsSmoothedPercent(set.maps, no_contact),
+                turnsSmoothedPercent(set.maps, by_default));
   }
 }
 
