@@ -37,11 +37,15 @@ it equal to the document's: whole numbers (counts) exactly, decimals within one 
 document's last printed digit (they are printed rounded; the unit absorbs a last-digit
 rounding flip, nothing more).
 
-    scripts/doc_figures.py check [--ci] [--build-dir DIR] [--only FILE] [--skip PROGRAM] [--jobs N]
-    scripts/doc_figures.py regenerate [--build-dir DIR] [--only FILE] [--skip PROGRAM] [--jobs N]
+    scripts/doc_figures.py check [--ci] [--build-dir DIR] [--only FILE] [--skip PROGRAM]
+                                 [--program PROGRAM] [--jobs N]
+    scripts/doc_figures.py regenerate [--build-dir DIR] [--only FILE] [--skip PROGRAM]
+                                      [--program PROGRAM] [--jobs N]
 
 --only limits the run to one document, --skip leaves out the tables of one program (e.g.
-`--skip scripts/run_fuzzers.sh`, hours of fuzzing); both may be repeated. --jobs N runs up to
+`--skip scripts/run_fuzzers.sh`, hours of fuzzing), --program keeps only the tables of one
+program (a change that moves one program's figures regenerates just those); each may be
+repeated. --jobs N runs up to
 N distinct commands at once (default 1; the tables' timings then share the machine, and
 say so only if the prose around them does).
 
@@ -321,6 +325,18 @@ def bound_problems(marker, key, column, bound, cells):
             if float(number) > bound]
 
 
+def programs_of(documents):
+    """Every program whose tables or prose the documents hold."""
+    programs = set()
+    for document in documents:
+        lines = read_lines(document)
+        generated = document_marker(document, lines)
+        if generated:
+            programs.add(shlex.split(generated[0])[0])
+        programs.update(shlex.split(marker.command)[0] for marker in find_markers(document, lines))
+    return programs
+
+
 def skipped_program(command, skip):
     return shlex.split(command)[0] in skip
 
@@ -408,11 +424,15 @@ def main():
     parser.add_argument('--only', action='append', help='one document (repeatable)')
     parser.add_argument('--skip', action='append', default=[],
                         help="leave out one program's tables (repeatable)")
+    parser.add_argument('--program', action='append', default=[],
+                        help="only this program's tables (repeatable)")
     parser.add_argument('--jobs', type=int, default=1, help='commands run at once')
     arguments = parser.parse_args()
     documents = arguments.only or DOCUMENTS
     build_dir = os.path.abspath(arguments.build_dir)
     try:
+        if arguments.program:
+            arguments.skip += sorted(programs_of(documents) - set(arguments.program))
         if arguments.action == 'check':
             return check(documents, build_dir, arguments.ci, arguments.skip, arguments.jobs)
         return regenerate(documents, build_dir, arguments.skip, arguments.jobs)

@@ -25,6 +25,10 @@ struct PlanningOptions {
   /// m: the least clearance of a gap that transits pass (the wall distance resolved).
   double gap_clearance = 1.0;
   bool coverage_repair = true;
+  /// s: the generalized TSP's safety cap (GtspOptions::time_limit_s); not a parameter, so
+  /// that a plan does not depend on the machine's speed unless the cap is hit, which the
+  /// plan reports (CoveragePlan::gtsp_time_capped).
+  double gtsp_time_limit_s = 60.0;
 
   FrustumSensor frustumSensor() const { return FrustumSensor::fromOptions(sensor); }
   SegmentCost segmentCost() const { return SegmentCost(cost_function, vehicle); }

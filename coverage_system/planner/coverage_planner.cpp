@@ -600,10 +600,23 @@ GtspSolution solveStage(const PlanningRun& run, const GtspInstance& instance) {
   options.stall_generations =
       std::clamp(kGtspStallBase + static_cast<int>(instance.clusters.size()) / 3,
                  kGtspMinStallGenerations, kGtspMaxStallGenerations);
+  options.time_limit_s = run.options.gtsp_time_limit_s;
   const GtspSolution solution = solveGtsp(instance, options);
   std::ostringstream summary;
   summary << "visiting order of " << instance.clusters.size() - 2 << " cells, cost "
           << solution.cost;
+  if (solution.time_capped) {
+    std::ostringstream warning;
+    warning << "the generalized TSP over " << instance.clusters.size() - 2
+            << " cells stopped at its safety cap of " << options.time_limit_s
+            << " s before its own stopping rule: the visiting order is the best found by then "
+               "and may cost more than a full search's (a machine this busy or this slow "
+               "plans a map this large poorly; the cells are fewer with a larger "
+               "wall_distance or boundary_simplification)";
+    run.plan.gtsp_time_capped = true;
+    run.plan.warnings.push_back(warning.str());
+    summary << ", stopped at the safety cap";
+  }
   run.stage("solve", t, summary.str());
   return solution;
 }
@@ -649,6 +662,11 @@ void chosetAlternativeStage(const PlanningRun& run, const std::vector<PolygonWit
   choset.solution =
       solveStage(quiet, transitionStage(quiet, choset.sweeps, offset, graph, segment_cost));
   const bool cheaper = choset.solution.cost < tour->solution.cost;
+  // Either search cut short may have missed a tour cheaper than the one kept.
+  if (scratch.gtsp_time_capped && !run.plan.gtsp_time_capped) {
+    run.plan.gtsp_time_capped = true;
+    run.plan.warnings.push_back(scratch.warnings.back());
+  }
   summary << "Choset's " << scratch.cells.size() << " cells: tour cost " << choset.solution.cost
           << " against " << tour->solution.cost << " with the " << joined_cells
           << " joined cells; kept " << (cheaper ? "Choset's" : "the joined");

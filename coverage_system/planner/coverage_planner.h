@@ -57,6 +57,9 @@ struct CoveragePlan {
   /// Time cost of the waypoint path: rest-to-rest trapezoidal profile per segment.
   double time_cost_s = 0.0;
   double planning_time_s = 0.0;
+  /// True when the generalized TSP's safety cap ended its search (the tour is the best
+  /// found by then); a warning says so.
+  bool gtsp_time_capped = false;
   /// One line per warning (gaps between parts of the offset area, dropped parts, ...).
   std::vector<std::string> warnings;
   /// The stages in order, with their durations.

@@ -67,7 +67,8 @@ JsonObject planMetrics(const PlanOutputRequest& request, const GeneratedTrajecto
       .set("turns_reverse_curve", static_cast<double>(turns.reverse_curve))
       .set("turns_bulb", static_cast<double>(turns.bulb))
       .set("turns_clothoid", static_cast<double>(turns.clothoid))
-      .set("turns_sharp", static_cast<double>(turns.turns_total - turns.turns_smoothed));
+      .set("turns_sharp", static_cast<double>(turns.turns_total - turns.turns_smoothed))
+      .setJson("gtsp_time_capped", plan.gtsp_time_capped ? "true" : "false");
   setCoverageMetrics(coverage.report, metrics);
   if (combined) metrics.set("combined_coverage_percent", combined->report.coverage_percent);
   // Replanning: what the visited poses and the new trajectory fail to see together.

@@ -67,7 +67,7 @@ int runGtspCommand(const std::vector<std::string>& args, std::ostream& out, std:
     const double seconds = secondsSince(start);
     std::ostringstream line;
     line << "{\"cost\": " << std::llround(solution.cost) << ", \"time_s\": " << seconds
-         << ", \"tour\": [";
+         << ", \"time_capped\": " << (solution.time_capped ? "true" : "false") << ", \"tour\": [";
     for (std::size_t i = 0; i < solution.nodes.size(); ++i) {
       line << (i > 0 ? ", " : "") << solution.nodes[i] + 1;
     }

@@ -46,6 +46,10 @@ struct GtspInstance {
 struct GtspSolution {
   std::vector<int> nodes;
   double cost = 0.0;
+  /// True when the safety cap (GtspOptions::time_limit_s) ended the search before its own
+  /// stopping rule: the tour is the best found by then, and may be far from what the rule
+  /// would have reached.
+  bool time_capped = false;
 };
 
 /// Solver settings. A run is deterministic for a seed: the heuristic stops after a number

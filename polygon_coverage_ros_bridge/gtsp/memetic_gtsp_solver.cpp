@@ -301,7 +301,9 @@ GtspSolution MemeticGtspSolver::solve() {
       break;
     }
   }
-  return toSolution(population.front());
+  GtspSolution solution = toSolution(population.front());
+  solution.time_capped = Clock::now() >= deadline_;
+  return solution;
 }
 
 }  // namespace kinematic_coverage::core

@@ -32,6 +32,7 @@ TEST(GtspCommand, SolvesAGtsplibFileAndPrintsOneJsonLine) {
   EXPECT_TRUE(err.empty());
   EXPECT_EQ(lineCount(out), 1u);
   EXPECT_EQ(out.rfind("{\"cost\": 174, \"time_s\": ", 0), 0u) << out;
+  EXPECT_NE(out.find("\"time_capped\": false, "), std::string::npos) << out;
   const std::size_t tour = out.find("\"tour\": [");
   ASSERT_NE(tour, std::string::npos);
   const std::string ids = out.substr(tour + 9, out.find(']') - tour - 9);

@@ -134,6 +134,23 @@ TEST(MemeticGtspSolver, AnyTimeLimitGivesAValidTour) {
   }
 }
 
+TEST(MemeticGtspSolver, SaysWhenTheTimeCapEndedTheSearch) {
+  std::mt19937 rng(41);
+  const GtspInstance instance = randomGtspInstance(rng, 30, 4, true);
+  const GtspSolution full = solveGtsp(instance, heuristicOnly(1));
+  EXPECT_FALSE(full.time_capped);
+  GtspOptions capped_options = heuristicOnly(1);
+  capped_options.time_limit_s = 1e-9;
+  const GtspSolution capped = solveGtsp(instance, capped_options);
+  expectValidSolution(instance, capped);
+  EXPECT_TRUE(capped.time_capped);
+  // The exact solver has no cap.
+  GtspOptions exact;
+  exact.time_limit_s = 1e-9;
+  const GtspInstance small = randomGtspInstance(rng, 6, 3, true);
+  EXPECT_FALSE(solveGtsp(small, exact).time_capped);
+}
+
 TEST(MemeticGtspSolver, InvalidWarmStartIsRejected) {
   std::mt19937 rng(31);
   const GtspInstance instance = randomGtspInstance(rng, 20, 3, true);

@@ -445,6 +445,29 @@ TEST(CoveragePlanner, JoinedCellsNeverCostMoreOnASmallMap) {
 /// beside them; joined across critical points the open water stays in few long cells. The
 /// joined plan has under half the cells, costs under 60 % of Choset's (0.53 when measured),
 /// stays in the offset free area and sees all of the reachable area but 0.1 %.
+TEST(CoveragePlanner, AGeneralizedTspStoppedAtItsSafetyCapIsReported) {
+  const testing::HardMap map =
+      testing::HardMapGenerator(testing::MapFamily::kShoreline).generate(46);
+  PlannerParameters parameters = map.mission.parameters;
+  parameters.smoothing = false;
+  PlanningOptions options = planningOptionsOf(parameters);
+  const CoveragePlan full =
+      CoveragePlanner(options).plan(map.mission.polygon, map.mission.start, map.mission.goal);
+  EXPECT_FALSE(full.gtsp_time_capped);
+  ASSERT_GT(full.cells.size(), 14u);  // solved by the heuristic, which has the cap
+  options.gtsp_time_limit_s = 1e-9;
+  const CoveragePlan capped =
+      CoveragePlanner(options).plan(map.mission.polygon, map.mission.start, map.mission.goal);
+  expectValidPlan(map.mission.polygon, capped, parameters, map.mission.start, map.mission.goal);
+  EXPECT_TRUE(capped.gtsp_time_capped);
+  EXPECT_NE(stageSummary(capped, "solve").find("stopped at the safety cap"), std::string::npos);
+  std::size_t cap_warnings = 0;
+  for (const std::string& warning : capped.warnings) {
+    if (warning.find("safety cap") != std::string::npos) ++cap_warnings;
+  }
+  EXPECT_EQ(cap_warnings, 1u);
+}
+
 TEST(CoveragePlanner, JoinedCellsCoverANoisyShorelineInFewerCellsAndLessTime) {
   const testing::HardMap map =
       testing::HardMapGenerator(testing::MapFamily::kShoreline).generate(46);

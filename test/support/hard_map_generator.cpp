@@ -497,6 +497,31 @@ void star(std::uint64_t seed, HardMap& map) {
   map.mission.goal = random.mission.goal;
 }
 
+/// A chart's map before its polygon: the shoreline family, default parameters and the
+/// footprint they give.
+HardMap defaultParameterMap(std::uint64_t seed) {
+  HardMap map;
+  map.family = MapFamily::kShoreline;
+  map.seed = seed;
+  const PlannerParameters& p = map.mission.parameters;
+  map.footprint_width_m = 2.0 * p.sensor_distance * std::tan(0.5 * p.lateral_fov);
+  map.footprint_length_m = 2.0 * p.sensor_distance * std::tan(0.5 * p.onward_fov);
+  return map;
+}
+
+/// Sets a chart's polygon (`shore` counter-clockwise, `islands` counter-clockwise, turned
+/// into holes) and draws its start and goal in the free area.
+void setPolygon(std::mt19937& rng, Ring shore, std::vector<Ring> islands, HardMap& map) {
+  PolygonWithHoles& polygon = map.mission.polygon;
+  polygon.hull = std::move(shore);
+  for (Ring& island : islands) {
+    std::reverse(island.begin(), island.end());
+    polygon.holes.push_back(std::move(island));
+  }
+  map.mission.start = freePoint(rng, polygon);
+  map.mission.goal = freePoint(rng, polygon);
+}
+
 }  // namespace
 
 HardMap HardMapGenerator::lakeChart(std::uint64_t seed, int shore_vertices, int islands) {
@@ -504,12 +529,7 @@ HardMap HardMapGenerator::lakeChart(std::uint64_t seed, int shore_vertices, int 
                          static_cast<std::uint32_t>(shore_vertices),
                          static_cast<std::uint32_t>(islands)};
   std::mt19937 rng(sequence);
-  HardMap map;
-  map.family = MapFamily::kShoreline;
-  map.seed = seed;
-  const PlannerParameters& p = map.mission.parameters;
-  map.footprint_width_m = 2.0 * p.sensor_distance * std::tan(0.5 * p.lateral_fov);
-  map.footprint_length_m = 2.0 * p.sensor_distance * std::tan(0.5 * p.onward_fov);
+  HardMap map = defaultParameterMap(seed);
   const double size = kLakeChartSize;
   const Ring star = chartRing(rng, {0, 0}, 0.5 * size, shore_vertices, 0.2);
   const Ring shore = warpedShore(rng, star, size, {0.04, 0.1}, {0.15, 0.3});
@@ -527,14 +547,90 @@ HardMap HardMapGenerator::lakeChart(std::uint64_t seed, int shore_vertices, int 
     placed.push_back(island);
     ++i;
   }
-  PolygonWithHoles& polygon = map.mission.polygon;
-  polygon.hull = shore;
-  for (Ring island : placed) {
-    std::reverse(island.begin(), island.end());
-    polygon.holes.push_back(std::move(island));
+  setPolygon(rng, shore, std::move(placed), map);
+  return map;
+}
+
+HardMap HardMapGenerator::roughShore(std::uint64_t seed, int shore_vertices, int islands) {
+  std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                         static_cast<std::uint32_t>(shore_vertices),
+                         static_cast<std::uint32_t>(islands), 0x726f7567u};
+  std::mt19937 rng(sequence);
+  HardMap map = defaultParameterMap(seed);
+  Ring shore;
+  for (int i = 0; i < shore_vertices; ++i) {
+    const double angle = 2.0 * M_PI * i / shore_vertices;
+    const double radius = kRoughShoreRadius + uniform(rng, -kRoughShoreNoise, kRoughShoreNoise);
+    shore.push_back(radius * Point2(std::cos(angle), std::sin(angle)));
   }
-  map.mission.start = freePoint(rng, polygon);
-  map.mission.goal = freePoint(rng, polygon);
+  std::vector<Ring> placed;
+  for (int i = 0, attempts = 0; i < islands && attempts < 100 * islands; ++attempts) {
+    const Point2 centre = pointWhere(rng, shore, [&](const Point2& p) {
+      return p.norm() < kRoughShoreRadius - kRoughShoreNoise - 10.0;
+    });
+    const Ring island =
+        noisyRing(rng, centre, uniform(rng, 1.0, 4.0),
+                  integer(rng, kLakeChartIslandVertices.first, kLakeChartIslandVertices.second));
+    if (gapOf(island, shore, placed) <= 1.0) continue;
+    placed.push_back(island);
+    ++i;
+  }
+  setPolygon(rng, shore, std::move(placed), map);
+  return map;
+}
+
+HardMap HardMapGenerator::archipelago(std::uint64_t seed, int islands) {
+  std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                         static_cast<std::uint32_t>(islands), 0x617263u};
+  std::mt19937 rng(sequence);
+  HardMap map = defaultParameterMap(seed);
+  const double size = kArchipelagoSize;
+  const Ring shore = rectangle({0.0, 0.0}, {size, size});
+  // Centres drawn on a grid of buckets one spacing wide, so that each draw checks only its
+  // neighbours' centres.
+  const double spacing = kArchipelagoSpacing;
+  const int buckets = static_cast<int>(std::ceil(size / spacing));
+  std::vector<std::vector<Point2>> bucket(static_cast<std::size_t>(buckets * buckets));
+  auto bucketOf = [&](double v) {
+    return std::clamp(static_cast<int>(v / spacing), 0, buckets - 1);
+  };
+  auto farFromOthers = [&](const Point2& c) {
+    for (int bx = bucketOf(c.x()) - 1; bx <= bucketOf(c.x()) + 1; ++bx) {
+      for (int by = bucketOf(c.y()) - 1; by <= bucketOf(c.y()) + 1; ++by) {
+        if (bx < 0 || by < 0 || bx >= buckets || by >= buckets) continue;
+        for (const Point2& other : bucket[static_cast<std::size_t>(bx * buckets + by)]) {
+          if ((other - c).norm() < spacing) return false;
+        }
+      }
+    }
+    return true;
+  };
+  std::vector<Ring> placed;
+  for (int i = 0, attempts = 0; i < islands && attempts < 100 * islands; ++attempts) {
+    const Point2 centre(uniform(rng, spacing, size - spacing),
+                        uniform(rng, spacing, size - spacing));
+    if (!farFromOthers(centre)) continue;
+    bucket[static_cast<std::size_t>(bucketOf(centre.x()) * buckets + bucketOf(centre.y()))]
+        .push_back(centre);
+    const int vertices =
+        integer(rng, kArchipelagoIslandVertices.first, kArchipelagoIslandVertices.second);
+    const double radius =
+        uniform(rng, kArchipelagoIslandRadius.first, kArchipelagoIslandRadius.second);
+    // Star-shaped about the centre: vertices at increasing angles, each at 0.5 to 1 times the
+    // radius (the largest at exactly the radius).
+    std::vector<double> angles;
+    for (int k = 0; k < vertices; ++k) angles.push_back((k + uniform(rng, -0.3, 0.3)) / vertices);
+    Ring island;
+    for (int k = 0; k < vertices; ++k) {
+      const double r = k == 0 ? radius : radius * uniform(rng, 0.5, 1.0);
+      island.push_back(centre +
+                       r * Point2(std::cos(2.0 * M_PI * angles[static_cast<std::size_t>(k)]),
+                                  std::sin(2.0 * M_PI * angles[static_cast<std::size_t>(k)])));
+    }
+    placed.push_back(std::move(island));
+    ++i;
+  }
+  setPolygon(rng, shore, std::move(placed), map);
   return map;
 }
 

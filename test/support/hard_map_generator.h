@@ -77,6 +77,34 @@ class HardMapGenerator {
   /// Not bounded by kMaxVertices: the test bed of planning at chart scale.
   static HardMap lakeChart(std::uint64_t seed, int shore_vertices, int islands);
 
+  /// Radius (m) of a rough shore's ring.
+  static constexpr double kRoughShoreRadius = 130.0;
+  /// Most that a rough shore's radius lies off kRoughShoreRadius at a vertex (m): white
+  /// noise, so that the radius jumps by up to twice this from vertex to vertex.
+  static constexpr double kRoughShoreNoise = 4.0;
+
+  /// A shore rougher than lakeChart's, as a coarse survey of a rocky shore draws it: a ring of
+  /// `shore_vertices` vertices kRoughShoreRadius about the origin whose radius is off by up
+  /// to kRoughShoreNoise at every vertex, independently (noise that does not fall off with
+  /// scale: 2 000 vertices lie 0.4 m apart, 10 000 vertices 0.08 m), with up to `islands`
+  /// islands as lakeChart's. Default parameters; not bounded by kMaxVertices.
+  static HardMap roughShore(std::uint64_t seed, int shore_vertices, int islands);
+
+  /// Side (m) of an archipelago's square lake.
+  static constexpr double kArchipelagoSize = 1000.0;
+  /// Fewest and most vertices of an archipelago's island.
+  static constexpr std::pair<int, int> kArchipelagoIslandVertices{5, 12};
+  /// Smallest and largest radius (m) of an archipelago's island.
+  static constexpr std::pair<double, double> kArchipelagoIslandRadius{1.5, 5.0};
+  /// Least distance (m) between two islands' centres, and from a centre to the shore.
+  static constexpr double kArchipelagoSpacing = 15.0;
+
+  /// A square lake kArchipelagoSize across with up to `islands` star-shaped islands of
+  /// kArchipelagoIslandVertices vertices whose radii lie in kArchipelagoIslandRadius, their
+  /// centres at least kArchipelagoSpacing apart and from the shore (a lake too crowded for
+  /// them all gets fewer). Default parameters: every island opens boustrophedon cells.
+  static HardMap archipelago(std::uint64_t seed, int islands);
+
   /// Every family, in declaration order.
   static std::vector<MapFamily> families();
   /// The family's name: "comb", "spiral", "rooms", "shoreline", "touching_holes", "star".

@@ -192,6 +192,68 @@ TEST(HardMapGenerator, LakeChartsAreValidDeterministicAndOfTheirSize) {
   }
 }
 
+TEST(HardMapGenerator, RoughShoresAreValidDeterministicAndRoughAtEveryVertex) {
+  const HardMap map = HardMapGenerator::roughShore(3, 2000, 40);
+  const PolygonWithHoles& polygon = map.mission.polygon;
+  EXPECT_NO_THROW(PolygonValidator().validate(polygon));
+  ASSERT_EQ(polygon.hull.size(), 2000u);
+  EXPECT_EQ(polygon.holes.size(), 40u);
+  // White noise: the radius stays within its band, and neighbours often differ by more than
+  // the band's half-width (a smooth shore's radius barely changes between vertices 0.4 m
+  // apart).
+  const double r = HardMapGenerator::kRoughShoreRadius;
+  const double noise = HardMapGenerator::kRoughShoreNoise;
+  std::size_t big_jumps = 0;
+  for (std::size_t i = 0; i < polygon.hull.size(); ++i) {
+    const double radius = polygon.hull[i].norm();
+    EXPECT_LE(std::abs(radius - r), noise + 1e-9);
+    const double next = polygon.hull[(i + 1) % polygon.hull.size()].norm();
+    if (std::abs(next - radius) > noise) ++big_jumps;
+  }
+  EXPECT_GT(big_jumps, polygon.hull.size() / 5);
+  for (const Ring& island : polygon.holes) EXPECT_GT(ringDistance(island, polygon.hull), 1.0);
+  EXPECT_NO_THROW(PolygonValidator().validateEndpoint("start", map.mission.start, polygon));
+  EXPECT_NO_THROW(PolygonValidator().validateEndpoint("goal", map.mission.goal, polygon));
+  EXPECT_EQ(hardMapYaml(map), hardMapYaml(HardMapGenerator::roughShore(3, 2000, 40)));
+}
+
+TEST(HardMapGenerator, ArchipelagosAreValidDeterministicAndSpaced) {
+  const HardMap map = HardMapGenerator::archipelago(3, 300);
+  const PolygonWithHoles& polygon = map.mission.polygon;
+  EXPECT_NO_THROW(PolygonValidator().validate(polygon));
+  EXPECT_EQ(polygon.hull.size(), 4u);
+  ASSERT_EQ(polygon.holes.size(), 300u);
+  std::vector<Point2> centres;
+  for (const Ring& island : polygon.holes) {
+    EXPECT_GE(island.size(),
+              static_cast<std::size_t>(HardMapGenerator::kArchipelagoIslandVertices.first));
+    EXPECT_LE(island.size(),
+              static_cast<std::size_t>(HardMapGenerator::kArchipelagoIslandVertices.second));
+    Point2 centre = Point2::Zero();
+    for (const Point2& p : island) centre += p / static_cast<double>(island.size());
+    for (const Point2& p : island) {
+      EXPECT_LE((p - centre).norm(), 2.0 * HardMapGenerator::kArchipelagoIslandRadius.second);
+    }
+    EXPECT_GT(
+        ringDistance(island, polygon.hull),
+        HardMapGenerator::kArchipelagoSpacing - HardMapGenerator::kArchipelagoIslandRadius.second);
+    centres.push_back(centre);
+  }
+  // Islands at most two radii across, their centres a spacing apart: no two come nearer
+  // than the spacing less two largest radii.
+  const double least_gap = HardMapGenerator::kArchipelagoSpacing -
+                           2.0 * HardMapGenerator::kArchipelagoIslandRadius.second;
+  for (std::size_t i = 0; i < polygon.holes.size(); ++i) {
+    for (std::size_t j = i + 1; j < polygon.holes.size(); ++j) {
+      if ((centres[i] - centres[j]).norm() > 4.0 * HardMapGenerator::kArchipelagoSpacing) continue;
+      EXPECT_GE(ringDistance(polygon.holes[i], polygon.holes[j]), least_gap);
+    }
+  }
+  EXPECT_NO_THROW(PolygonValidator().validateEndpoint("start", map.mission.start, polygon));
+  EXPECT_EQ(hardMapYaml(map), hardMapYaml(HardMapGenerator::archipelago(3, 300)));
+  EXPECT_EQ(HardMapGenerator::archipelago(5, 2000).mission.polygon.holes.size(), 2000u);
+}
+
 TEST(HardMapGenerator, FamiliesHaveNames) {
   for (MapFamily family : HardMapGenerator::families()) {
     EXPECT_EQ(HardMapGenerator::fromName(HardMapGenerator::name(family)), family);

@@ -223,6 +223,7 @@ TEST(CoverageTool, PlansTheLakeMissionAndWritesItsFiles) {
   EXPECT_EQ(metric(json, "turns_sharp"),
             metric(json, "turns_total") - metric(json, "turns_smoothed"))
       << json;
+  EXPECT_NE(json.find("\"gtsp_time_capped\": false"), std::string::npos) << json;
   // With 50 % overlap the lake's trajectory sees nearly all of it.
   EXPECT_GE(metric(json, "coverage_percent"), 99.9) << json;
   EXPECT_LE(metric(json, "coverage_percent"), 100.0) << json;
