@@ -193,8 +193,8 @@ int main(int argc, char** argv) {
       "| chart | shore vertices | islands | vertices | cells | outcome | planning s (timing) | run "
       "s "
       "(timing) "
-      "| peak MB (at most 2048) | slowest stage (timing) "
-      "|\n|---|---|---|---|---|---|---|---|---|---|\n");
+      "| peak MB (at most 4096) | estimate MB | estimate / peak (varies) | slowest stage (timing) "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::string> details;
   std::vector<std::pair<double, double>> planning_times;  // (vertices, s) of planned charts
   std::vector<std::pair<double, double>> run_times;
@@ -202,6 +202,7 @@ int main(int argc, char** argv) {
   std::map<std::string, Measured>
       worst_by_chart;  // chart name (seed 0) -> its slowest seed's figures
   std::map<std::string, bool> run_charts;
+  std::vector<double> estimate_ratios;  // estimate / peak of the planned charts
   for (const Chart& size : sizes) {
     for (int seed = 0; seed < seeds; ++seed) {
       const HardMap map = size.generate(seed);
@@ -224,14 +225,25 @@ int main(int argc, char** argv) {
       const std::regex cell_line(R"((\d+) [a-z]+ cells)");
       const std::string cell_count =
           std::regex_search(run.output, cells, cell_line) ? std::string(cells[1]) : "-";
+      // The planner's memory estimate (the decompose stage's line, or a refusal's message).
+      std::smatch estimate;
+      const std::regex estimate_line(R"((?:memory estimate|would need about) (\d+) MB)");
+      const double estimate_mb = std::regex_search(run.output, estimate, estimate_line)
+                                     ? std::atof(std::string(estimate[1]).c_str())
+                                     : 0.0;
+      const double estimate_ratio = run.peak_mb > 0.0 ? estimate_mb / run.peak_mb : 0.0;
       const std::string outcome = !run.finished ? "timed out"
                                   : run.exit_status == 0
                                       ? "planned"
                                       : kinematic_coverage::bench::firstWords(run.output);
-      std::printf("| %s | %d | %zu | %zu | %s | %s | %.2f | %.2f | %.0f | %s %.2f s |\n",
-                  size.kind.c_str(), size.vertices, map.mission.polygon.holes.size(), vertices,
-                  cell_count.c_str(), outcome.c_str(), planning_s, run.wall_s, run.peak_mb,
-                  slowest.first.c_str(), slowest.second);
+      std::printf(
+          "| %s | %d | %zu | %zu | %s | %s | %.2f | %.2f | %.0f | %.0f | %.2f | %s %.2f s |\n",
+          size.kind.c_str(), size.vertices, map.mission.polygon.holes.size(), vertices,
+          cell_count.c_str(), outcome.c_str(), planning_s, run.wall_s, run.peak_mb, estimate_mb,
+          estimate_ratio, slowest.first.c_str(), slowest.second);
+      if (run.finished && run.exit_status == 0) {
+        estimate_ratios.push_back(estimate_ratio);
+      }
       std::fflush(stdout);
       run_charts[size.name(0)] = true;
       if (run.finished && run.exit_status == 0) {
@@ -261,6 +273,13 @@ int main(int argc, char** argv) {
       kinematic_coverage::bench::growthExponent(run_times),
       kinematic_coverage::bench::growthExponent(peaks));
   printGoals(worst_by_chart, run_charts);
+  if (!estimate_ratios.empty()) {
+    const auto [low, high] = std::minmax_element(estimate_ratios.begin(), estimate_ratios.end());
+    std::printf(
+        "goal: the memory estimate within 0.5 to 2 times the peak of every planned chart: "
+        "%.2f to %.2f: %s\n",
+        *low, *high, *low >= 0.5 && *high <= 2.0 ? "met" : "MISSED");
+  }
   if (!plot.empty()) {
     kinematic_coverage::bench::writeLogLogPlot(
         plot, "Lake charts: time against size (coverage_tool plan, default parameters)",

@@ -143,6 +143,12 @@ std::vector<ParameterDeclaration> planningDeclarations() {
              "boundary noise (lanes still end at the exact boundary, routes and metrics use "
              "the exact areas); a free area too large for the wall offset is simplified "
              "within it too, with a warning, instead of refused; 0: exact."),
+      number("max_memory_mb", &P::max_memory_mb, "MB", 0.0, nonNegative(), S::kDecomposition,
+             "The memory a plan may take: right after the decomposition, before anything of "
+             "the map's size is built, the plan's memory is estimated (the visibility graph, "
+             "the transition costs and the generalized TSP grow with the square of the "
+             "corners and the cells) and a map over this is refused, saying what reduces "
+             "it; 0: half the machine's physical memory."),
   };
 }
 

@@ -26,6 +26,7 @@ struct PlannerParameters {
   std::string offset_parts{};
   double gap_clearance{};
   double boundary_simplification{};
+  double max_memory_mb{};
   std::string sensor_model{};
   double lateral_fov{};
   double onward_fov{};

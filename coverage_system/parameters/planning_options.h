@@ -25,6 +25,9 @@ struct PlanningOptions {
   /// m: the least clearance of a gap that transits pass (the wall distance resolved).
   double gap_clearance = 1.0;
   bool coverage_repair = true;
+  /// MB a plan may take by its estimate (planMemoryEstimateBytes); 0: half the machine's
+  /// physical memory.
+  double max_memory_mb = 0.0;
   /// s: the generalized TSP's safety cap (GtspOptions::time_limit_s); not a parameter, so
   /// that a plan does not depend on the machine's speed unless the cap is hit, which the
   /// plan reports (CoveragePlan::gtsp_time_capped).

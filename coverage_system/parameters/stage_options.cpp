@@ -75,6 +75,7 @@ PlanningOptions planningOptionsOf(const PlannerParameters& parameters) {
   options.offset_parts = choiceOf(p.offset_parts, kOffsetParts);
   options.gap_clearance = gapClearance(p);
   options.coverage_repair = p.coverage_repair;
+  options.max_memory_mb = p.max_memory_mb;
   return options;
 }
 

@@ -457,17 +457,23 @@ std::vector<Decomposition> decomposeStage(const PlanningRun& run,
   summary << cell_count << " " << nameOf(type, kDecompositionTypes) << " cells"
           << (joining == CellJoining::kLongestOverlap ? " (joined across critical points)" : "")
           << ", best of " << directions_tried << " directions";
-  run.stage("decompose", t, summary.str());
 
   // Size limits, before anything of their size is built.
-  checkCellLimit(decompositions, type);
   if (const std::size_t dropped = fitDirectionsToGtspLimit(decompositions); dropped > 0) {
     run.plan.warnings.push_back(
         "kept only the best lane directions of the cells: " + std::to_string(dropped) +
         " of their other directions would have taken the generalized TSP over " +
         std::to_string(kMaxGtspNodes) + " nodes");
   }
+  const PlanSize size{cell_count, gtspNodeCount(decompositions), routeCorners(run.plan.route_area)};
+  const double max_memory_mb =
+      run.options.max_memory_mb > 0.0 ? run.options.max_memory_mb : machineMaxMemoryMb();
+  checkMemoryEstimate(size, max_memory_mb, type);
   checkLaneLimit(decompositions, run.options.sensor);
+  summary << "; memory estimate " << std::lround(planMemoryEstimateBytes(size) / (1024.0 * 1024.0))
+          << " MB (" << size.gtsp_nodes << " generalized TSP nodes, " << size.route_corners
+          << " route corners)";
+  run.stage("decompose", t, summary.str());
   return decompositions;
 }
 
@@ -540,7 +546,8 @@ SweepStage sweepStage(const PlanningRun& run, Clock::time_point since, const Dec
     sweeps.clusters.push_back(std::move(cluster));
   }
   std::ostringstream summary;
-  summary << sweeps.patterns.size() << " sweep patterns";
+  summary << sweeps.patterns.size() << " sweep patterns, a visibility graph of "
+          << graph.nodeCount() << " corners";
   run.stage("sweeps", since, summary.str());
   return sweeps;
 }

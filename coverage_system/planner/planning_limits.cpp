@@ -1,5 +1,7 @@
 #include "coverage_system/planner/planning_limits.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -7,6 +9,7 @@
 
 #include "polygon_coverage_ros_bridge/decomposition/sweep_direction.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_instance.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
 #include "polygon_coverage_ros_bridge/sweeps/sweep_pattern.h"
@@ -17,9 +20,6 @@ namespace {
 /// Generalized TSP nodes per kept lane direction of a cell, and for the start and goal.
 constexpr std::size_t kNodesPerDirection = SweepPatternGenerator::kPatternsPerDirection;
 constexpr std::size_t kTerminalNodes = 2;
-static_assert(kMaxCells * kNodesPerDirection + kTerminalNodes <=
-                  static_cast<std::size_t>(kMaxGtspNodes),
-              "every cell's best lane direction must fit in the generalized TSP");
 
 }  // namespace
 
@@ -33,17 +33,49 @@ std::size_t gtspNodeCount(const std::vector<Decomposition>& decompositions) {
   return nodes;
 }
 
-void checkCellLimit(const std::vector<Decomposition>& decompositions, DecompositionType type) {
-  std::size_t cells = 0;
-  for (const Decomposition& decomposition : decompositions) cells += decomposition.cells.size();
-  if (cells <= kMaxCells) return;
+std::size_t routeCorners(const PolygonWithHoles& route_area) {
+  std::size_t corners = 0;
+  auto count = [&corners](const Ring& ring, bool inside_left) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double turn = cross(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]);
+      if (inside_left ? turn < 0.0 : turn > 0.0) ++corners;
+    }
+  };
+  // The inside lies left of a counter-clockwise hull and right of a counter-clockwise hole.
+  count(route_area.hull, signedArea(route_area.hull) > 0.0);
+  for (const Ring& hole : route_area.holes) count(hole, signedArea(hole) < 0.0);
+  return corners;
+}
+
+double planMemoryEstimateBytes(const PlanSize& size) {
+  const double v = static_cast<double>(size.route_corners);
+  const double n = static_cast<double>(size.gtsp_nodes);
+  const double m = static_cast<double>(size.cells);
+  return kMemoryBaselineBytes + 8.5 * v * v + 8.0 * n * v + 24.0 * n * n + 24.0 * m * m;
+}
+
+double machineMaxMemoryMb() {
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long page_size = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return 4096.0;  // unknown: a small machine's half
+  return 0.5 * static_cast<double>(pages) * static_cast<double>(page_size) / (1024.0 * 1024.0);
+}
+
+void checkMemoryEstimate(const PlanSize& size, double max_memory_mb, DecompositionType type) {
+  const double estimate_mb = planMemoryEstimateBytes(size) / (1024.0 * 1024.0);
+  if (estimate_mb <= max_memory_mb) return;
   std::ostringstream message;
-  message << "the decomposition has " << cells << " cells, " << cells - kMaxCells
-          << " more than the limit of " << kMaxCells
-          << ": simplify the polygon (every hole, and every boundary vertex where the boundary "
-             "turns back across the sweep, adds cells: merge or drop small holes, smooth the "
-             "boundary), use a larger wall_distance (it closes narrow gaps and rounds off small "
-             "bumps), or plan the area in parts";
+  message << std::fixed << std::setprecision(0) << "the plan would need about " << estimate_mb
+          << " MB, more than max_memory_mb " << max_memory_mb << " MB (" << size.cells
+          << " cells with " << size.gtsp_nodes << " generalized TSP nodes, whose transition "
+          << "costs grow with their square, and a route area of " << size.route_corners
+          << " corners, whose visibility graph grows with theirs): simplify the polygon (every "
+             "hole, and every boundary vertex where the boundary turns back across the sweep, "
+             "adds cells: merge or drop small holes, smooth the boundary), use a larger "
+             "wall_distance (it closes narrow gaps and rounds off small bumps) or "
+             "boundary_simplification, plan the area in parts, or raise max_memory_mb where the "
+             "machine has the memory";
   if (type == DecompositionType::kTrapezoidal) {
     message << "; the boustrophedon decomposition makes fewer cells than the trapezoidal one";
   }

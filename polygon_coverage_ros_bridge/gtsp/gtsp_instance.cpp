@@ -20,13 +20,6 @@ namespace {
 void validateGtspInstance(const GtspInstance& instance) {
   const int n = instance.node_count;
   if (n <= 0) reject("node_count must be positive, got " + std::to_string(n));
-  if (n > kMaxGtspNodes) {
-    std::ostringstream message;
-    message << n << " nodes, " << n - kMaxGtspNodes << " more than the limit of " << kMaxGtspNodes
-            << " (the cost matrix would take " << 8.0 * n * n / (1 << 20)
-            << " MiB): fewer clusters or fewer nodes per cluster";
-    reject(message.str());
-  }
   if (instance.clusters.empty()) reject("no clusters");
   const std::size_t expected = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
   if (instance.costs.size() != expected) {

@@ -5,11 +5,11 @@
 
 namespace kinematic_coverage::core {
 
-/// Most nodes an instance may have. Memory grows with the square of the node count: the
-/// dense cost matrix takes 8 n^2 bytes, and the planner holds its transition matrix as well
-/// while it builds the instance, so 6 000 nodes take about 580 MB. validateGtspInstance
-/// refuses larger instances before looking at their costs; the planner checks its node
-/// count before it allocates anything of that size.
+/// Most nodes of a GTSPLIB file (GtsplibReader refuses a larger DIMENSION before it allocates
+/// the file's dense cost matrix of 8 n^2 bytes: 275 MiB at the limit), and the nodes up to
+/// which the planner keeps the cells' further lane directions (fitDirectionsToGtspLimit).
+/// The planner's own instances have no node limit: its memory estimate
+/// (planMemoryEstimateBytes) decides whether a plan can be made.
 constexpr int kMaxGtspNodes = 6000;
 
 /// A generalized travelling salesman instance: visit exactly one node of every cluster.
@@ -88,7 +88,7 @@ struct GtspOptions {
   std::vector<int> warm_start;
 };
 
-/// Checks the instance (at most kMaxGtspNodes nodes, partition, matrix size, finite
+/// Checks the instance (partition, matrix size, finite
 /// non-negative costs, start/goal, reverse nodes within their clusters) and throws
 /// InvalidInputError naming the first problem found.
 void validateGtspInstance(const GtspInstance& instance);

@@ -13,8 +13,9 @@
 namespace kinematic_coverage::core {
 namespace {
 
-/// Largest DIMENSION accepted: the explicit cost matrix must fit in memory.
-constexpr long long kMaxDimension = 20000;
+/// Largest DIMENSION accepted: a file's explicit cost matrix is read whole before anything is
+/// solved, so its size is refused before it is allocated.
+constexpr long long kMaxDimension = kMaxGtspNodes;
 
 struct NumberToken {
   double value;
@@ -82,7 +83,10 @@ class Parser {
     } else if (key == "DIMENSION") {
       dimension_ = positiveInteger(value, line_number, "DIMENSION");
       if (dimension_ > kMaxDimension) {
-        fail(line_number, "DIMENSION " + value + " exceeds " + std::to_string(kMaxDimension));
+        fail(line_number, "DIMENSION " + value + " exceeds the limit of " +
+                              std::to_string(kMaxDimension) +
+                              " nodes (the cost matrix would take " +
+                              std::to_string(8 * dimension_ * dimension_ >> 20) + " MiB)");
       }
     } else if (key == "GTSP_SETS") {
       set_count_ = positiveInteger(value, line_number, "GTSP_SETS");

@@ -98,6 +98,10 @@ TEST(GtsplibReader, RejectsMalformedFiles) {
   expectRejected("TYPE : GTSP\nGTSP_SETS : 2\nEDGE_WEIGHT_TYPE : EUC_2D\n", "DIMENSION missing");
   expectRejected("DIMENSION : three\n", "test:1: DIMENSION 'three' is not a positive integer");
   expectRejected("DIMENSION : 0\n", "not a positive integer");
+  // Before the dense matrix of 8 n^2 bytes is allocated.
+  expectRejected("DIMENSION : 6001\n",
+                 "test:1: DIMENSION 6001 exceeds the limit of 6000 nodes (the cost matrix would "
+                 "take 274 MiB)");
   expectRejected("TYPE : TSP\n", "test:1: TYPE 'TSP' is not GTSP or AGTSP");
   expectRejected("EDGE_WEIGHT_TYPE : GEO\n", "EDGE_WEIGHT_TYPE 'GEO' is not supported");
   expectRejected("DIMENSION : 3\nGTSP_SETS : 2\nEDGE_WEIGHT_TYPE : EUC_2D\n" + std::string(kSets),

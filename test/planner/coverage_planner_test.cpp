@@ -368,9 +368,10 @@ TEST(CoveragePlanner, TooManySweepLanesAreRefusedBeforeAnyLaneIsPlaced) {
   EXPECT_NE(frustum_message.find("lateral_overlap"), std::string::npos) << frustum_message;
 }
 
-TEST(CoveragePlanner, TooManyCellsAreRefusedRightAfterTheDecomposition) {
-  // A comb of 1 100 teeth, 3 m wide and 3 m apart: one cell per tooth and the base. No wall
-  // offset: the refusal comes right after the decomposition either way.
+TEST(CoveragePlanner, AMapOverMaxMemoryIsRefusedRightAfterTheDecomposition) {
+  // A comb of 1 100 teeth, 3 m wide and 3 m apart: one cell per tooth and the base, over
+  // 100 MB by the estimate (no fixed cell count refuses it). No wall offset: the refusal
+  // comes right after the decomposition either way.
   constexpr int kTeeth = 1100;
   const double width = 6.0 * kTeeth - 3.0;
   Ring hull = {{0, 0}, {width, 0}};
@@ -387,10 +388,10 @@ TEST(CoveragePlanner, TooManyCellsAreRefusedRightAfterTheDecomposition) {
     parameters.decomposition_type = type;
     parameters.cell_joining = "critical_points";  // joined: the base goes on into one tooth
     parameters.wall_distance = 0.0;
+    parameters.max_memory_mb = 100.0;
     const std::string message = refusal(parameters, comb, {1, 1}, {width - 1, 1});
     SCOPED_TRACE(type);
-    EXPECT_NE(message.find("the decomposition has 1101 cells, 101 more than the limit of " +
-                           std::to_string(kMaxCells)),
+    EXPECT_NE(message.find("MB, more than max_memory_mb 100 MB (1101 cells with "),
               std::string::npos)
         << message;
     EXPECT_NE(message.find("simplify the polygon"), std::string::npos) << message;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "coverage_system/parameters/stage_options.h"
@@ -37,8 +39,8 @@ TEST(PlanningLimits, DirectionsWithinTheGtspLimitAreKept) {
 }
 
 TEST(PlanningLimits, OverTheGtspLimitEveryCellKeepsItsBestDirectionsFirst) {
-  // kMaxCells cells with 4 directions each: 16 002 nodes, over kMaxGtspNodes.
-  std::vector<Decomposition> decompositions = rectangles(kMaxCells, 4);
+  // 1 000 cells with 4 directions each: 16 002 nodes, over kMaxGtspNodes.
+  std::vector<Decomposition> decompositions = rectangles(1000, 4);
   const std::size_t before = gtspNodeCount(decompositions);
   ASSERT_GT(before, static_cast<std::size_t>(kMaxGtspNodes));
   const std::size_t dropped = fitDirectionsToGtspLimit(decompositions);
@@ -65,21 +67,56 @@ TEST(PlanningLimits, MinimumLaneCountIsTheWidthOverTheSweepDistance) {
   EXPECT_DOUBLE_EQ(minimumLaneCount(rectangles(3, 1), 100.0), 3 * 1.0);
 }
 
-TEST(PlanningLimits, CellAndLaneLimitsRefuseWithWhatToChange) {
-  PlannerParameters parameters;
-  EXPECT_NO_THROW(checkCellLimit(rectangles(kMaxCells, 1), DecompositionType::kBoustrophedon));
+TEST(PlanningLimits, EveryCellKeepsItsBestDirectionBeyondTheGtspLimit) {
+  // 2 000 cells: 8 002 nodes with one direction each, over kMaxGtspNodes; none is refused.
+  std::vector<Decomposition> decompositions = rectangles(2000, 3);
+  fitDirectionsToGtspLimit(decompositions);
+  for (const Cell& cell : decompositions.front().cells) EXPECT_EQ(cell.sweep_directions.size(), 1u);
+  EXPECT_EQ(gtspNodeCount(decompositions), 2000u * 4u + 2u);
+}
+
+TEST(PlanningLimits, RouteCornersAreTheCornersWhereTheAreaTurnsBackOnItself) {
+  // An L-shaped hull (one reflex corner) with a square hole (four), either orientation.
+  Ring hull = {{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 10}, {0, 10}};
+  Ring hole = {{1, 1}, {1, 2}, {2, 2}, {2, 1}};
+  EXPECT_EQ(routeCorners({hull, {hole}}), 5u);
+  std::reverse(hull.begin(), hull.end());
+  std::reverse(hole.begin(), hole.end());
+  EXPECT_EQ(routeCorners({hull, {hole}}), 5u);
+}
+
+TEST(PlanningLimits, TheMemoryEstimateGrowsWithTheSquaresAndRefusesWithWhatToChange) {
+  const PlanSize small{10, 42, 30};
+  const PlanSize large{2000, 8002, 9000};
+  const double mib = 1024.0 * 1024.0;
+  EXPECT_GE(planMemoryEstimateBytes(small), kMemoryBaselineBytes);
+  EXPECT_LT(planMemoryEstimateBytes(small), kMemoryBaselineBytes + mib);
+  // The quadratic terms: 8.5 V^2 + 8 n V + 24 n^2 + 24 m^2 bytes.
+  EXPECT_NEAR(planMemoryEstimateBytes(large) - kMemoryBaselineBytes,
+              8.5 * 9000.0 * 9000.0 + 8.0 * 8002.0 * 9000.0 + 24.0 * 8002.0 * 8002.0 +
+                  24.0 * 2000.0 * 2000.0,
+              1.0);
+  EXPECT_NO_THROW(checkMemoryEstimate(large, 4096.0, DecompositionType::kBoustrophedon));
   try {
-    checkCellLimit(rectangles(kMaxCells + 5, 1), DecompositionType::kBoustrophedon);
-    ADD_FAILURE() << "accepted " << kMaxCells + 5 << " cells";
-  } catch (const InvalidInputError& error) {
-    EXPECT_NE(std::string(error.what())
-                  .find(std::to_string(kMaxCells + 5) +
-                        " cells, 5 more "
-                        "than the limit of " +
-                        std::to_string(kMaxCells)),
+    checkMemoryEstimate(large, 1000.0, DecompositionType::kTrapezoidal);
+    ADD_FAILURE() << "accepted the large plan within 1000 MB";
+  } catch (const SizeLimitError& error) {
+    const std::string message = error.what();
+    const long estimate_mb = std::lround(planMemoryEstimateBytes(large) / mib);
+    EXPECT_NE(message.find("would need about " + std::to_string(estimate_mb) +
+                           " MB, more than max_memory_mb 1000 MB (2000 cells with 8002 "
+                           "generalized TSP nodes"),
               std::string::npos)
-        << error.what();
+        << message;
+    EXPECT_NE(message.find("9000 corners"), std::string::npos) << message;
+    EXPECT_NE(message.find("simplify the polygon"), std::string::npos) << message;
+    EXPECT_NE(message.find("fewer cells than the trapezoidal"), std::string::npos) << message;
   }
+  EXPECT_GT(machineMaxMemoryMb(), 0.0);
+}
+
+TEST(PlanningLimits, LaneLimitRefusesWithWhatToChange) {
+  PlannerParameters parameters;
   // 4 m across at a sweep distance of 0.01 m: 400 lanes per cell.
   parameters.sensor_model = "line";
   parameters.lateral_footprint = 0.02;

@@ -485,6 +485,43 @@ TEST(CoverageTool, RejectsAPlanOverThePlanningLimits) {
                        "of 20000");
 }
 
+TEST(CoverageTool, RefusesAMapOverMaxMemoryBeforeAllocatingIt) {
+  // A comb of 2 400 teeth, 3 m wide and 3 m apart: 2 401 cells, about 2.8 GB by the estimate.
+  // Under a 2 GiB address-space limit the dense matrices would fail to allocate; the
+  // estimate refuses the map first, with exit 2 and the figures behind it.
+  constexpr int kTeeth = 2400;
+  const double width = 6.0 * kTeeth - 3.0;
+  std::ostringstream hull;
+  hull << "  hull: [[0, 0], [" << width << ", 0]";
+  for (int i = kTeeth - 1; i >= 0; --i) {
+    const double left = 6.0 * i;
+    if (i < kTeeth - 1) hull << ", [" << left + 3.0 << ", 10]";
+    hull << ", [" << left + 3.0 << ", 20], [" << left << ", 20]";
+    if (i > 0) hull << ", [" << left << ", 10]";
+  }
+  hull << "]\n";
+  const std::string path =
+      writeMission("comb", mission(hull.str(), "wall_distance: 0\ncell_joining: critical_points\n",
+                                   "[1, 1]", "[" + std::to_string(width - 1.0) + ", 1]"));
+  const std::string out_dir = scratchDir() + "/comb_out";
+  std::filesystem::remove_all(out_dir);
+  const std::string err = scratchDir() + "/comb_stderr.txt";
+  const std::string command = "(ulimit -v 2097152; '" + std::string(KC_TOOL_PATH) + "' plan '" +
+                              path + "' --out '" + out_dir +
+                              "' --set max_memory_mb=1500) >/dev/null 2>'" + err + "'";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const std::vector<std::string> err_lines = lines(readText(err));
+  ASSERT_EQ(err_lines.size(), 1u);
+  EXPECT_NE(err_lines[0].find("error: the plan would need about "), std::string::npos)
+      << err_lines[0];
+  EXPECT_NE(err_lines[0].find("MB, more than max_memory_mb 1500 MB (2401 cells with "),
+            std::string::npos)
+      << err_lines[0];
+  EXPECT_FALSE(std::filesystem::exists(out_dir + "/waypoints.csv"));
+}
+
 std::string writeTrajectory(const std::string& name, const std::string& csv) {
   const std::string path = scratchDir() + "/" + name + ".csv";
   std::ofstream(path) << csv;
