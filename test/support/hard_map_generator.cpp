@@ -497,6 +497,25 @@ void star(std::uint64_t seed, HardMap& map) {
   map.mission.goal = random.mission.goal;
 }
 
+/// Up to `islands` noisy islands 2 to 8 m across (lakeChart's) about centres that
+/// `centre_ok` takes, at least 1 m from the shore and from each other; a lake too crowded
+/// for them all gets fewer.
+template <typename CentreOk>
+std::vector<Ring> chartIslands(std::mt19937& rng, const Ring& shore, int islands,
+                               CentreOk centre_ok) {
+  std::vector<Ring> placed;
+  for (int i = 0, attempts = 0; i < islands && attempts < 100 * islands; ++attempts) {
+    const Point2 centre = pointWhere(rng, shore, centre_ok);
+    const Ring island = noisyRing(rng, centre, uniform(rng, 1.0, 4.0),
+                                  integer(rng, HardMapGenerator::kLakeChartIslandVertices.first,
+                                          HardMapGenerator::kLakeChartIslandVertices.second));
+    if (gapOf(island, shore, placed) <= 1.0) continue;
+    placed.push_back(island);
+    ++i;
+  }
+  return placed;
+}
+
 /// A chart's map before its polygon: the shoreline family, default parameters and the
 /// footprint they give.
 HardMap defaultParameterMap(std::uint64_t seed) {
@@ -533,21 +552,12 @@ HardMap HardMapGenerator::lakeChart(std::uint64_t seed, int shore_vertices, int 
   const double size = kLakeChartSize;
   const Ring star = chartRing(rng, {0, 0}, 0.5 * size, shore_vertices, 0.2);
   const Ring shore = warpedShore(rng, star, size, {0.04, 0.1}, {0.15, 0.3});
-  // Islands 2 to 8 m across at least 1 m from the shore and from each other; a map too
-  // crowded for them all gets fewer.
-  std::vector<Ring> placed;
-  for (int i = 0, attempts = 0; i < islands && attempts < 100 * islands; ++attempts) {
-    const Point2 centre = pointWhere(rng, shore, [&](const Point2& p) {
-      return insideRing(p, shore) && distanceToRing(p, shore) > 10.0;
-    });
-    const Ring island =
-        noisyRing(rng, centre, uniform(rng, 1.0, 4.0),
-                  integer(rng, kLakeChartIslandVertices.first, kLakeChartIslandVertices.second));
-    if (gapOf(island, shore, placed) <= 1.0) continue;
-    placed.push_back(island);
-    ++i;
-  }
-  setPolygon(rng, shore, std::move(placed), map);
+  setPolygon(rng, shore,
+             chartIslands(rng, shore, islands,
+                          [&](const Point2& p) {
+                            return insideRing(p, shore) && distanceToRing(p, shore) > 10.0;
+                          }),
+             map);
   return map;
 }
 
@@ -563,19 +573,12 @@ HardMap HardMapGenerator::roughShore(std::uint64_t seed, int shore_vertices, int
     const double radius = kRoughShoreRadius + uniform(rng, -kRoughShoreNoise, kRoughShoreNoise);
     shore.push_back(radius * Point2(std::cos(angle), std::sin(angle)));
   }
-  std::vector<Ring> placed;
-  for (int i = 0, attempts = 0; i < islands && attempts < 100 * islands; ++attempts) {
-    const Point2 centre = pointWhere(rng, shore, [&](const Point2& p) {
-      return p.norm() < kRoughShoreRadius - kRoughShoreNoise - 10.0;
-    });
-    const Ring island =
-        noisyRing(rng, centre, uniform(rng, 1.0, 4.0),
-                  integer(rng, kLakeChartIslandVertices.first, kLakeChartIslandVertices.second));
-    if (gapOf(island, shore, placed) <= 1.0) continue;
-    placed.push_back(island);
-    ++i;
-  }
-  setPolygon(rng, shore, std::move(placed), map);
+  setPolygon(rng, shore,
+             chartIslands(rng, shore, islands,
+                          [](const Point2& p) {
+                            return p.norm() < kRoughShoreRadius - kRoughShoreNoise - 10.0;
+                          }),
+             map);
   return map;
 }
 
