@@ -27,6 +27,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -87,19 +88,17 @@ std::vector<Chart> parseCharts(const std::string& text) {
   return charts;
 }
 
-/// A chart's goals: most planning seconds, whole-run seconds and peak MB (0: none).
-struct Goal {
-  Chart chart;
+/// What one chart's run measured, or the most a goal allows (0: no goal).
+struct Measured {
   double planning_s = 0.0;
   double run_s = 0.0;
   double peak_mb = 0.0;
 };
 
-/// What one chart's run measured.
-struct Measured {
-  double planning_s = 0.0;
-  double run_s = 0.0;
-  double peak_mb = 0.0;
+/// A chart and the most its run may take.
+struct Goal {
+  Chart chart;
+  Measured most;
 };
 
 }  // namespace
@@ -109,16 +108,15 @@ struct Measured {
 /// 10 000 and 200 within 60 s and 2 GB; the archipelago of 2 000 islands within 120 s and 4 GB.
 constexpr double kChart2000GoalSeconds = 2.0;
 constexpr double kChart10000GoalSeconds = 30.0;
-const Goal kGoals[] = {{{"lake", 2000, 40}, kChart2000GoalSeconds, 0.0, 0.0},
-                       {{"lake", 10000, 200}, kChart10000GoalSeconds, 0.0, 0.0},
-                       {{"rough shore", 2000, 40}, 2.0, 4.0, 0.0},
-                       {{"rough shore", 10000, 200}, 60.0, 0.0, 2048.0},
-                       {{"archipelago", 0, 2000}, 120.0, 0.0, 4096.0}};
+const Goal kGoals[] = {{{"lake", 2000, 40}, {kChart2000GoalSeconds, 0.0, 0.0}},
+                       {{"lake", 10000, 200}, {kChart10000GoalSeconds, 0.0, 0.0}},
+                       {{"rough shore", 2000, 40}, {2.0, 4.0, 0.0}},
+                       {{"rough shore", 10000, 200}, {60.0, 0.0, 2048.0}},
+                       {{"archipelago", 0, 2000}, {120.0, 0.0, 4096.0}}};
 
 /// One line per goal whose chart was planned (its slowest seed): what it measured and
 /// whether that met the goal; a chart that was run but not planned misses it.
-void printGoals(const std::map<std::string, Measured>& planned,
-                const std::map<std::string, bool>& run) {
+void printGoals(const std::map<std::string, Measured>& planned, const std::set<std::string>& run) {
   for (const Goal& goal : kGoals) {
     const std::string key = goal.chart.name(0);
     if (run.count(key) == 0) continue;
@@ -130,15 +128,16 @@ void printGoals(const std::map<std::string, Measured>& planned,
       continue;
     }
     const Measured& m = found->second;
-    bool met = m.planning_s <= goal.planning_s;
-    std::printf(" planned within %.0f s: %.2f s", goal.planning_s, m.planning_s);
-    if (goal.run_s > 0.0) {
-      std::printf(", run within %.0f s: %.2f s", goal.run_s, m.run_s);
-      met = met && m.run_s <= goal.run_s;
+    const Measured& most = goal.most;
+    bool met = m.planning_s <= most.planning_s;
+    std::printf(" planned within %.0f s: %.2f s", most.planning_s, m.planning_s);
+    if (most.run_s > 0.0) {
+      std::printf(", run within %.0f s: %.2f s", most.run_s, m.run_s);
+      met = met && m.run_s <= most.run_s;
     }
-    if (goal.peak_mb > 0.0) {
-      std::printf(", within %.0f MB: %.0f MB", goal.peak_mb, m.peak_mb);
-      met = met && m.peak_mb <= goal.peak_mb;
+    if (most.peak_mb > 0.0) {
+      std::printf(", within %.0f MB: %.0f MB", most.peak_mb, m.peak_mb);
+      met = met && m.peak_mb <= most.peak_mb;
     }
     std::printf(": %s\n", met ? "met" : "MISSED");
   }
@@ -175,10 +174,10 @@ int main(int argc, char** argv) {
     }
   }
   if (sizes.empty()) {
-    std::fprintf(stderr,
-                 "usage: scaling_benchmark [--sizes V:I|rough:V:I|archipelago:I[,...]] [--seeds S] "
-                 "[--tool PATH] "
-                 "[--out DIR] [--timeout SECONDS] [--plot FILE.png] [--set NAME=VALUE]...\n");
+    std::fprintf(
+        stderr,
+        "usage: scaling_benchmark [--sizes V:I|rough:V:I|archipelago:I[,...]] [--seeds S] "
+        "[--tool PATH] [--out DIR] [--timeout SECONDS] [--plot FILE.png] [--set NAME=VALUE]...\n");
     return 2;
   }
   const bool temporary = out.empty();
@@ -190,10 +189,9 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(out);
 
   std::printf(
-      "| chart | shore vertices | islands | vertices | cells | outcome | planning s (timing) | run "
-      "s "
-      "(timing) "
-      "| peak MB (at most 4096) | estimate MB | estimate / peak (varies) | slowest stage (timing) "
+      "| chart | shore vertices | islands | vertices | cells | outcome | planning s (timing) "
+      "| run s (timing) | peak MB (at most 4096) | estimate MB | estimate / peak (varies) | "
+      "slowest stage (timing) "
       "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::string> details;
   std::vector<std::pair<double, double>> planning_times;  // (vertices, s) of planned charts
@@ -201,7 +199,7 @@ int main(int argc, char** argv) {
   std::vector<std::pair<double, double>> peaks;  // (vertices, MB)
   std::map<std::string, Measured>
       worst_by_chart;  // chart name (seed 0) -> its slowest seed's figures
-  std::map<std::string, bool> run_charts;
+  std::set<std::string> run_charts;
   std::vector<double> estimate_ratios;  // estimate / peak of the planned charts
   for (const Chart& size : sizes) {
     for (int seed = 0; seed < seeds; ++seed) {
@@ -245,7 +243,7 @@ int main(int argc, char** argv) {
         estimate_ratios.push_back(estimate_ratio);
       }
       std::fflush(stdout);
-      run_charts[size.name(0)] = true;
+      run_charts.insert(size.name(0));
       if (run.finished && run.exit_status == 0) {
         if (size.kind == "lake") {
           planning_times.emplace_back(static_cast<double>(vertices), planning_s);

@@ -468,11 +468,10 @@ std::vector<Decomposition> decomposeStage(const PlanningRun& run,
   const PlanSize size{cell_count, gtspNodeCount(decompositions), routeCorners(run.plan.route_area)};
   const double max_memory_mb =
       run.options.max_memory_mb > 0.0 ? run.options.max_memory_mb : machineMaxMemoryMb();
-  checkMemoryEstimate(size, max_memory_mb, type);
+  const double estimate_mb = checkMemoryEstimate(size, max_memory_mb, type);
   checkLaneLimit(decompositions, run.options.sensor);
-  summary << "; memory estimate " << std::lround(planMemoryEstimateBytes(size) / (1024.0 * 1024.0))
-          << " MB (" << size.gtsp_nodes << " generalized TSP nodes, " << size.route_corners
-          << " route corners)";
+  summary << "; memory estimate " << std::lround(estimate_mb) << " MB (" << size.gtsp_nodes
+          << " generalized TSP nodes, " << size.route_corners << " route corners)";
   run.stage("decompose", t, summary.str());
   return decompositions;
 }
@@ -596,6 +595,18 @@ GtspInstance transitionStage(const PlanningRun& run, const SweepStage& sweeps,
   return instance;
 }
 
+/// The warning of a generalized TSP over `cells` cells that its safety cap of `limit_s` ended.
+std::string gtspCapWarning(std::size_t cells, double limit_s) {
+  std::ostringstream warning;
+  warning << "the generalized TSP over " << cells << " cells stopped at its safety cap of "
+          << limit_s
+          << " s before its own stopping rule: the visiting order is the best found by then "
+             "and may cost more than a full search's (a machine this busy or this slow plans a "
+             "map this large poorly; the cells are fewer with a larger wall_distance or "
+             "boundary_simplification)";
+  return warning.str();
+}
+
 /// The generalized TSP over the patterns, from start to goal.
 GtspSolution solveStage(const PlanningRun& run, const GtspInstance& instance) {
   const Clock::time_point t = Clock::now();
@@ -613,15 +624,8 @@ GtspSolution solveStage(const PlanningRun& run, const GtspInstance& instance) {
   summary << "visiting order of " << instance.clusters.size() - 2 << " cells, cost "
           << solution.cost;
   if (solution.time_capped) {
-    std::ostringstream warning;
-    warning << "the generalized TSP over " << instance.clusters.size() - 2
-            << " cells stopped at its safety cap of " << options.time_limit_s
-            << " s before its own stopping rule: the visiting order is the best found by then "
-               "and may cost more than a full search's (a machine this busy or this slow "
-               "plans a map this large poorly; the cells are fewer with a larger "
-               "wall_distance or boundary_simplification)";
     run.plan.gtsp_time_capped = true;
-    run.plan.warnings.push_back(warning.str());
+    run.plan.warnings.push_back(gtspCapWarning(instance.clusters.size() - 2, options.time_limit_s));
     summary << ", stopped at the safety cap";
   }
   run.stage("solve", t, summary.str());
@@ -672,7 +676,8 @@ void chosetAlternativeStage(const PlanningRun& run, const std::vector<PolygonWit
   // Either search cut short may have missed a tour cheaper than the one kept.
   if (scratch.gtsp_time_capped && !run.plan.gtsp_time_capped) {
     run.plan.gtsp_time_capped = true;
-    run.plan.warnings.push_back(scratch.warnings.back());
+    run.plan.warnings.push_back(
+        gtspCapWarning(scratch.cells.size(), run.options.gtsp_time_limit_s));
   }
   summary << "Choset's " << scratch.cells.size() << " cells: tour cost " << choset.solution.cost
           << " against " << tour->solution.cost << " with the " << joined_cells

@@ -62,9 +62,9 @@ double machineMaxMemoryMb() {
   return 0.5 * static_cast<double>(pages) * static_cast<double>(page_size) / (1024.0 * 1024.0);
 }
 
-void checkMemoryEstimate(const PlanSize& size, double max_memory_mb, DecompositionType type) {
+double checkMemoryEstimate(const PlanSize& size, double max_memory_mb, DecompositionType type) {
   const double estimate_mb = planMemoryEstimateBytes(size) / (1024.0 * 1024.0);
-  if (estimate_mb <= max_memory_mb) return;
+  if (estimate_mb <= max_memory_mb) return estimate_mb;
   std::ostringstream message;
   message << std::fixed << std::setprecision(0) << "the plan would need about " << estimate_mb
           << " MB, more than max_memory_mb " << max_memory_mb << " MB (" << size.cells

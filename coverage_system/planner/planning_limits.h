@@ -48,9 +48,9 @@ constexpr double kMemoryBaselineBytes = 48.0 * 1024.0 * 1024.0;
 /// max_memory_mb's meaning of 0 (its default): half the machine's physical memory, in MB.
 double machineMaxMemoryMb();
 
-/// Throws SizeLimitError when planMemoryEstimateBytes(size) exceeds `max_memory_mb`, with the
-/// estimate, the figures behind it and what reduces them.
-void checkMemoryEstimate(const PlanSize& size, double max_memory_mb, DecompositionType type);
+/// planMemoryEstimateBytes(size) in MB; throws SizeLimitError when it exceeds `max_memory_mb`,
+/// with the estimate, the figures behind it and what reduces them.
+double checkMemoryEstimate(const PlanSize& size, double max_memory_mb, DecompositionType type);
 
 /// Keeps the cells' best lane directions so that gtspNodeCount stays within kMaxGtspNodes:
 /// every cell's best direction, then every cell's second best while they fit, and so on

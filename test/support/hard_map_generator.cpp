@@ -626,9 +626,8 @@ HardMap HardMapGenerator::archipelago(std::uint64_t seed, int islands) {
     Ring island;
     for (int k = 0; k < vertices; ++k) {
       const double r = k == 0 ? radius : radius * uniform(rng, 0.5, 1.0);
-      island.push_back(centre +
-                       r * Point2(std::cos(2.0 * M_PI * angles[static_cast<std::size_t>(k)]),
-                                  std::sin(2.0 * M_PI * angles[static_cast<std::size_t>(k)])));
+      const double angle = 2.0 * M_PI * angles[static_cast<std::size_t>(k)];
+      island.push_back(centre + r * Point2(std::cos(angle), std::sin(angle)));
     }
     placed.push_back(std::move(island));
     ++i;
