@@ -13,11 +13,14 @@
 // CHART is V:I (a lake chart of V shore vertices and I islands), rough:V:I (a rough shore)
 // or archipelago:I. Defaults: --sizes
 // 500:10,1000:20,2000:40,5000:100,10000:200,rough:2000:40,rough:10000:200,archipelago:2000,
-// one seed, coverage_tool beside this program, a temporary folder (removed after), 300 s per
+// one seed, coverage_tool beside this program, a temporary folder (removed after), 900 s per
 // run (a run past it counts as timed out). Then the growth exponents of the lake charts'
 // planning time, run time and peak memory against vertices, whether each goal is met, and
 // with --plot a log-log PNG of the lake charts' times. --set NAME=VALUE (repeatable) is handed
-// to `coverage_tool plan`, to measure a parameter (boundary_simplification=0.05).
+// to `coverage_tool plan`, to measure a parameter (boundary_simplification=0.05). Every rough
+// shore and archipelago is planned once more with ten times the generalized TSP's effort
+// (gtsp_effort=10), and its tour's cost (the solve stage's) compared: a line per chart and
+// the goal that none is more than kEffortGoalRatio times dearer.
 #include <unistd.h>
 
 #include <algorithm>
@@ -114,6 +117,40 @@ const Goal kGoals[] = {{{"lake", 2000, 40}, {kChart2000GoalSeconds, 0.0, 0.0}},
                        {{"rough shore", 10000, 200}, {60.0, 0.0, 2048.0}},
                        {{"archipelago", 0, 2000}, {120.0, 0.0, 4096.0}}};
 
+/// A tour may cost at most this many times the tour found with ten times the effort.
+constexpr double kEffortGoalRatio = 1.01;
+/// The generalized TSP's effort of the comparison runs (gtsp_effort).
+constexpr double kComparisonEffort = 10.0;
+
+/// The tour cost of the solve stage's line (0 when there is none).
+double tourCost(const std::string& output) {
+  std::smatch cost;
+  const std::regex solve_line(R"(solve: visiting order of \d+ cells, cost ([0-9.eE+-]+))");
+  return std::regex_search(output, cost, solve_line) ? std::atof(std::string(cost[1]).c_str())
+                                                     : 0.0;
+}
+
+/// Plans the chart's mission again with kComparisonEffort times the generalized TSP's effort;
+/// prints the two tours' costs and returns their ratio (0 when either run failed).
+double effortRatio(const std::string& tool, const std::string& mission, const std::string& dir,
+                   std::vector<std::string> settings, double timeout_s, const std::string& name,
+                   double tour_cost) {
+  settings.push_back("gtsp_effort=" + std::to_string(kComparisonEffort));
+  const kinematic_coverage::bench::CoverageToolRun run =
+      kinematic_coverage::bench::runPlan(tool, mission, dir, settings, timeout_s);
+  const double longer = run.finished && run.exit_status == 0 ? tourCost(run.output) : 0.0;
+  const double ratio = longer > 0.0 && tour_cost > 0.0 ? tour_cost / longer : 0.0;
+  double solve_s = 0.0;
+  for (const auto& [stage, seconds] : kinematic_coverage::bench::stageTimes(run.output)) {
+    if (stage == "solve") solve_s = seconds;
+  }
+  std::printf(
+      "effort: %s: tour cost %.1f, %.1f with %.0f times the effort (solve %.1f s): "
+      "ratio %.4f\n",
+      name.c_str(), tour_cost, longer, kComparisonEffort, solve_s, ratio);
+  return ratio;
+}
+
 /// One line per goal whose chart was planned (its slowest seed): what it measured and
 /// whether that met the goal; a chart that was run but not planned misses it.
 void printGoals(const std::map<std::string, Measured>& planned, const std::set<std::string>& run) {
@@ -149,7 +186,7 @@ int main(int argc, char** argv) {
   int seeds = 1;
   std::string tool = (std::filesystem::path(argv[0]).parent_path() / "coverage_tool").string();
   std::string out;
-  double timeout_s = 300.0;
+  double timeout_s = 900.0;
   std::string plot;
   std::vector<std::string> settings;
   for (int i = 1; i < argc; ++i) {
@@ -201,6 +238,7 @@ int main(int argc, char** argv) {
       worst_by_chart;  // chart name (seed 0) -> its slowest seed's figures
   std::set<std::string> run_charts;
   std::vector<double> estimate_ratios;  // estimate / peak of the planned charts
+  std::vector<double> effort_ratios;    // tour cost over the one at ten times the effort
   for (const Chart& size : sizes) {
     for (int seed = 0; seed < seeds; ++seed) {
       const HardMap map = size.generate(seed);
@@ -254,6 +292,10 @@ int main(int argc, char** argv) {
         worst = {std::max(worst.planning_s, planning_s), std::max(worst.run_s, run.wall_s),
                  std::max(worst.peak_mb, run.peak_mb)};
       }
+      if (run.finished && run.exit_status == 0 && size.kind != "lake") {
+        effort_ratios.push_back(effortRatio(tool, mission, out + "/" + name + "_effort", settings,
+                                            timeout_s, name, tourCost(run.output)));
+      }
       std::ostringstream detail;
       detail << name << ":";
       for (const auto& [stage, seconds] : stages) detail << " " << stage << " " << seconds;
@@ -277,6 +319,15 @@ int main(int argc, char** argv) {
         "goal: the memory estimate within 0.5 to 2 times the peak of every planned chart: "
         "%.2f to %.2f: %s\n",
         *low, *high, *low >= 0.5 && *high <= 2.0 ? "met" : "MISSED");
+  }
+  if (!effort_ratios.empty()) {
+    const double worst = *std::max_element(effort_ratios.begin(), effort_ratios.end());
+    const bool failed = *std::min_element(effort_ratios.begin(), effort_ratios.end()) <= 0.0;
+    std::printf(
+        "goal: every tour of a rough shore or archipelago at most %.2f times the one with %.0f "
+        "times the effort: %.4f: %s\n",
+        kEffortGoalRatio, kComparisonEffort, worst,
+        !failed && worst <= kEffortGoalRatio ? "met" : "MISSED");
   }
   if (!plot.empty()) {
     kinematic_coverage::bench::writeLogLogPlot(

@@ -149,6 +149,12 @@ std::vector<ParameterDeclaration> planningDeclarations() {
              "the transition costs and the generalized TSP grow with the square of the "
              "corners and the cells) and a map over this is refused, saying what reduces "
              "it; 0: half the machine's physical memory."),
+      number("gtsp_effort", &P::gtsp_effort, "", 1.0, interval(1.0, false, 100.0, false), S::kRoute,
+             "How long the generalized TSP searches for a cheaper visiting order: its stall "
+             "window (the generations after which it stops when the best order has gained "
+             "less than 0.1 %) is multiplied by this; a plan then takes about as many times "
+             "as long to solve, for a tour rarely more than a few tenths of a percent "
+             "cheaper (docs/BENCHMARKS.md, Lake charts)."),
   };
 }
 

@@ -27,6 +27,7 @@ struct PlannerParameters {
   double gap_clearance{};
   double boundary_simplification{};
   double max_memory_mb{};
+  double gtsp_effort{};
   std::string sensor_model{};
   double lateral_fov{};
   double onward_fov{};

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+
 #include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
 #include "polygon_coverage_ros_bridge/decomposition/sweep_line_decomposition.h"
 #include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
@@ -28,10 +30,18 @@ struct PlanningOptions {
   /// MB a plan may take by its estimate (planMemoryEstimateBytes); 0: half the machine's
   /// physical memory.
   double max_memory_mb = 0.0;
+  /// Multiplies the generalized TSP's stall window (gtsp_effort).
+  double gtsp_effort = 1.0;
   /// s: the generalized TSP's safety cap (GtspOptions::time_limit_s); not a parameter, so
   /// that a plan does not depend on the machine's speed unless the cap is hit, which the
   /// plan reports (CoveragePlan::gtsp_time_capped).
   double gtsp_time_limit_s = 60.0;
+  /// Generalized TSP nodes above which transitions are routed between nearby cells only
+  /// (LazyTransitionCosts); not a parameter (tests lower it to reach that path on small maps).
+  std::size_t dense_transition_nodes = 3000;
+  /// Route corners above which the visibility graph keeps no all-pairs table and searches
+  /// routes on demand (VisibilityGraph::kOnDemandNodes); not a parameter (tests lower it).
+  std::size_t dense_route_corners = 4000;
 
   FrustumSensor frustumSensor() const { return FrustumSensor::fromOptions(sensor); }
   SegmentCost segmentCost() const { return SegmentCost(cost_function, vehicle); }

@@ -76,6 +76,7 @@ PlanningOptions planningOptionsOf(const PlannerParameters& parameters) {
   options.gap_clearance = gapClearance(p);
   options.coverage_repair = p.coverage_repair;
   options.max_memory_mb = p.max_memory_mb;
+  options.gtsp_effort = p.gtsp_effort;
   return options;
 }
 

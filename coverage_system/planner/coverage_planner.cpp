@@ -5,12 +5,14 @@
 #include <cmath>
 #include <future>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <utility>
 
 #include "coverage_system/parameters/parameter_choices.h"
 #include "coverage_system/parameters/stage_options.h"
+#include "coverage_system/planner/lazy_transition_costs.h"
 #include "coverage_system/planner/reachable_offset_parts.h"
 #include "polygon_coverage_ros_bridge/base/elapsed_seconds.h"
 #include "polygon_coverage_ros_bridge/base/parallel_for.h"
@@ -56,6 +58,14 @@ constexpr int kGtspMaxPopulation = 30;
 constexpr int kGtspStallBase = 5;
 constexpr int kGtspMinStallGenerations = 15;
 constexpr int kGtspMaxStallGenerations = 80;
+/// Clusters above which the population and the stall window shrink in proportion to
+/// kGtspLargeClusters / clusters, to at least kGtspMinLargePopulation and
+/// kGtspMinStallGenerations: on an archipelago of 2 096 cells, 30 tours over windows of 80
+/// generations of about a second each ran into the 60 s safety cap; 10 tours over 22
+/// generations stop by the rule in about 14 s, 0.3 % above a run with ten times the window
+/// (docs/BENCHMARKS.md, Lake charts).
+constexpr int kGtspLargeClusters = 600;
+constexpr int kGtspMinLargePopulation = 10;
 /// The memetic GTSP solver stops when its last stall generations made the best tour less
 /// than this share cheaper: on shoreline maps of 230 to 370 trapezoidal cells, half the
 /// solving time (17.7 -> 8.4 s, 4.9 -> 2.5 s) for tours at most 0.08 % costlier; where
@@ -66,6 +76,8 @@ constexpr double kGtspMinStallGain = 1e-3;
 /// extra cells can let the tour turn back sooner (a 30 m lake with two islands: 7 % cheaper
 /// than with the joined cells), and solving both costs little there.
 constexpr std::size_t kChosetAlternativeCellLimit = 50;
+static_assert(PlanningOptions().dense_route_corners == VisibilityGraph::kOnDemandNodes,
+              "the planner's default switches the visibility graph where the graph would");
 /// Parts of a coverage region smaller than this share of a square sweep distance are
 /// left out: rounding leftovers of the Boolean operations, not area to sweep.
 constexpr double kMinPartShare = 1e-4;
@@ -465,7 +477,9 @@ std::vector<Decomposition> decomposeStage(const PlanningRun& run,
         " of their other directions would have taken the generalized TSP over " +
         std::to_string(kMaxGtspNodes) + " nodes");
   }
-  const PlanSize size{cell_count, gtspNodeCount(decompositions), routeCorners(run.plan.route_area)};
+  PlanSize size{cell_count, gtspNodeCount(decompositions), routeCorners(run.plan.route_area)};
+  size.routes_on_demand = size.route_corners > run.options.dense_route_corners;
+  size.lazy_transitions = size.gtsp_nodes > run.options.dense_transition_nodes;
   const double max_memory_mb =
       run.options.max_memory_mb > 0.0 ? run.options.max_memory_mb : machineMaxMemoryMb();
   const double estimate_mb = checkMemoryEstimate(size, max_memory_mb, type);
@@ -551,12 +565,69 @@ SweepStage sweepStage(const PlanningRun& run, Clock::time_point since, const Dec
   return sweeps;
 }
 
+/// The visibility graph of the route area: searched on demand beyond
+/// PlanningOptions::dense_route_corners corners.
+VisibilityGraph routeGraph(const PolygonWithHoles& route_area, const SegmentCost& segment_cost,
+                           const PlanningOptions& options) {
+  return VisibilityGraph(route_area, segment_cost,
+                         routeCorners(route_area) > options.dense_route_corners
+                             ? VisibilityGraph::AllPairs::kOnDemand
+                             : VisibilityGraph::AllPairs::kByDensity);
+}
+
+/// The generalized TSP instance and, on large maps, the transitions still to be priced.
+struct TransitionCosts {
+  GtspInstance instance;
+  std::unique_ptr<LazyTransitionCosts> lazy;
+};
+
+/// Large maps: exact transition costs between nearby cells only (LazyTransitionCosts).
+void lazyTransitions(const SweepStage& sweeps, const OffsetStage& offset,
+                     const VisibilityGraph& graph, const SegmentCost& segment_cost,
+                     const std::vector<double>& pattern_costs, TransitionCosts* transitions) {
+  std::vector<Point2> sources = {offset.start_inside, offset.goal_inside};
+  std::vector<Point2> targets = sources;
+  std::vector<double> entering = {0.0, 0.0};
+  for (std::size_t k = 0; k < sweeps.patterns.size(); ++k) {
+    sources.push_back(sweeps.patterns[k].end());
+    targets.push_back(sweeps.patterns[k].start());
+    entering.push_back(pattern_costs[k]);
+  }
+  transitions->lazy = std::make_unique<LazyTransitionCosts>(graph, segment_cost, std::move(sources),
+                                                            std::move(targets), std::move(entering),
+                                                            &transitions->instance);
+}
+
 /// The generalized TSP instance: transition costs between every pattern end and every
-/// pattern start (shortest paths in the route area), plus the cost of the pattern entered.
-GtspInstance transitionStage(const PlanningRun& run, const SweepStage& sweeps,
-                             const OffsetStage& offset, const VisibilityGraph& graph,
-                             const SegmentCost& segment_cost) {
+/// pattern start (shortest paths in the route area), plus the cost of the pattern entered;
+/// beyond PlanningOptions::dense_transition_nodes nodes (at 3 534 nodes, a rough shore of
+/// 2 000 vertices and 40 islands, the 12.5 million routes took 1.4 s), routed between nearby cells
+/// only and estimated elsewhere until a tour uses them.
+TransitionCosts transitionStage(const PlanningRun& run, const SweepStage& sweeps,
+                                const OffsetStage& offset, const VisibilityGraph& graph,
+                                const SegmentCost& segment_cost) {
   const Clock::time_point t = Clock::now();
+  const std::size_t n = sweeps.patterns.size() + 2;
+  TransitionCosts transitions;
+  GtspInstance& instance = transitions.instance;
+  instance.node_count = static_cast<int>(n);
+  instance.clusters = sweeps.clusters;
+  instance.start_cluster = 0;
+  instance.goal_cluster = 1;
+  instance.reverse_nodes = reverseNodes(sweeps.patterns, sweeps.clusters);
+  std::vector<double> pattern_costs;
+  for (const SweepPattern& pattern : sweeps.patterns) {
+    pattern_costs.push_back(segment_cost.pathCost(pattern.path));
+  }
+  std::ostringstream summary;
+  if (n > run.options.dense_transition_nodes) {
+    lazyTransitions(sweeps, offset, graph, segment_cost, pattern_costs, &transitions);
+    summary << transitions.lazy->exactCount() << " of " << (n - 1) * (n - 1)
+            << " transition costs routed, between nearby cells (the others estimated until a "
+               "tour uses them)";
+    run.stage("transitions", t, summary.str());
+    return transitions;
+  }
   std::vector<Point2> sources = {offset.start_inside};
   std::vector<Point2> targets = {offset.goal_inside};
   for (const SweepPattern& pattern : sweeps.patterns) {
@@ -564,18 +635,7 @@ GtspInstance transitionStage(const PlanningRun& run, const SweepStage& sweeps,
     targets.push_back(pattern.start());
   }
   const std::vector<double> transition_costs = graph.costMatrix(sources, targets);
-  const std::size_t n = sweeps.patterns.size() + 2;
-  GtspInstance instance;
-  instance.node_count = static_cast<int>(n);
-  instance.clusters = sweeps.clusters;
-  instance.start_cluster = 0;
-  instance.goal_cluster = 1;
-  instance.reverse_nodes = reverseNodes(sweeps.patterns, sweeps.clusters);
   instance.costs.assign(n * n, 0.0);
-  std::vector<double> pattern_costs;
-  for (const SweepPattern& pattern : sweeps.patterns) {
-    pattern_costs.push_back(segment_cost.pathCost(pattern.path));
-  }
   // Node 0 (start) is source row 0; node 1 (goal) is target column 0; pattern k is
   // node k + 2, source row k + 1 and target column k + 1.
   auto sourceRow = [](std::size_t node) { return node == 0 ? 0 : node - 1; };
@@ -589,10 +649,9 @@ GtspInstance transitionStage(const PlanningRun& run, const SweepStage& sweeps,
           transition_costs[sourceRow(from) * targets.size() + column] + entering;
     }
   }
-  std::ostringstream summary;
   summary << sources.size() * targets.size() << " transition costs";
   run.stage("transitions", t, summary.str());
-  return instance;
+  return transitions;
 }
 
 /// The warning of a generalized TSP over `cells` cells that its safety cap of `limit_s` ended.
@@ -607,22 +666,44 @@ std::string gtspCapWarning(std::size_t cells, double limit_s) {
   return warning.str();
 }
 
-/// The generalized TSP over the patterns, from start to goal.
-GtspSolution solveStage(const PlanningRun& run, const GtspInstance& instance) {
+/// The generalized TSP over the patterns, from start to goal; with lazy transitions, its
+/// tour then made exact.
+GtspSolution solveStage(const PlanningRun& run, TransitionCosts transitions) {
   const Clock::time_point t = Clock::now();
+  GtspInstance& instance = transitions.instance;
   GtspOptions options;
   options.exact_cluster_limit = kExactClusterLimit;
+  const int clusters = static_cast<int>(instance.clusters.size());
   options.max_population = kGtspMaxPopulation;
   options.focused_search = true;
   options.min_stall_gain = kGtspMinStallGain;
+  int stall_generations =
+      std::clamp(kGtspStallBase + clusters / 3, kGtspMinStallGenerations, kGtspMaxStallGenerations);
+  if (clusters > kGtspLargeClusters) {
+    // A generation's work grows with the clusters: the population and the window shrink
+    // in proportion, down to their floors.
+    const double share = static_cast<double>(kGtspLargeClusters) / clusters;
+    options.population_size =
+        std::max(kGtspMinLargePopulation, static_cast<int>(kGtspMaxPopulation * share));
+    stall_generations =
+        std::max(kGtspMinStallGenerations, static_cast<int>(kGtspMaxStallGenerations * share));
+  }
   options.stall_generations =
-      std::clamp(kGtspStallBase + static_cast<int>(instance.clusters.size()) / 3,
-                 kGtspMinStallGenerations, kGtspMaxStallGenerations);
+      static_cast<int>(std::lround(stall_generations * run.options.gtsp_effort));
   options.time_limit_s = run.options.gtsp_time_limit_s;
-  const GtspSolution solution = solveGtsp(instance, options);
+  GtspSolution solution = solveGtsp(instance, options);
   std::ostringstream summary;
-  summary << "visiting order of " << instance.clusters.size() - 2 << " cells, cost "
-          << solution.cost;
+  summary << "visiting order of " << instance.clusters.size() - 2 << " cells, cost ";
+  if (transitions.lazy) {
+    const std::size_t routed = transitions.lazy->exactCount();
+    const Clock::time_point deadline = t + std::chrono::duration_cast<Clock::duration>(
+                                               std::chrono::duration<double>(options.time_limit_s));
+    solution = transitions.lazy->makeExact(&instance, std::move(solution), deadline);
+    summary << solution.cost << " (" << transitions.lazy->exactCount() - routed
+            << " estimated transitions routed where tours used them)";
+  } else {
+    summary << solution.cost;
+  }
   if (solution.time_capped) {
     run.plan.gtsp_time_capped = true;
     run.plan.warnings.push_back(gtspCapWarning(instance.clusters.size() - 2, options.time_limit_s));
@@ -901,15 +982,15 @@ CoveragePlan CoveragePlanner::planParts(const PolygonWithHoles& free_area,
     const Clock::time_point sweeps_start = Clock::now();
     failing_stage = "sweeps";
     const SegmentCost segment_cost = options_.segmentCost();
-    const VisibilityGraph graph(plan.route_area, segment_cost);
+    const VisibilityGraph graph = routeGraph(plan.route_area, segment_cost, options_);
     Tour tour;
     tour.sweeps = sweepStage(run, sweeps_start, decomposed, decompositions, sensor, graph);
 
     failing_stage = "transitions";
-    const GtspInstance instance = transitionStage(run, tour.sweeps, offset, graph, segment_cost);
+    TransitionCosts transitions = transitionStage(run, tour.sweeps, offset, graph, segment_cost);
 
     failing_stage = "solve";
-    tour.solution = solveStage(run, instance);
+    tour.solution = solveStage(run, std::move(transitions));
     if (joining == CellJoining::kLongestOverlap) {
       failing_stage = "alternative";
       chosetAlternativeStage(run, parts, offset, sensor, graph, segment_cost, &tour);

@@ -52,7 +52,10 @@ double planMemoryEstimateBytes(const PlanSize& size) {
   const double v = static_cast<double>(size.route_corners);
   const double n = static_cast<double>(size.gtsp_nodes);
   const double m = static_cast<double>(size.cells);
-  return kMemoryBaselineBytes + 8.5 * v * v + 8.0 * n * v + 24.0 * n * n + 24.0 * m * m;
+  const double graph =
+      size.routes_on_demand ? kOnDemandBytesPerCorner * v : 8.5 * v * v + 8.0 * n * v;
+  const double transitions = (size.lazy_transitions ? 8.0 : 24.0) * n * n;
+  return kMemoryBaselineBytes + graph + transitions + 24.0 * m * m;
 }
 
 double machineMaxMemoryMb() {

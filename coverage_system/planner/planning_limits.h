@@ -29,6 +29,11 @@ struct PlanSize {
   /// Corners of the route area where a route may bend (its rings' vertices at which the
   /// area's inside angle exceeds 180 degrees): about the visibility graph's nodes.
   std::size_t route_corners = 0;
+  /// The visibility graph searches routes on demand instead of keeping all-pairs costs
+  /// (PlanningOptions::dense_route_corners).
+  bool routes_on_demand = false;
+  /// Transitions are routed between nearby cells only (PlanningOptions::dense_transition_nodes).
+  bool lazy_transitions = false;
 };
 
 /// The corners of `route_area` where a route may bend (PlanSize::route_corners).
@@ -36,11 +41,17 @@ std::size_t routeCorners(const PolygonWithHoles& route_area);
 
 /// Bytes that the plan's largest structures take at once, estimated before they are built:
 /// a baseline (kMemoryBaselineBytes: the process, the areas, the rasters of a map that the
-/// project's benchmarks plan), the visibility graph's all-pairs costs and visibility flags
-/// over its nodes V (8.5 V^2), every sweep endpoint's cost to every node (8 n V), the
-/// transition costs and the generalized TSP's dense matrix with the transitions' working
-/// copy (24 n^2, n nodes) and the local searches' cluster distances (24 m^2, m cells).
+/// project's benchmarks plan); the visibility graph's all-pairs costs and visibility flags
+/// over its nodes V (8.5 V^2) and every sweep endpoint's cost to every node (8 n V), or on
+/// demand its local edges (kOnDemandBytesPerCorner V); the transition costs and the
+/// generalized TSP's dense matrix with the transitions' working copy (24 n^2, n nodes), or
+/// with lazy transitions the matrix alone (8 n^2); and the local searches' cluster distances
+/// (24 m^2, m cells).
 double planMemoryEstimateBytes(const PlanSize& size);
+
+/// Bytes per route corner of a visibility graph searched on demand: its local edges and
+/// the nodes that the sweep endpoints see.
+constexpr double kOnDemandBytesPerCorner = 4096.0;
 
 /// Bytes of a plan beyond its quadratic structures (planMemoryEstimateBytes).
 constexpr double kMemoryBaselineBytes = 48.0 * 1024.0 * 1024.0;

@@ -1,5 +1,6 @@
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <clipper.hpp>
 #include <cmath>
@@ -188,9 +189,10 @@ ClipperLib::Paths offsetRing(const ClipperLib::Path& ring, double delta, OffsetC
   return combine(combine(mitred, caps, ClipperLib::ctDifference), round, ClipperLib::ctUnion);
 }
 
-/// The parts of the offset free area in `tree`, largest first; throws when it is empty.
-OffsetFreeArea offsetParts(const ClipperLib::PolyTree& tree, const IntegerFrame& frame,
-                           double wall_distance) {
+/// The polygons of a PolyTree of Boolean results (counter-clockwise hulls, clockwise holes),
+/// those of positive area.
+std::vector<PolygonWithHoles> polygonsOf(const ClipperLib::PolyTree& tree,
+                                         const IntegerFrame& frame) {
   std::vector<PolygonWithHoles> parts;
   for (const ClipperLib::PolyNode* node = tree.GetFirst(); node != nullptr;
        node = node->GetNext()) {
@@ -202,6 +204,13 @@ OffsetFreeArea offsetParts(const ClipperLib::PolyTree& tree, const IntegerFrame&
     }
     if (area(part) > 0.0) parts.push_back(std::move(part));
   }
+  return parts;
+}
+
+/// The parts of the offset free area in `tree`, largest first; throws when it is empty.
+OffsetFreeArea offsetParts(const ClipperLib::PolyTree& tree, const IntegerFrame& frame,
+                           double wall_distance) {
+  std::vector<PolygonWithHoles> parts = polygonsOf(tree, frame);
   if (parts.empty()) {
     std::ostringstream message;
     message << "the offset free area is empty: wall_distance " << wall_distance
@@ -215,6 +224,38 @@ OffsetFreeArea offsetParts(const ClipperLib::PolyTree& tree, const IntegerFrame&
   result.parts = std::move(parts);
   return result;
 }
+
+/// The part of `ring` within the box [low, high] (Sutherland-Hodgman, side by side): a closed
+/// path whose winding number at every point strictly inside the box is the ring's (it may run
+/// back and forth along the box's sides, which Clipper's non-zero rule resolves). Empty when
+/// no part of the ring is in the box.
+Ring clippedToBox(const Ring& ring, const Point2& low, const Point2& high) {
+  Ring current = ring;
+  for (int side = 0; side < 4 && !current.empty(); ++side) {
+    const int axis = side % 2;
+    const bool lower = side < 2;
+    const double bound = lower ? low[axis] : high[axis];
+    auto inside = [&](const Point2& p) { return lower ? p[axis] >= bound : p[axis] <= bound; };
+    Ring next;
+    for (std::size_t i = 0, n = current.size(); i < n; ++i) {
+      const Point2& from = current[(i + n - 1) % n];
+      const Point2& to = current[i];
+      if (inside(to) != inside(from)) {
+        const double t = (bound - from[axis]) / (to[axis] - from[axis]);
+        Point2 crossing = from + t * (to - from);
+        crossing[axis] = bound;
+        next.push_back(crossing);
+      }
+      if (inside(to)) next.push_back(to);
+    }
+    current = std::move(next);
+  }
+  return current;
+}
+
+/// The share of a clipping box's larger side by which clippedToBox's box exceeds it, so that
+/// the paths' runs along its sides lie outside the box Clipper clips to.
+constexpr double kPreClipMarginShare = 0.01;
 
 }  // namespace
 
@@ -262,6 +303,47 @@ OffsetFreeArea WallOffset::at(double distance, OffsetCorners corners) const {
     }
   }
   return offsetParts(tree, rings_->frame, distance);
+}
+
+std::vector<PolygonWithHoles> clipToBox(const PolygonWithHoles& area, const Point2& low,
+                                        const Point2& high) {
+  const IntegerFrame frame(area);
+  // Both corners within the frame's range: the box beyond the hull adds nothing.
+  const Eigen::AlignedBox2d hull_box = [&] {
+    Eigen::AlignedBox2d box;
+    for (const Point2& p : area.hull) box.extend(p);
+    return box;
+  }();
+  const Point2 from = low.cwiseMax(hull_box.min());
+  const Point2 to = high.cwiseMin(hull_box.max());
+  if ((from.array() >= to.array()).any()) return {};
+  // The rings cut down to a slightly larger box first: Clipper's sweep then meets only the
+  // edges near the box, not every edge of a long shore.
+  const Point2 margin = Point2::Constant(kPreClipMarginShare * (to - from).maxCoeff());
+  auto nearBox = [&](const Ring& ring) { return clippedToBox(ring, from - margin, to + margin); };
+  ClipperLib::PolyTree tree;
+  try {
+    ClipperLib::Clipper clipper;
+    clipper.StrictlySimple(true);
+    const Ring hull = nearBox(area.hull);
+    if (hull.size() < 3) return {};
+    clipper.AddPath(frame.toPath(hull), ClipperLib::ptSubject, true);
+    for (const Ring& hole : area.holes) {
+      const Ring near = nearBox(hole);
+      if (near.size() < 3) continue;
+      // Counter-clockwise as the hull, then turned round: taken away (non-zero rule).
+      ClipperLib::Path path = frame.toPath(near);
+      ClipperLib::ReversePath(path);
+      clipper.AddPath(path, ClipperLib::ptSubject, true);
+    }
+    clipper.AddPath(frame.toPath({from, {to.x(), from.y()}, to, {from.x(), to.y()}}),
+                    ClipperLib::ptClip, true);
+    clipper.Execute(ClipperLib::ctIntersection, tree, ClipperLib::pftNonZero,
+                    ClipperLib::pftNonZero);
+  } catch (const ClipperLib::clipperException& error) {
+    throw InternalError("offset", std::string("Clipper: ") + error.what());
+  }
+  return polygonsOf(tree, frame);
 }
 
 OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance) {

@@ -1,5 +1,6 @@
 #include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -140,12 +141,23 @@ std::pair<Point2, Point2> closestVertices(const std::vector<PartVertices>& parts
 /// The least distance from the path to the free area's boundary and where it is.
 std::pair<double, Point2> pathClearance(const PolygonWithHoles& free_area,
                                         const std::vector<Point2>& path) {
+  // The nearest vertex to the path's first point bounds the clearance from above (that point
+  // reaches it): edges whose box lies at least that far from the path's box are skipped.
   double least = std::numeric_limits<double>::infinity();
+  auto nearest = [&](const Ring& ring) {
+    for (const Point2& v : ring) least = std::min(least, (v - path.front()).norm());
+  };
+  nearest(free_area.hull);
+  for (const Ring& hole : free_area.holes) nearest(hole);
+  Eigen::AlignedBox2d path_box;
+  for (const Point2& p : path) path_box.extend(p);
   Point2 where = path.front();
   auto visit = [&](const Ring& ring) {
     for (std::size_t e = 0, n = ring.size(); e < n; ++e) {
       const Point2& c = ring[e];
       const Point2& d = ring[(e + 1) % n];
+      const Eigen::AlignedBox2d edge_box(c.cwiseMin(d), c.cwiseMax(d));
+      if (path_box.exteriorDistance(edge_box) >= least) continue;
       for (std::size_t s = 0; s + 1 < path.size(); ++s) {
         const Point2& a = path[s];
         const Point2& b = path[s + 1];
@@ -272,8 +284,8 @@ std::vector<Point2> pathBetweenParts(const PolygonWithHoles& area, const Point2&
   const Point2 to = contains(area, b) ? b : nearestBoundaryPoint(area, b);
   std::vector<Point2> path;
   for (const double share : kPathWindowShares) {
-    const PolygonWithHoles box = boxAround({from, to}, share * (to - from).norm());
-    for (const PolygonWithHoles& piece : intersectWithRegions(area, {box}, 0.0)) {
+    const auto [low, high] = boundsOf(boxAround({from, to}, share * (to - from).norm()).hull);
+    for (const PolygonWithHoles& piece : clipToBox(area, low, high)) {
       if (path.empty() && contains(piece, from, kRoundOffsetReach) &&
           contains(piece, to, kRoundOffsetReach)) {
         path = shortestPathInside(piece, from, to);
@@ -383,16 +395,18 @@ std::vector<OffsetGap> windowedGaps(const PolygonWithHoles& free_area,
       if (boundsOverlap(hole, window.hull)) nearby.holes.push_back(hole);
     }
     const PolygonWithHoles* area = nullptr;
-    const std::vector<PolygonWithHoles> pieces = intersectWithRegions(nearby, {window}, 0.0);
+    const auto [window_low, window_high] = boundsOf(window.hull);
+    const std::vector<PolygonWithHoles> pieces = clipToBox(nearby, window_low, window_high);
     for (const PolygonWithHoles& piece : pieces) {
       if (contains(piece, parts[k].hull.front())) area = &piece;
     }
     if (area == nullptr) continue;
+    const auto [sample_low, sample_high] = boundsOf(sample.hull);
     std::vector<PartVertices> local = {verticesOf(parts[k])};
     std::vector<std::size_t> owner = {k};
     for (std::size_t j = 0; j < parts.size(); ++j) {
       if (j == k || !boundsOverlap(parts[j].hull, sample.hull)) continue;
-      for (const PolygonWithHoles& clipped : intersectWithRegions(parts[j], {sample}, 0.0)) {
+      for (const PolygonWithHoles& clipped : clipToBox(parts[j], sample_low, sample_high)) {
         local.push_back(verticesOf(clipped));
         owner.push_back(j);
       }

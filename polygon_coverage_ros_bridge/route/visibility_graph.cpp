@@ -1,6 +1,8 @@
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -14,6 +16,12 @@ namespace kinematic_coverage::core {
 namespace {
 
 constexpr double kUnreachable = std::numeric_limits<double>::infinity();
+
+Eigen::AlignedBox2d boundingBox(const std::vector<Point2>& ring) {
+  Eigen::AlignedBox2d box;
+  for (const Point2& p : ring) box.extend(p);
+  return box;
+}
 
 std::string describe(const Point2& p) {
   std::ostringstream text;
@@ -32,6 +40,22 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
     node_contacts_.push_back({cluster, {}});
   }
   const std::size_t n = nodes_.size();
+  if (all_pairs == AllPairs::kOnDemand ||
+      (all_pairs == AllPairs::kByDensity && n > kOnDemandNodes)) {
+    on_demand_ = true;
+    const PolygonWithHoles& polygon = grid_.polygon();
+    const Eigen::AlignedBox2d box = boundingBox(polygon.hull);
+    const double area = std::max(box.sizes().prod(), 1e-12);
+    double radius = std::sqrt(kLocalRadiusNodes * area / (M_PI * std::max<std::size_t>(n, 1)));
+    indexNodes(radius);
+    while (true) {
+      buildLocalEdges(radius);
+      if (radius >= extent() || nodesConnected()) break;
+      radius *= 2.0;
+    }
+    local_radius_ = radius;
+    return;
+  }
   // The visibility tests (most of the work) on every hardware thread, row u testing the
   // nodes after u; the graph is then built in the same order as one thread would.
   std::vector<std::vector<char>> visible(n);
@@ -56,6 +80,167 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
     }
   }
   allPairsCosts(all_pairs);
+}
+
+void VisibilityGraph::indexNodes(double cell) {
+  const Eigen::AlignedBox2d box = boundingBox(grid_.polygon().hull);
+  index_origin_ = box.min();
+  index_cell_ = cell;
+  index_columns_ = static_cast<std::size_t>(box.sizes().x() / cell) + 1;
+  index_rows_ = static_cast<std::size_t>(box.sizes().y() / cell) + 1;
+  index_buckets_.assign(index_columns_ * index_rows_, {});
+  auto clampedCell = [&](double offset, std::size_t count) {
+    return std::min(count - 1, static_cast<std::size_t>(std::max(0.0, offset / cell)));
+  };
+  for (std::size_t k = 0; k < nodes_.size(); ++k) {
+    const Point2 offset = nodes_[k] - index_origin_;
+    index_buckets_[clampedCell(offset.y(), index_rows_) * index_columns_ +
+                   clampedCell(offset.x(), index_columns_)]
+        .push_back(static_cast<int>(k));
+  }
+}
+
+template <typename Visit>
+void VisibilityGraph::forNodesWithin(const Point2& p, double radius, Visit visit) const {
+  auto cellRange = [&](double centre, double origin, std::size_t count) {
+    const double low = std::floor((centre - radius - origin) / index_cell_);
+    const double high = std::floor((centre + radius - origin) / index_cell_);
+    const double last = static_cast<double>(count - 1);
+    return std::make_pair(static_cast<std::size_t>(std::clamp(low, 0.0, last)),
+                          static_cast<std::size_t>(std::clamp(high, 0.0, last)));
+  };
+  const auto [column_low, column_high] = cellRange(p.x(), index_origin_.x(), index_columns_);
+  const auto [row_low, row_high] = cellRange(p.y(), index_origin_.y(), index_rows_);
+  const double squared = radius * radius;
+  for (std::size_t row = row_low; row <= row_high; ++row) {
+    for (std::size_t column = column_low; column <= column_high; ++column) {
+      for (int k : index_buckets_[row * index_columns_ + column]) {
+        if ((nodes_[k] - p).squaredNorm() <= squared) visit(static_cast<std::size_t>(k));
+      }
+    }
+  }
+}
+
+double VisibilityGraph::extent() const {
+  return boundingBox(grid_.polygon().hull).diagonal().norm();
+}
+
+void VisibilityGraph::buildLocalEdges(double radius) {
+  const std::size_t n = nodes_.size();
+  std::vector<std::vector<int>> visible(n);
+  parallelFor(n, [&](std::size_t u) {
+    forNodesWithin(nodes_[u], radius, [&](std::size_t w) {
+      if (w > u && mayBendAt(u, nodes_[w]) && mayBendAt(w, nodes_[u]) &&
+          grid_.segmentInside(nodes_[u], node_contacts_[u], nodes_[w], node_contacts_[w])) {
+        visible[u].push_back(static_cast<int>(w));
+      }
+    });
+    std::sort(visible[u].begin(), visible[u].end());
+  });
+  neighbours_.assign(n, {});
+  for (std::size_t u = 0; u < n; ++u) {
+    for (int w : visible[u]) {
+      const double c = segment_cost_.of(nodes_[u], nodes_[w]);
+      neighbours_[u].push_back({w, c});
+      neighbours_[w].push_back({static_cast<int>(u), c});
+    }
+  }
+}
+
+bool VisibilityGraph::nodesConnected() const {
+  if (nodes_.empty()) return true;
+  std::vector<char> reached(nodes_.size(), 0);
+  std::vector<int> stack = {0};
+  reached[0] = 1;
+  std::size_t count = 1;
+  while (!stack.empty()) {
+    const int u = stack.back();
+    stack.pop_back();
+    for (const auto& [w, c] : neighbours_[u]) {
+      if (!reached[w]) reached[w] = 1, ++count, stack.push_back(w);
+    }
+  }
+  return count == nodes_.size();
+}
+
+double VisibilityGraph::nodeCost(std::size_t u, std::size_t w) const {
+  if (!on_demand_) return node_costs_[u * nodes_.size() + w];
+  const QueryPoint from{nodes_[u], node_contacts_[u], {static_cast<int>(u)}, {0.0}, {}};
+  const QueryPoint to{nodes_[w], node_contacts_[w], {static_cast<int>(w)}, {0.0}, {}};
+  return search(from, {&to}).costs[0];
+}
+
+VisibilityGraph::Search VisibilityGraph::search(
+    const QueryPoint& a, const std::vector<const QueryPoint*>& targets) const {
+  const std::size_t n = nodes_.size();
+  Search result;
+  result.costs.assign(targets.size(), kUnreachable);
+  result.last.assign(targets.size(), -1);
+  result.previous.assign(n, -1);
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const QueryPoint& b = *targets[t];
+    if (b.position == a.position) {
+      result.costs[t] = 0.0;
+    } else if (straightInside(a, b)) {
+      result.costs[t] = segment_cost_.of(a.position, b.position);
+    }
+  }
+  // The targets that see each node, as linked lists over one array.
+  struct Entry {
+    int target;
+    double cost;
+    int next;
+  };
+  std::vector<int> head(n, -1);
+  std::vector<Entry> entries;
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const QueryPoint& b = *targets[t];
+    for (std::size_t i = 0; i < b.seen_nodes.size(); ++i) {
+      const int u = b.seen_nodes[i];
+      entries.push_back({static_cast<int>(t), b.seen_costs[i], head[u]});
+      head[u] = static_cast<int>(entries.size()) - 1;
+    }
+  }
+  std::vector<double> settled(n, kUnreachable);
+  IndexedMinHeap queue(n);
+  for (std::size_t i = 0; i < a.seen_nodes.size(); ++i) {
+    const int u = a.seen_nodes[i];
+    if (a.seen_costs[i] < settled[u]) {
+      settled[u] = a.seen_costs[i];
+      queue.pushOrDecrease(u, a.seen_costs[i]);
+    }
+  }
+  auto highestCost = [&result] {
+    return *std::max_element(result.costs.begin(), result.costs.end());
+  };
+  double bound = targets.empty() ? 0.0 : highestCost();
+  // Every target is settled once the queue's least cost reaches the highest target cost; the
+  // bound is refreshed whenever it is reached, and every so often as targets get cheaper.
+  constexpr std::size_t kBoundRefresh = 64;
+  for (std::size_t pops = 1; !queue.empty(); ++pops) {
+    const int u = queue.popMin();
+    const double cost = settled[u];
+    if (cost >= bound || pops % kBoundRefresh == 0) {
+      bound = highestCost();
+      if (cost >= bound) break;
+    }
+    for (int e = head[u]; e >= 0; e = entries[e].next) {
+      const double through = cost + entries[e].cost;
+      if (through < result.costs[entries[e].target]) {
+        result.costs[entries[e].target] = through;
+        result.last[entries[e].target] = u;
+      }
+    }
+    for (const auto& [w, c] : neighbours_[u]) {
+      const double through = cost + c;
+      if (through < settled[w]) {
+        settled[w] = through;
+        result.previous[w] = u;
+        queue.pushOrDecrease(w, through);
+      }
+    }
+  }
+  return result;
 }
 
 bool VisibilityGraph::mayBendAt(std::size_t k, const Point2& other) const {
@@ -176,19 +361,31 @@ VisibilityGraph::QueryPoint VisibilityGraph::locate(const Point2& p) const {
   return point;
 }
 
+bool VisibilityGraph::seesNode(const QueryPoint& point, std::size_t k) const {
+  if (point.contact.cluster != node_contacts_[k].cluster && !mayBendAt(k, point.position)) {
+    return false;
+  }
+  return grid_.segmentInside(point.position, point.contact, nodes_[k], node_contacts_[k]);
+}
+
 void VisibilityGraph::attachNodes(QueryPoint* point, bool with_node_costs) const {
   point->seen_nodes.clear();
   point->seen_costs.clear();
-  for (std::size_t k = 0; k < nodes_.size(); ++k) {
-    if (point->contact.cluster != node_contacts_[k].cluster && !mayBendAt(k, point->position)) {
-      continue;
-    }
-    if (grid_.segmentInside(point->position, point->contact, nodes_[k], node_contacts_[k])) {
-      point->seen_nodes.push_back(static_cast<int>(k));
-      point->seen_costs.push_back(segment_cost_.of(point->position, nodes_[k]));
-    }
-  }
   point->node_costs.clear();
+  auto attach = [&](std::size_t k) {
+    if (!seesNode(*point, k)) return;
+    point->seen_nodes.push_back(static_cast<int>(k));
+    point->seen_costs.push_back(segment_cost_.of(point->position, nodes_[k]));
+  };
+  if (on_demand_) {
+    // The nodes seen within the local radius; a point that sees none there looks farther.
+    for (double radius = local_radius_; point->seen_nodes.empty(); radius *= 2.0) {
+      forNodesWithin(point->position, radius, attach);
+      if (radius >= extent()) break;
+    }
+    return;
+  }
+  for (std::size_t k = 0; k < nodes_.size(); ++k) attach(k);
   if (!with_node_costs) return;
   const std::size_t n = nodes_.size();
   point->node_costs.assign(n, kUnreachable);
@@ -207,6 +404,11 @@ bool VisibilityGraph::straightInside(const QueryPoint& a, const QueryPoint& b) c
 
 VisibilityGraph::Route VisibilityGraph::bestRoute(const QueryPoint& a, const QueryPoint& b) const {
   if (a.position == b.position) return {0.0, true, -1, -1};
+  if (on_demand_) {
+    const Search found = search(a, {&b});
+    const bool straight = found.last[0] < 0 && found.costs[0] < kUnreachable;
+    return {found.costs[0], straight, -1, found.last[0]};
+  }
   const std::size_t n = nodes_.size();
   Route via{kUnreachable, false, -1, -1};
   if (!a.node_costs.empty()) {
@@ -272,7 +474,19 @@ std::vector<Point2> VisibilityGraph::routePoints(const QueryPoint& a, const Quer
 }
 
 std::vector<Point2> VisibilityGraph::pathBetween(const QueryPoint& a, const QueryPoint& b) const {
-  return routePoints(a, b, bestRoute(a, b));
+  if (!on_demand_) return routePoints(a, b, bestRoute(a, b));
+  if (a.position == b.position) return {a.position};
+  const Search found = search(a, {&b});
+  const Route route{found.costs[0], found.last[0] < 0 && found.costs[0] < kUnreachable, -1, -1};
+  if (route.straight || route.cost == kUnreachable) return routePoints(a, b, route);
+  std::vector<int> chain;
+  for (int u = found.last[0]; u >= 0; u = found.previous[u]) chain.push_back(u);
+  std::vector<Point2> path = {a.position};
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    if (nodes_[*it] != path.back()) path.push_back(nodes_[*it]);
+  }
+  if (b.position != path.back()) path.push_back(b.position);
+  return path;
 }
 
 bool VisibilityGraph::visible(const Point2& a, const Point2& b) const {
@@ -366,8 +580,15 @@ std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sourc
   auto reversedKnown = [&](std::size_t row, std::size_t s, std::size_t t) {
     return target_slot[s] < columns && source_slot[t] < row;
   };
+  std::vector<const QueryPoint*> target_list;
+  for (std::size_t t : distinct_targets) target_list.push_back(&points[t]);
   parallelFor(distinct_sources.size(), [&](std::size_t row) {
     const std::size_t s = distinct_sources[row];
+    if (on_demand_) {
+      const Search found = search(points[s], target_list);
+      std::copy(found.costs.begin(), found.costs.end(), &distinct_costs[row * columns]);
+      return;
+    }
     for (std::size_t column = 0; column < columns; ++column) {
       const std::size_t t = distinct_targets[column];
       if (!reversedKnown(row, s, t)) {
@@ -375,7 +596,7 @@ std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sourc
       }
     }
   });
-  for (std::size_t row = 0; row < distinct_sources.size(); ++row) {
+  for (std::size_t row = 0; row < distinct_sources.size() && !on_demand_; ++row) {
     const std::size_t s = distinct_sources[row];
     for (std::size_t column = 0; column < columns; ++column) {
       const std::size_t t = distinct_targets[column];
@@ -392,6 +613,48 @@ std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sourc
     for (std::size_t t : target_points) result.push_back(row[target_slot[t]]);
   }
   return result;
+}
+
+VisibilityGraph::LocatedPoints VisibilityGraph::locateAll(const std::vector<Point2>& points) const {
+  LocatedPoints located;
+  located.points_.resize(points.size());
+  parallelForInOrder(points.size(), [&](std::size_t i) {
+    located.points_[i] = locate(points[i]);
+    attachNodes(&located.points_[i], false);
+  });
+  return located;
+}
+
+std::vector<double> VisibilityGraph::costsFrom(const LocatedPoints& points, std::size_t source,
+                                               const std::vector<std::size_t>& targets) const {
+  const QueryPoint& a = points.points_.at(source);
+  std::vector<const QueryPoint*> target_list;
+  for (std::size_t t : targets) target_list.push_back(&points.points_.at(t));
+  if (on_demand_) return search(a, target_list).costs;
+  // a's cost to every node, then bestRoute's sum over each target's seen nodes.
+  const std::size_t n = nodes_.size();
+  std::vector<double> to_node(n, kUnreachable);
+  for (std::size_t i = 0; i < a.seen_nodes.size(); ++i) {
+    const double* row = &node_costs_[static_cast<std::size_t>(a.seen_nodes[i]) * n];
+    for (std::size_t w = 0; w < n; ++w) {
+      to_node[w] = std::min(to_node[w], a.seen_costs[i] + row[w]);
+    }
+  }
+  std::vector<double> costs;
+  costs.reserve(targets.size());
+  for (const QueryPoint* b : target_list) {
+    if (b->position == a.position) {
+      costs.push_back(0.0);
+      continue;
+    }
+    double via = kUnreachable;
+    for (std::size_t i = 0; i < b->seen_nodes.size(); ++i) {
+      via = std::min(via, to_node[b->seen_nodes[i]] + b->seen_costs[i]);
+    }
+    const double straight = segment_cost_.of(a.position, b->position);
+    costs.push_back(via > straight && straightInside(a, *b) ? straight : via);
+  }
+  return costs;
 }
 
 std::size_t VisibilityGraph::addQueryPoint(const Point2& p) {

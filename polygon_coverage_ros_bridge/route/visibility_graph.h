@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <utility>
 #include <vector>
@@ -31,11 +32,19 @@ namespace kinematic_coverage::core {
 /// does that for two point lists.
 class VisibilityGraph {
  public:
-  /// How the all-pairs node costs are computed; both give the cheapest costs, up to rounding.
+  /// How the costs between nodes are found. The all-pairs tables give the cheapest costs, up
+  /// to rounding; on demand, routes are the cheapest over edges of at most localRadius().
   enum class AllPairs {
-    kByDensity,  ///< Dijkstra below kSparseDensity, else Floyd-Warshall
+    kByDensity,  ///< on demand above kOnDemandNodes; else Dijkstra below kSparseDensity,
+                 ///< else Floyd-Warshall
     kFloydWarshall,
     kDijkstra,
+    /// No all-pairs table: edges join only nodes within localRadius(), query points attach
+    /// to the nodes they see within it (farther when they see none), and each query runs
+    /// Dijkstra from its source until its targets are settled. A route is then a real path
+    /// of the area whose cost the query reports exactly, though where the cheapest route
+    /// has a straight stretch longer than the radius between corners it may bend once more.
+    kOnDemand,
   };
 
   /// Builds the graph over `area` (hull and holes in either orientation; may have pinch
@@ -52,12 +61,29 @@ class VisibilityGraph {
   /// chart: 0.8 % of the pairs, 0.37 s by Dijkstra).
   static constexpr double kSparseDensity = 1.0 / 16.0;
 
+  /// Graphs of more nodes than this are searched on demand: an all-pairs table of 8 n^2
+  /// bytes (128 MB here) and its n visibility tests per node stop paying off where most
+  /// routes are short against the map (an archipelago of 2 000 islands: 14 080 nodes, a
+  /// 1.6 GB table).
+  static constexpr std::size_t kOnDemandNodes = 4000;
+
+  /// On-demand graphs: the local radius is the one whose disk holds this many nodes on
+  /// average over the area's bounding box (doubled until the nodes are connected).
+  static constexpr double kLocalRadiusNodes = 200.0;
+
   /// The number of nodes and their positions.
   std::size_t nodeCount() const { return nodes_.size(); }
   const Point2& node(std::size_t k) const { return nodes_[k]; }
 
-  /// The precomputed cheapest cost from node u to node w (infinity when unreachable).
-  double nodeCost(std::size_t u, std::size_t w) const { return node_costs_[u * nodes_.size() + w]; }
+  /// The cheapest cost from node u to node w (infinity when unreachable): precomputed, or
+  /// searched on demand.
+  double nodeCost(std::size_t u, std::size_t w) const;
+
+  /// True when routes are searched on demand (AllPairs::kOnDemand).
+  bool onDemand() const { return on_demand_; }
+
+  /// The longest edge of an on-demand graph (infinity with an all-pairs table).
+  double localRadius() const { return local_radius_; }
 
   /// The number of node pairs that see each other (the graph's edges).
   std::size_t edgeCount() const;
@@ -88,6 +114,18 @@ class VisibilityGraph {
   /// targets.size()); each equals cost(source, target).
   std::vector<double> costMatrix(const std::vector<Point2>& sources,
                                  const std::vector<Point2>& targets) const;
+
+  /// Points located once, with the nodes each sees, for one-to-many costs (costsFrom).
+  class LocatedPoints;
+
+  /// Locates every point (on every hardware thread). Throws InvalidInputError for a point
+  /// outside the area.
+  LocatedPoints locateAll(const std::vector<Point2>& points) const;
+
+  /// The cost from located point `source` to each of `targets` (indices into `points`), each
+  /// equal to cost() between the points, up to rounding.
+  std::vector<double> costsFrom(const LocatedPoints& points, std::size_t source,
+                                const std::vector<std::size_t>& targets) const;
 
   /// Registers a query point (for queryCost and queryPath) and returns its index.
   std::size_t addQueryPoint(const Point2& p);
@@ -120,6 +158,31 @@ class VisibilityGraph {
     int last = -1;
   };
 
+  /// An on-demand search's result: per target its cost and the last node of its route
+  /// (-1: straight), and per node the one before it on its cheapest route (-1: the source).
+  struct Search {
+    std::vector<double> costs;
+    std::vector<int> last;
+    std::vector<int> previous;
+  };
+
+  /// On-demand graphs: Dijkstra from a's seen nodes until every target's cost is settled.
+  Search search(const QueryPoint& a, const std::vector<const QueryPoint*>& targets) const;
+  /// On-demand graphs: edges between visible nodes within `radius`.
+  void buildLocalEdges(double radius);
+  /// True when every node is reachable from node 0 over the edges.
+  bool nodesConnected() const;
+  /// Buckets nodes in square cells of `cell` metres, for forNodesWithin.
+  void indexNodes(double cell);
+  /// Calls visit(k) for every node k within `radius` of p, in a fixed order.
+  template <typename Visit>
+  void forNodesWithin(const Point2& p, double radius, Visit visit) const;
+  /// The length beyond which a radius reaches every node from every point of the area.
+  double extent() const;
+  /// True when a route from `point` may bend at node k: it sees k and does not run on into
+  /// k's wall.
+  bool seesNode(const QueryPoint& point, std::size_t k) const;
+
   /// Turns node_costs_, the segment costs of visible node pairs, into the cheapest costs
   /// between all pairs of nodes.
   void allPairsCosts(AllPairs method);
@@ -151,6 +214,22 @@ class VisibilityGraph {
   std::vector<double> node_costs_;  ///< nodeCount() x nodeCount(), row-major
   std::vector<std::vector<std::pair<int, double>>> neighbours_;  ///< visible nodes, costs
   std::vector<QueryPoint> query_points_;
+  bool on_demand_ = false;
+  double local_radius_ = std::numeric_limits<double>::infinity();
+  Point2 index_origin_ = Point2::Zero();
+  double index_cell_ = 1.0;
+  std::size_t index_columns_ = 0;
+  std::size_t index_rows_ = 0;
+  std::vector<std::vector<int>> index_buckets_;  ///< node indices per cell, row-major
+};
+
+class VisibilityGraph::LocatedPoints {
+ public:
+  std::size_t size() const { return points_.size(); }
+
+ private:
+  friend class VisibilityGraph;
+  std::vector<QueryPoint> points_;
 };
 
 class VisibilityGraph::PointCache {

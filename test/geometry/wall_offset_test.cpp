@@ -11,7 +11,9 @@
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
+#include "polygon_coverage_ros_bridge/geometry/region_intersection.h"
 #include "polygon_coverage_ros_bridge/validation/polygon_cleaner.h"
+#include "test/route/route_test_maps.h"
 #include "test/support/hard_map_generator.h"
 #include "test/support/random_polygons.h"
 #include "test/support/test_shapes.h"
@@ -406,6 +408,63 @@ TEST(WallOffset, ExactOffsetPartsHoldThePointsAtLeastTheWallDistanceFromTheWalls
     }
   }
   EXPECT_GT(missed_by_mitred, 0u);
+}
+
+/// The area of `parts`, and of the parts of `area` in [low, high] by the exact-kernel
+/// intersection.
+double totalArea(const std::vector<PolygonWithHoles>& parts) {
+  double total = 0.0;
+  for (const PolygonWithHoles& part : parts) total += area(part);
+  return total;
+}
+
+// Clipping to a box with Clipper (after cutting the rings down to a slightly larger box)
+// gives the exact-kernel intersection's parts: the same number and area, every vertex
+// inside the box; on jagged stars whose spikes cross the box many times, maps of holes cut
+// by it, boxes holding a whole hole, beyond the hull, and inside a hole.
+TEST(ClipToBox, AgreesWithTheExactIntersection) {
+  std::mt19937 rng(404);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int crossings = 0;
+  for (int map_index = 0; map_index < 24; ++map_index) {
+    const bool jagged = map_index % 2 == 1;
+    const PolygonWithHoles map =
+        jagged ? testing::jaggedStarMap(rng, 300, 40.0) : testing::randomMap(rng, 100.0, 12, 1.0);
+    const double offset = jagged ? -100.0 : 0.0;  // the jagged map is centred at the origin
+    for (int box_index = 0; box_index < 6; ++box_index) {
+      const Point2 centre(offset - 20.0 + 140.0 * unit(rng), offset - 20.0 + 140.0 * unit(rng));
+      const Point2 half(2.0 + 30.0 * unit(rng), 2.0 + 30.0 * unit(rng));
+      const Point2 low = centre - half;
+      const Point2 high = centre + half;
+      const PolygonWithHoles box{{low, {high.x(), low.y()}, high, {low.x(), high.y()}}, {}};
+      const std::vector<PolygonWithHoles> exact = intersectWithRegions(map, {box}, 0.0);
+      const std::vector<PolygonWithHoles> clipped = clipToBox(map, low, high);
+      SCOPED_TRACE("map " + std::to_string(map_index) + " box " + std::to_string(box_index));
+      EXPECT_EQ(clipped.size(), exact.size());
+      EXPECT_NEAR(totalArea(clipped), totalArea(exact), 1e-6 * (1.0 + totalArea(exact)));
+      crossings += exact.size() > 1;
+      for (const PolygonWithHoles& part : clipped) {
+        EXPECT_GT(signedArea(part.hull), 0.0);
+        for (const Point2& p : part.hull) {
+          EXPECT_TRUE((p.array() >= low.array() - 1e-9).all() &&
+                      (p.array() <= high.array() + 1e-9).all())
+              << p.transpose();
+        }
+        for (const Ring& hole : part.holes) EXPECT_LT(signedArea(hole), 0.0);
+      }
+    }
+  }
+  EXPECT_GT(crossings, 5);  // boxes that the hull or the holes cut into several parts
+  // Beyond the hull: nothing.
+  const PolygonWithHoles square{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                                {{{4, 4}, {4, 6}, {6, 6}, {6, 4}}}};
+  EXPECT_TRUE(clipToBox(square, {20, 20}, {30, 30}).empty());
+  // Inside the hole: nothing; around it: the ring between.
+  EXPECT_TRUE(clipToBox(square, {4.5, 4.5}, {5.5, 5.5}).empty());
+  const std::vector<PolygonWithHoles> around = clipToBox(square, {3, 3}, {7, 7});
+  ASSERT_EQ(around.size(), 1u);
+  EXPECT_EQ(around[0].holes.size(), 1u);
+  EXPECT_NEAR(area(around[0]), 16.0 - 4.0, 1e-9);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "coverage_system/mission/trajectory_coverage.h"
 #include "coverage_system/parameters/stage_options.h"
+#include "coverage_system/planner/lazy_transition_costs.h"
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
@@ -603,6 +604,31 @@ TEST(CoveragePlanner, RandomMapsAreCoveredInsideTheOffsetArea) {
     expectValidPlan(map, plan, parameters, start, goal);
   }
   EXPECT_GE(planned, 180);
+}
+
+// The paths for charts of thousands of cells, reached on a lake chart by lowering their
+// thresholds: transitions routed between nearby cells only (the others estimated until a
+// tour uses them) and a visibility graph searched on demand give a valid plan that sees
+// what the all-pairs one sees, at a time cost within 2 % of it.
+TEST(CoveragePlanner, LazyTransitionsAndOnDemandRoutesPlanAsTheAllPairsOnesDo) {
+  const testing::HardMap map = testing::HardMapGenerator::lakeChart(0, 500, 10);
+  PlannerParameters parameters = map.mission.parameters;
+  parameters.smoothing = false;
+  PlanningOptions options = planningOptionsOf(parameters);
+  const CoveragePlan dense =
+      CoveragePlanner(options).plan(map.mission.polygon, map.mission.start, map.mission.goal);
+  options.dense_transition_nodes = 0;
+  options.dense_route_corners = 0;
+  const CoveragePlan lazy =
+      CoveragePlanner(options).plan(map.mission.polygon, map.mission.start, map.mission.goal);
+  expectValidPlan(map.mission.polygon, lazy, parameters, map.mission.start, map.mission.goal);
+  EXPECT_NE(stageSummary(lazy, "transitions").find("routed, between nearby cells"),
+            std::string::npos);
+  EXPECT_EQ(stageSummary(dense, "transitions").find("nearby"), std::string::npos);
+  ASSERT_GT(lazy.cells.size(), LazyTransitionCosts::kCandidateCells + 1u);
+  EXPECT_LE(lazy.time_cost_s, 1.02 * dense.time_cost_s);
+  EXPECT_GE(lazy.time_cost_s, 0.98 * dense.time_cost_s);
+  EXPECT_FALSE(lazy.gtsp_time_capped);
 }
 
 }  // namespace

@@ -96,6 +96,13 @@ TEST(PlanningLimits, TheMemoryEstimateGrowsWithTheSquaresAndRefusesWithWhatToCha
               8.5 * 9000.0 * 9000.0 + 8.0 * 8002.0 * 9000.0 + 24.0 * 8002.0 * 8002.0 +
                   24.0 * 2000.0 * 2000.0,
               1.0);
+  // A graph searched on demand and lazy transitions: linear in V, one n^2 matrix.
+  PlanSize chart = large;
+  chart.routes_on_demand = true;
+  chart.lazy_transitions = true;
+  EXPECT_NEAR(planMemoryEstimateBytes(chart) - kMemoryBaselineBytes,
+              kOnDemandBytesPerCorner * 9000.0 + 8.0 * 8002.0 * 8002.0 + 24.0 * 2000.0 * 2000.0,
+              1.0);
   EXPECT_NO_THROW(checkMemoryEstimate(large, 4096.0, DecompositionType::kBoustrophedon));
   try {
     checkMemoryEstimate(large, 1000.0, DecompositionType::kTrapezoidal);

@@ -1,5 +1,6 @@
 kc_add_gtest(test_planner
   test/planner/coverage_planner_test.cpp
+  test/planner/lazy_transition_costs_test.cpp
   test/planner/mission_plans_test.cpp
   test/planner/plan_properties.cpp
   test/planner/planning_limits_test.cpp

@@ -7,7 +7,9 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <numeric>
 #include <random>
+#include <utility>
 
 #include "coverage_system/parameters/stage_options.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -526,6 +528,127 @@ TEST(VisibilityGraph, EndsWithinTheToleranceOfAConvexCornerSeeEachOtherAndAlongI
   EXPECT_TRUE(std::isfinite(graph.cost(inside_corner, beyond_corner)));
   EXPECT_NEAR(graph.cost(beyond_corner, next_corner), (next_corner - beyond_corner).norm(), 1e-9);
   EXPECT_NEAR(graph.cost(next_corner, beyond_corner), (next_corner - beyond_corner).norm(), 1e-9);
+}
+
+/// Checks an on-demand graph of `area` against the all-pairs one: every route is a path
+/// inside the area whose cost it reports, at least the cheapest cost; the point cache, the
+/// cost matrix and costsFrom agree with it. Returns the ratio of the routes' total cost to
+/// the cheapest routes' total.
+double checkOnDemandRoutes(const PolygonWithHoles& area, const std::string& cost_function,
+                           std::mt19937& rng) {
+  const SegmentCost segment_cost = costOf(cost_function);
+  const VisibilityGraph exact(area, segment_cost, VisibilityGraph::AllPairs::kDijkstra);
+  const VisibilityGraph local(area, segment_cost, VisibilityGraph::AllPairs::kOnDemand);
+  EXPECT_TRUE(local.onDemand());
+  EXPECT_FALSE(exact.onDemand());
+  EXPECT_TRUE(std::isinf(exact.localRadius()));
+  EXPECT_GT(local.localRadius(), 0.0);
+  EXPECT_EQ(local.nodeCount(), exact.nodeCount());
+  EXPECT_LE(local.edgeCount(), exact.edgeCount());
+  const std::vector<Point2> points = testing::queryPoints(rng, area, 12, 8, 4);
+  const std::vector<double> matrix = local.costMatrix(points, points);
+  const VisibilityGraph::LocatedPoints located = local.locateAll(points);
+  std::vector<std::size_t> every(points.size());
+  std::iota(every.begin(), every.end(), 0);
+  VisibilityGraph::PointCache cache;
+  double total = 0.0;
+  double cheapest_total = 0.0;
+  const double scale = 1e-9 * 200.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::vector<double> row = local.costsFrom(located, i, every);
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const Point2& a = points[i];
+      const Point2& b = points[j];
+      const double cost = local.cost(a, b);
+      const std::vector<Point2> path = local.shortestPath(a, b);
+      EXPECT_EQ(path.front(), a);
+      EXPECT_EQ(path.back(), b);
+      expectPathInside(area, path);
+      EXPECT_NEAR(segment_cost.pathCost(path), cost, scale * (1 + cost)) << cost_function;
+      EXPECT_EQ(local.cost(a, b, &cache), cost);
+      EXPECT_EQ(local.shortestPath(a, b, &cache), path);
+      EXPECT_NEAR(matrix[i * points.size() + j], cost, scale * (1 + cost));
+      EXPECT_NEAR(row[j], cost, scale * (1 + cost));
+      const double cheapest = exact.cost(a, b);
+      EXPECT_GE(cost, cheapest - scale * (1 + cost)) << a.transpose() << " to " << b.transpose();
+      total += cost;
+      cheapest_total += cheapest;
+    }
+  }
+  for (std::size_t u = 0; u < local.nodeCount(); u += 5) {
+    for (std::size_t w = 0; w < local.nodeCount(); w += 3) {
+      const double cheapest = exact.cost(exact.node(u), exact.node(w));
+      EXPECT_GE(local.nodeCost(u, w), cheapest - scale * (1 + cheapest));
+    }
+  }
+  return total / cheapest_total;
+}
+
+// On demand, routes are real paths at least as dear as the cheapest, and on maps of
+// hundreds of corners within a percent of them in total (the local radius holds about
+// kLocalRadiusNodes nodes).
+TEST(VisibilityGraph, OnDemandRoutesArePathsOfTheirCostNearTheCheapest) {
+  std::mt19937 rng(2027);
+  for (int map_index = 0; map_index < 6; ++map_index) {
+    const PolygonWithHoles area = map_index % 2 == 0
+                                      ? testing::convexHolesMap(rng, 200.0, 80, 4, 7, 0.5)
+                                      : testing::randomMap(rng, 100.0, 40, 1.0);
+    SCOPED_TRACE("map " + std::to_string(map_index));
+    const std::string cost_function = map_index % 3 == 0 ? "time" : "distance";
+    const double ratio = checkOnDemandRoutes(area, cost_function, rng);
+    EXPECT_LE(ratio, 1.01) << cost_function;
+  }
+}
+
+// Two groups of holes far apart along a corridor, with a wall between them that no
+// straight line passes: the local radius of the group's spacing leaves the graph in two
+// parts, so it grows until the nodes are joined, and every route is found.
+TEST(VisibilityGraph, OnDemandRadiusGrowsUntilTheNodesAreJoined) {
+  PolygonWithHoles area;
+  area.hull = {{0, 0}, {1000, 0}, {1000, 40}, {0, 40}};
+  auto square = [](double x, double y, double half) {
+    return Ring{
+        {x - half, y - half}, {x - half, y + half}, {x + half, y + half}, {x + half, y - half}};
+  };
+  for (int k = 0; k < 6; ++k) {
+    area.holes.push_back(square(10.0 + 6.0 * k, 10.0, 1.0));
+    area.holes.push_back(square(10.0 + 6.0 * k, 30.0, 1.0));
+    area.holes.push_back(square(960.0 + 6.0 * k, 10.0, 1.0));
+    area.holes.push_back(square(960.0 + 6.0 * k, 30.0, 1.0));
+  }
+  area.holes.push_back({{500, 1}, {500, 39}, {502, 39}, {502, 1}});  // the wall
+  const SegmentCost distance = costOf("distance");
+  const VisibilityGraph local(area, distance, VisibilityGraph::AllPairs::kOnDemand);
+  const VisibilityGraph exact(area, distance);
+  EXPECT_GT(local.localRadius(), 400.0);
+  for (const auto& [a, b] : std::vector<std::pair<Point2, Point2>>{
+           {{5, 20}, {995, 20}}, {{25, 10 - 2}, {975, 30 + 2}}, {{1, 1}, {999, 39}}}) {
+    const std::vector<Point2> path = local.shortestPath(a, b);
+    expectPathInside(area, path);
+    EXPECT_NEAR(distance.pathCost(path), local.cost(a, b), 1e-9);
+    EXPECT_NEAR(local.cost(a, b), exact.cost(a, b), 1e-6 * exact.cost(a, b));
+  }
+}
+
+// A large graph is searched on demand by default; a small one keeps its table.
+TEST(VisibilityGraph, ByDensityChoosesOnDemandForLargeGraphsOnly) {
+  std::mt19937 rng(12);
+  const PolygonWithHoles small = testing::convexHolesMap(rng, 100.0, 15, 4, 7, 1.0);
+  EXPECT_FALSE(VisibilityGraph(small, costOf("distance")).onDemand());
+  PolygonWithHoles large;
+  large.hull = {{0, 0}, {2000, 0}, {2000, 2000}, {0, 2000}};
+  for (int row = 0; row < 40; ++row) {
+    for (int column = 0; column < 30; ++column) {
+      const double x = 20.0 + 50.0 * column;
+      const double y = 20.0 + 49.0 * row;
+      large.holes.push_back({{x, y}, {x, y + 4}, {x + 4, y + 4}, {x + 4, y}});
+    }
+  }
+  const VisibilityGraph graph(large, costOf("distance"));
+  ASSERT_GT(graph.nodeCount(), VisibilityGraph::kOnDemandNodes);
+  EXPECT_TRUE(graph.onDemand());
+  const std::vector<Point2> path = graph.shortestPath({1, 1}, {1999, 1999});
+  expectPathInside(large, path);
 }
 
 }  // namespace
