@@ -131,10 +131,11 @@ double tourCost(const std::string& output) {
 }
 
 /// Plans the chart's mission again with kComparisonEffort times the generalized TSP's effort;
-/// prints the two tours' costs and returns their ratio (0 when either run failed).
+/// returns the ratio of the two tours' costs (0 when either run failed), and in `line` both
+/// costs.
 double effortRatio(const std::string& tool, const std::string& mission, const std::string& dir,
                    std::vector<std::string> settings, double timeout_s, const std::string& name,
-                   double tour_cost) {
+                   double tour_cost, std::string* line) {
   settings.push_back("gtsp_effort=" + std::to_string(kComparisonEffort));
   const kinematic_coverage::bench::CoverageToolRun run =
       kinematic_coverage::bench::runPlan(tool, mission, dir, settings, timeout_s);
@@ -144,10 +145,12 @@ double effortRatio(const std::string& tool, const std::string& mission, const st
   for (const auto& [stage, seconds] : kinematic_coverage::bench::stageTimes(run.output)) {
     if (stage == "solve") solve_s = seconds;
   }
-  std::printf(
-      "effort: %s: tour cost %.1f, %.1f with %.0f times the effort (solve %.1f s): "
-      "ratio %.4f\n",
-      name.c_str(), tour_cost, longer, kComparisonEffort, solve_s, ratio);
+  char text[256];
+  std::snprintf(text, sizeof(text),
+                "effort: %s: tour cost %.1f, %.1f with %.0f times the effort (solve %.1f s): "
+                "ratio %.4f",
+                name.c_str(), tour_cost, longer, kComparisonEffort, solve_s, ratio);
+  *line = text;
   return ratio;
 }
 
@@ -239,6 +242,7 @@ int main(int argc, char** argv) {
   std::set<std::string> run_charts;
   std::vector<double> estimate_ratios;  // estimate / peak of the planned charts
   std::vector<double> effort_ratios;    // tour cost over the one at ten times the effort
+  std::vector<std::string> effort_lines;
   for (const Chart& size : sizes) {
     for (int seed = 0; seed < seeds; ++seed) {
       const HardMap map = size.generate(seed);
@@ -293,8 +297,10 @@ int main(int argc, char** argv) {
                  std::max(worst.peak_mb, run.peak_mb)};
       }
       if (run.finished && run.exit_status == 0 && size.kind != "lake") {
+        effort_lines.emplace_back();
         effort_ratios.push_back(effortRatio(tool, mission, out + "/" + name + "_effort", settings,
-                                            timeout_s, name, tourCost(run.output)));
+                                            timeout_s, name, tourCost(run.output),
+                                            &effort_lines.back()));
       }
       std::ostringstream detail;
       detail << name << ":";
@@ -304,6 +310,8 @@ int main(int argc, char** argv) {
   }
   std::printf("\n");
   for (const std::string& detail : details) std::printf("    %s\n", detail.c_str());
+  if (!effort_lines.empty()) std::printf("\n");
+  for (const std::string& line : effort_lines) std::printf("%s\n", line.c_str());
   std::printf(
       "\nGrowth exponents over the planned lake charts (least-squares slope of log value against "
       "log "

@@ -18,14 +18,14 @@ namespace kinematic_coverage::core {
 /// routing every pattern end to every pattern start (n^2 routes) would dominate planning.
 /// Exact costs (routes through the visibility graph, Thesis section 3.1) join each cell's
 /// patterns to those of its kCandidateCells nearest cells, the start to every pattern and
-/// every pattern to the goal. Every other edge is estimated from above by its cheapest
-/// route through one of kLandmarks landmarks (points spread over the map), which a tour
-/// takes only where even that pays. makeExact then prices the estimated edges that a tour
-/// uses and improves the tour again by local search where a price changed, until the tour
-/// uses none: its cost is exact, and it is locally optimal on the costs known (the candidate
-/// sets of LKH, with the other costs computed lazily). An estimate from below (the straight
-/// segment) lured the search into round after round of pricing: 46 000 edges on a rough
-/// shore of 419 cells, 20 s.
+/// every pattern to the goal. Every other edge is estimated by its route through the best
+/// of kLandmarks landmarks (points spread over the map): a real path, most often dearer than
+/// the edge's own route, which a tour takes only where even that pays. makeExact then prices the
+/// estimated edges that a tour uses and improves the tour again by local search where a price
+/// changed, until the tour uses none: its cost is exact, and it is locally optimal on the costs
+/// known (the candidate sets of LKH, with the other costs computed lazily). An estimate from below
+/// (the straight segment) lured the search into round after round of pricing: 46 000 edges on a
+/// rough shore of 419 cells, 20 s.
 class LazyTransitionCosts {
  public:
   /// Nearest cells whose patterns a cell's patterns are routed to exactly (either way).

@@ -17,6 +17,12 @@ class IndexedMinHeap {
 
   bool empty() const { return entries_.empty(); }
 
+  /// Removes every item, in the time of the items queued.
+  void clear() {
+    for (const Entry& entry : entries_) slot_[static_cast<std::size_t>(entry.item)] = kAbsent;
+    entries_.clear();
+  }
+
   /// Inserts `item` with `cost`, or lowers its cost to `cost` when it is queued with a
   /// higher one (a higher cost for a queued item is ignored).
   void pushOrDecrease(int item, double cost) {

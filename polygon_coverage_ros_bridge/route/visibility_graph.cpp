@@ -50,7 +50,7 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
     indexNodes(radius);
     while (true) {
       buildLocalEdges(radius);
-      if (radius >= extent() || nodesConnected()) break;
+      if (radius >= extent_ || nodesConnected()) break;
       radius *= 2.0;
     }
     local_radius_ = radius;
@@ -85,6 +85,7 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
 void VisibilityGraph::indexNodes(double cell) {
   const Eigen::AlignedBox2d box = boundingBox(grid_.polygon().hull);
   index_origin_ = box.min();
+  extent_ = box.diagonal().norm();
   index_cell_ = cell;
   index_columns_ = static_cast<std::size_t>(box.sizes().x() / cell) + 1;
   index_rows_ = static_cast<std::size_t>(box.sizes().y() / cell) + 1;
@@ -119,10 +120,6 @@ void VisibilityGraph::forNodesWithin(const Point2& p, double radius, Visit visit
       }
     }
   }
-}
-
-double VisibilityGraph::extent() const {
-  return boundingBox(grid_.polygon().hull).diagonal().norm();
 }
 
 void VisibilityGraph::buildLocalEdges(double radius) {
@@ -170,61 +167,112 @@ double VisibilityGraph::nodeCost(std::size_t u, std::size_t w) const {
   return search(from, {&to}).costs[0];
 }
 
-VisibilityGraph::Search VisibilityGraph::search(
-    const QueryPoint& a, const std::vector<const QueryPoint*>& targets) const {
-  const std::size_t n = nodes_.size();
-  Search result;
-  result.costs.assign(targets.size(), kUnreachable);
-  result.last.assign(targets.size(), -1);
-  result.previous.assign(n, -1);
+namespace {
+
+/// Per-thread working arrays of on-demand searches, sized to the graph and left clean after
+/// every search (only what it touched is reset): a search costs what it visits, not the
+/// node count.
+struct SearchScratch {
+  std::vector<double> settled;
+  std::vector<int> previous;
+  std::vector<int> head;
+  IndexedMinHeap queue{0};
+  std::vector<int> touched;
+
+  void fit(std::size_t n) {
+    if (settled.size() == n) return;
+    settled.assign(n, std::numeric_limits<double>::infinity());
+    previous.assign(n, -1);
+    head.assign(n, -1);
+    queue = IndexedMinHeap(n);
+    touched.clear();
+  }
+  void reset() {
+    for (int u : touched) {
+      settled[u] = std::numeric_limits<double>::infinity();
+      previous[u] = -1;
+      head[u] = -1;
+    }
+    touched.clear();
+    queue.clear();
+  }
+};
+
+}  // namespace
+
+std::vector<std::size_t> VisibilityGraph::straightTargets(
+    const QueryPoint& a, const std::vector<const QueryPoint*>& targets, Search* result) const {
+  result->costs.assign(targets.size(), kUnreachable);
+  result->last.assign(targets.size(), -1);
+  std::vector<std::size_t> open;
   for (std::size_t t = 0; t < targets.size(); ++t) {
     const QueryPoint& b = *targets[t];
     if (b.position == a.position) {
-      result.costs[t] = 0.0;
+      result->costs[t] = 0.0;
     } else if (straightInside(a, b)) {
-      result.costs[t] = segment_cost_.of(a.position, b.position);
+      result->costs[t] = segment_cost_.of(a.position, b.position);
+    } else {
+      open.push_back(t);
     }
   }
-  // The targets that see each node, as linked lists over one array.
+  return open;
+}
+
+VisibilityGraph::Search VisibilityGraph::search(const QueryPoint& a,
+                                                const std::vector<const QueryPoint*>& targets,
+                                                bool with_route) const {
+  Search result;
+  const std::vector<std::size_t> open = straightTargets(a, targets, &result);
+  if (open.empty()) return result;
+  thread_local SearchScratch thread_scratch;
+  SearchScratch& scratch = thread_scratch;
+  scratch.fit(nodes_.size());
+  // Each node is listed once, when first given a head or a cost, for the reset.
+  auto touch = [&scratch](int u) {
+    if (scratch.head[u] < 0 && scratch.settled[u] == kUnreachable) scratch.touched.push_back(u);
+  };
+  // The open targets that see each node, as linked lists over one array.
   struct Entry {
-    int target;
+    std::size_t target;
     double cost;
     int next;
   };
-  std::vector<int> head(n, -1);
   std::vector<Entry> entries;
-  for (std::size_t t = 0; t < targets.size(); ++t) {
+  for (std::size_t t : open) {
     const QueryPoint& b = *targets[t];
     for (std::size_t i = 0; i < b.seen_nodes.size(); ++i) {
       const int u = b.seen_nodes[i];
-      entries.push_back({static_cast<int>(t), b.seen_costs[i], head[u]});
-      head[u] = static_cast<int>(entries.size()) - 1;
+      touch(u);
+      entries.push_back({t, b.seen_costs[i], scratch.head[u]});
+      scratch.head[u] = static_cast<int>(entries.size()) - 1;
     }
   }
-  std::vector<double> settled(n, kUnreachable);
-  IndexedMinHeap queue(n);
   for (std::size_t i = 0; i < a.seen_nodes.size(); ++i) {
     const int u = a.seen_nodes[i];
-    if (a.seen_costs[i] < settled[u]) {
-      settled[u] = a.seen_costs[i];
-      queue.pushOrDecrease(u, a.seen_costs[i]);
+    if (a.seen_costs[i] < scratch.settled[u]) {
+      touch(u);
+      scratch.settled[u] = a.seen_costs[i];
+      scratch.queue.pushOrDecrease(u, a.seen_costs[i]);
     }
   }
-  auto highestCost = [&result] {
-    return *std::max_element(result.costs.begin(), result.costs.end());
+  auto highestOpenCost = [&] {
+    double highest = 0.0;
+    for (std::size_t t : open) highest = std::max(highest, result.costs[t]);
+    return highest;
   };
-  double bound = targets.empty() ? 0.0 : highestCost();
-  // Every target is settled once the queue's least cost reaches the highest target cost; the
-  // bound is refreshed whenever it is reached, and every so often as targets get cheaper.
+  double bound = kUnreachable;
+  // Every open target is settled once the queue's least cost reaches the highest of their
+  // costs; the bound is refreshed whenever it is reached, and every so often as they get
+  // cheaper.
   constexpr std::size_t kBoundRefresh = 64;
-  for (std::size_t pops = 1; !queue.empty(); ++pops) {
-    const int u = queue.popMin();
-    const double cost = settled[u];
+  for (std::size_t pops = 1; !scratch.queue.empty(); ++pops) {
+    const int u = scratch.queue.popMin();
+    const double cost = scratch.settled[u];
     if (cost >= bound || pops % kBoundRefresh == 0) {
-      bound = highestCost();
+      bound = highestOpenCost();
       if (cost >= bound) break;
     }
-    for (int e = head[u]; e >= 0; e = entries[e].next) {
+    for (int e = scratch.head[u]; e >= 0; e = entries[e].next) {
       const double through = cost + entries[e].cost;
       if (through < result.costs[entries[e].target]) {
         result.costs[entries[e].target] = through;
@@ -233,13 +281,19 @@ VisibilityGraph::Search VisibilityGraph::search(
     }
     for (const auto& [w, c] : neighbours_[u]) {
       const double through = cost + c;
-      if (through < settled[w]) {
-        settled[w] = through;
-        result.previous[w] = u;
-        queue.pushOrDecrease(w, through);
+      if (through < scratch.settled[w]) {
+        touch(w);
+        scratch.settled[w] = through;
+        scratch.previous[w] = u;
+        scratch.queue.pushOrDecrease(w, through);
       }
     }
   }
+  if (with_route && !targets.empty()) {
+    for (int u = result.last[0]; u >= 0; u = scratch.previous[u]) result.route.push_back(u);
+    std::reverse(result.route.begin(), result.route.end());
+  }
+  scratch.reset();
   return result;
 }
 
@@ -381,7 +435,7 @@ void VisibilityGraph::attachNodes(QueryPoint* point, bool with_node_costs) const
     // The nodes seen within the local radius; a point that sees none there looks farther.
     for (double radius = local_radius_; point->seen_nodes.empty(); radius *= 2.0) {
       forNodesWithin(point->position, radius, attach);
-      if (radius >= extent()) break;
+      if (radius >= extent_) break;
     }
     return;
   }
@@ -476,14 +530,12 @@ std::vector<Point2> VisibilityGraph::routePoints(const QueryPoint& a, const Quer
 std::vector<Point2> VisibilityGraph::pathBetween(const QueryPoint& a, const QueryPoint& b) const {
   if (!on_demand_) return routePoints(a, b, bestRoute(a, b));
   if (a.position == b.position) return {a.position};
-  const Search found = search(a, {&b});
+  const Search found = search(a, {&b}, true);
   const Route route{found.costs[0], found.last[0] < 0 && found.costs[0] < kUnreachable, -1, -1};
   if (route.straight || route.cost == kUnreachable) return routePoints(a, b, route);
-  std::vector<int> chain;
-  for (int u = found.last[0]; u >= 0; u = found.previous[u]) chain.push_back(u);
   std::vector<Point2> path = {a.position};
-  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
-    if (nodes_[*it] != path.back()) path.push_back(nodes_[*it]);
+  for (int u : found.route) {
+    if (nodes_[u] != path.back()) path.push_back(nodes_[u]);
   }
   if (b.position != path.back()) path.push_back(b.position);
   return path;

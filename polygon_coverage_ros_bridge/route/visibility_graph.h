@@ -159,26 +159,32 @@ class VisibilityGraph {
   };
 
   /// An on-demand search's result: per target its cost and the last node of its route
-  /// (-1: straight), and per node the one before it on its cheapest route (-1: the source).
+  /// (-1: straight), and (when asked for) the nodes of the first target's route in order.
   struct Search {
     std::vector<double> costs;
     std::vector<int> last;
-    std::vector<int> previous;
+    std::vector<int> route;
   };
 
-  /// On-demand graphs: Dijkstra from a's seen nodes until every target's cost is settled.
-  Search search(const QueryPoint& a, const std::vector<const QueryPoint*>& targets) const;
+  /// Gives the targets at a's position or seen straight from a their cost (a straight
+  /// segment inside is the cheapest way: SegmentCost is subadditive), the others infinity;
+  /// returns the others, which search() looks for.
+  std::vector<std::size_t> straightTargets(const QueryPoint& a,
+                                           const std::vector<const QueryPoint*>& targets,
+                                           Search* result) const;
+  /// On-demand graphs: Dijkstra from a's seen nodes until every target that a does not see
+  /// has its cost settled; with `with_route`, the first target's route too.
+  Search search(const QueryPoint& a, const std::vector<const QueryPoint*>& targets,
+                bool with_route = false) const;
   /// On-demand graphs: edges between visible nodes within `radius`.
   void buildLocalEdges(double radius);
   /// True when every node is reachable from node 0 over the edges.
   bool nodesConnected() const;
-  /// Buckets nodes in square cells of `cell` metres, for forNodesWithin.
+  /// Buckets nodes in square cells of `cell` metres, for forNodesWithin; sets extent_.
   void indexNodes(double cell);
   /// Calls visit(k) for every node k within `radius` of p, in a fixed order.
   template <typename Visit>
   void forNodesWithin(const Point2& p, double radius, Visit visit) const;
-  /// The length beyond which a radius reaches every node from every point of the area.
-  double extent() const;
   /// True when a route from `point` may bend at node k: it sees k and does not run on into
   /// k's wall.
   bool seesNode(const QueryPoint& point, std::size_t k) const;
@@ -217,6 +223,8 @@ class VisibilityGraph {
   bool on_demand_ = false;
   double local_radius_ = std::numeric_limits<double>::infinity();
   Point2 index_origin_ = Point2::Zero();
+  /// The length beyond which a radius reaches every node from every point of the area.
+  double extent_ = 0.0;
   double index_cell_ = 1.0;
   std::size_t index_columns_ = 0;
   std::size_t index_rows_ = 0;

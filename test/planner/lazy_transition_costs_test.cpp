@@ -83,7 +83,8 @@ LazyCase randomCase(unsigned seed, int cells, const SegmentCost& segment_cost,
 constexpr double kTolerance = 1e-9;
 
 // Edges between nearby cells, from the start and into the goal cost their route exactly;
-// every other edge is estimated from above (a route through a landmark).
+// every other edge is estimated by a route through a landmark: never below the straight segment,
+// and under the distance cost never below the edge's own route.
 TEST(LazyTransitionCosts, NearbyEdgesAreExactAndTheOthersEstimatedByAPath) {
   for (unsigned seed : {1u, 2u, 3u, 4u}) {
     const bool distance = seed % 2 == 0;
