@@ -6,6 +6,12 @@
 
 namespace kinematic_coverage::core {
 
+Eigen::AlignedBox2d boundingBox(const std::vector<Point2>& points) {
+  Eigen::AlignedBox2d box;
+  for (const Point2& p : points) box.extend(p);
+  return box;
+}
+
 double signedArea(const Ring& ring) {
   double twice_area = 0.0;
   for (std::size_t i = 0, n = ring.size(); i < n; ++i) {

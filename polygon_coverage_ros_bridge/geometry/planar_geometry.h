@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Geometry>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
@@ -23,6 +24,9 @@ constexpr double kClearanceTolerance = 1e-3;
 inline bool keepsClearance(double distance_m, double clearance_m) {
   return distance_m >= clearance_m - kClearanceTolerance;
 }
+
+/// The axis-aligned bounds of the points (empty for none).
+Eigen::AlignedBox2d boundingBox(const std::vector<Point2>& points);
 
 /// Signed area of a ring: positive when counter-clockwise.
 double signedArea(const Ring& ring);

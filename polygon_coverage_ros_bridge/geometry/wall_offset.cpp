@@ -1,6 +1,5 @@
 #include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <clipper.hpp>
 #include <cmath>
@@ -309,11 +308,7 @@ std::vector<PolygonWithHoles> clipToBox(const PolygonWithHoles& area, const Poin
                                         const Point2& high) {
   const IntegerFrame frame(area);
   // Both corners within the frame's range: the box beyond the hull adds nothing.
-  const Eigen::AlignedBox2d hull_box = [&] {
-    Eigen::AlignedBox2d box;
-    for (const Point2& p : area.hull) box.extend(p);
-    return box;
-  }();
+  const Eigen::AlignedBox2d hull_box = boundingBox(area.hull);
   const Point2 from = low.cwiseMax(hull_box.min());
   const Point2 to = high.cwiseMin(hull_box.max());
   if ((from.array() >= to.array()).any()) return {};

@@ -1,6 +1,5 @@
 #include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -149,8 +148,7 @@ std::pair<double, Point2> pathClearance(const PolygonWithHoles& free_area,
   };
   nearest(free_area.hull);
   for (const Ring& hole : free_area.holes) nearest(hole);
-  Eigen::AlignedBox2d path_box;
-  for (const Point2& p : path) path_box.extend(p);
+  const Eigen::AlignedBox2d path_box = boundingBox(path);
   Point2 where = path.front();
   auto visit = [&](const Ring& ring) {
     for (std::size_t e = 0, n = ring.size(); e < n; ++e) {
@@ -234,23 +232,11 @@ std::vector<Point2> shortestPathInside(const PolygonWithHoles& area, const Point
   return VisibilityGraph(area, distance_cost).shortestPath(a, b);
 }
 
-/// The lower-left and upper-right corners of the ring's axis-aligned bounds.
-std::pair<Point2, Point2> boundsOf(const Ring& ring) {
-  Point2 low = ring.front();
-  Point2 high = ring.front();
-  for (const Point2& p : ring) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  return {low, high};
-}
-
-/// An axis-aligned rectangle around `ring` with `margin` on every side.
-PolygonWithHoles boxAround(const Ring& ring, double margin) {
-  auto [low, high] = boundsOf(ring);
-  low -= Point2(margin, margin);
-  high += Point2(margin, margin);
-  return {{low, {high.x(), low.y()}, high, {low.x(), high.y()}}, {}};
+/// The axis-aligned bounds of `ring` with `margin` on every side.
+Eigen::AlignedBox2d boxAround(const Ring& ring, double margin) {
+  const Eigen::AlignedBox2d bounds = boundingBox(ring);
+  const Point2 grow = Point2::Constant(margin);
+  return {bounds.min() - grow, bounds.max() + grow};
 }
 
 /// The point of the area's boundary nearest to p.
@@ -284,8 +270,8 @@ std::vector<Point2> pathBetweenParts(const PolygonWithHoles& area, const Point2&
   const Point2 to = contains(area, b) ? b : nearestBoundaryPoint(area, b);
   std::vector<Point2> path;
   for (const double share : kPathWindowShares) {
-    const auto [low, high] = boundsOf(boxAround({from, to}, share * (to - from).norm()).hull);
-    for (const PolygonWithHoles& piece : clipToBox(area, low, high)) {
+    const Eigen::AlignedBox2d box = boxAround({from, to}, share * (to - from).norm());
+    for (const PolygonWithHoles& piece : clipToBox(area, box.min(), box.max())) {
       if (path.empty() && contains(piece, from, kRoundOffsetReach) &&
           contains(piece, to, kRoundOffsetReach)) {
         path = shortestPathInside(piece, from, to);
@@ -371,13 +357,6 @@ std::vector<OffsetGap> gapsIn(const PolygonWithHoles& area, const std::vector<Pa
   return gaps;
 }
 
-/// True when the axis-aligned bounds of `a` and `b` overlap.
-bool boundsOverlap(const Ring& a, const Ring& b) {
-  const auto [a_low, a_high] = boundsOf(a);
-  const auto [b_low, b_high] = boundsOf(b);
-  return (a_low.array() <= b_high.array()).all() && (b_low.array() <= a_high.array()).all();
-}
-
 /// gapsIn run in a window around every part but the largest: the free area clipped to the
 /// part's bounds and kWindowMarginShare wall distances, the other parts sampled where they
 /// come within kSampleMarginShare wall distances. A gap that the window finds is a path in
@@ -388,25 +367,23 @@ std::vector<OffsetGap> windowedGaps(const PolygonWithHoles& free_area,
                                     double wall_distance, const SearchLevels& levels) {
   std::vector<OffsetGap> gaps;
   for (std::size_t k = 1; k < parts.size(); ++k) {
-    const PolygonWithHoles window = boxAround(parts[k].hull, kWindowMarginShare * wall_distance);
-    const PolygonWithHoles sample = boxAround(parts[k].hull, kSampleMarginShare * wall_distance);
+    const Eigen::AlignedBox2d window = boxAround(parts[k].hull, kWindowMarginShare * wall_distance);
+    const Eigen::AlignedBox2d sample = boxAround(parts[k].hull, kSampleMarginShare * wall_distance);
     PolygonWithHoles nearby{free_area.hull, {}};
     for (const Ring& hole : free_area.holes) {
-      if (boundsOverlap(hole, window.hull)) nearby.holes.push_back(hole);
+      if (boundingBox(hole).intersects(window)) nearby.holes.push_back(hole);
     }
     const PolygonWithHoles* area = nullptr;
-    const auto [window_low, window_high] = boundsOf(window.hull);
-    const std::vector<PolygonWithHoles> pieces = clipToBox(nearby, window_low, window_high);
+    const std::vector<PolygonWithHoles> pieces = clipToBox(nearby, window.min(), window.max());
     for (const PolygonWithHoles& piece : pieces) {
       if (contains(piece, parts[k].hull.front())) area = &piece;
     }
     if (area == nullptr) continue;
-    const auto [sample_low, sample_high] = boundsOf(sample.hull);
     std::vector<PartVertices> local = {verticesOf(parts[k])};
     std::vector<std::size_t> owner = {k};
     for (std::size_t j = 0; j < parts.size(); ++j) {
-      if (j == k || !boundsOverlap(parts[j].hull, sample.hull)) continue;
-      for (const PolygonWithHoles& clipped : clipToBox(parts[j], sample_low, sample_high)) {
+      if (j == k || !boundingBox(parts[j].hull).intersects(sample)) continue;
+      for (const PolygonWithHoles& clipped : clipToBox(parts[j], sample.min(), sample.max())) {
         local.push_back(verticesOf(clipped));
         owner.push_back(j);
       }

@@ -1,6 +1,5 @@
 #include "polygon_coverage_ros_bridge/route/visibility_graph.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,17 +10,12 @@
 #include "polygon_coverage_ros_bridge/base/indexed_min_heap.h"
 #include "polygon_coverage_ros_bridge/base/parallel_for.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
 namespace kinematic_coverage::core {
 namespace {
 
 constexpr double kUnreachable = std::numeric_limits<double>::infinity();
-
-Eigen::AlignedBox2d boundingBox(const std::vector<Point2>& ring) {
-  Eigen::AlignedBox2d box;
-  for (const Point2& p : ring) box.extend(p);
-  return box;
-}
 
 std::string describe(const Point2& p) {
   std::ostringstream text;
@@ -43,11 +37,10 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
   if (all_pairs == AllPairs::kOnDemand ||
       (all_pairs == AllPairs::kByDensity && n > kOnDemandNodes)) {
     on_demand_ = true;
-    const PolygonWithHoles& polygon = grid_.polygon();
-    const Eigen::AlignedBox2d box = boundingBox(polygon.hull);
+    const Eigen::AlignedBox2d box = boundingBox(grid_.polygon().hull);
     const double area = std::max(box.sizes().prod(), 1e-12);
     double radius = std::sqrt(kLocalRadiusNodes * area / (M_PI * std::max<std::size_t>(n, 1)));
-    indexNodes(radius);
+    indexNodes(box, radius);
     while (true) {
       buildLocalEdges(radius);
       if (radius >= extent_ || nodesConnected()) break;
@@ -82,8 +75,7 @@ VisibilityGraph::VisibilityGraph(const PolygonWithHoles& area, const SegmentCost
   allPairsCosts(all_pairs);
 }
 
-void VisibilityGraph::indexNodes(double cell) {
-  const Eigen::AlignedBox2d box = boundingBox(grid_.polygon().hull);
+void VisibilityGraph::indexNodes(const Eigen::AlignedBox2d& box, double cell) {
   index_origin_ = box.min();
   extent_ = box.diagonal().norm();
   index_cell_ = cell;
@@ -440,7 +432,10 @@ void VisibilityGraph::attachNodes(QueryPoint* point, bool with_node_costs) const
     return;
   }
   for (std::size_t k = 0; k < nodes_.size(); ++k) attach(k);
-  if (!with_node_costs) return;
+  if (with_node_costs) addNodeCosts(point);
+}
+
+void VisibilityGraph::addNodeCosts(QueryPoint* point) const {
   const std::size_t n = nodes_.size();
   point->node_costs.assign(n, kUnreachable);
   for (std::size_t i = 0; i < point->seen_nodes.size(); ++i) {
@@ -683,29 +678,12 @@ std::vector<double> VisibilityGraph::costsFrom(const LocatedPoints& points, std:
   std::vector<const QueryPoint*> target_list;
   for (std::size_t t : targets) target_list.push_back(&points.points_.at(t));
   if (on_demand_) return search(a, target_list).costs;
-  // a's cost to every node, then bestRoute's sum over each target's seen nodes.
-  const std::size_t n = nodes_.size();
-  std::vector<double> to_node(n, kUnreachable);
-  for (std::size_t i = 0; i < a.seen_nodes.size(); ++i) {
-    const double* row = &node_costs_[static_cast<std::size_t>(a.seen_nodes[i]) * n];
-    for (std::size_t w = 0; w < n; ++w) {
-      to_node[w] = std::min(to_node[w], a.seen_costs[i] + row[w]);
-    }
-  }
+  // The source's cost to every node once, then bestRoute for each target.
+  QueryPoint from = a;
+  addNodeCosts(&from);
   std::vector<double> costs;
   costs.reserve(targets.size());
-  for (const QueryPoint* b : target_list) {
-    if (b->position == a.position) {
-      costs.push_back(0.0);
-      continue;
-    }
-    double via = kUnreachable;
-    for (std::size_t i = 0; i < b->seen_nodes.size(); ++i) {
-      via = std::min(via, to_node[b->seen_nodes[i]] + b->seen_costs[i]);
-    }
-    const double straight = segment_cost_.of(a.position, b->position);
-    costs.push_back(via > straight && straightInside(a, *b) ? straight : via);
-  }
+  for (const QueryPoint* b : target_list) costs.push_back(bestRoute(from, *b).cost);
   return costs;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstddef>
 #include <limits>
 #include <map>
@@ -180,8 +181,9 @@ class VisibilityGraph {
   void buildLocalEdges(double radius);
   /// True when every node is reachable from node 0 over the edges.
   bool nodesConnected() const;
-  /// Buckets nodes in square cells of `cell` metres, for forNodesWithin; sets extent_.
-  void indexNodes(double cell);
+  /// Buckets nodes in square cells of `cell` metres over `box` (the hull's bounds), for
+  /// forNodesWithin; sets extent_.
+  void indexNodes(const Eigen::AlignedBox2d& box, double cell);
   /// Calls visit(k) for every node k within `radius` of p, in a fixed order.
   template <typename Visit>
   void forNodesWithin(const Point2& p, double radius, Visit visit) const;
@@ -205,6 +207,8 @@ class VisibilityGraph {
   /// The point in `cache`, located (and with its visible nodes when `attached`).
   QueryPoint& cached(const Point2& p, bool attached, PointCache* cache) const;
   void attachNodes(QueryPoint* point, bool with_node_costs) const;
+  /// All-pairs graphs: the point's cheapest cost to every node, through the nodes it sees.
+  void addNodeCosts(QueryPoint* point) const;
   bool straightInside(const QueryPoint& a, const QueryPoint& b) const;
   Route bestRoute(const QueryPoint& a, const QueryPoint& b) const;
   std::vector<Point2> routePoints(const QueryPoint& a, const QueryPoint& b,
