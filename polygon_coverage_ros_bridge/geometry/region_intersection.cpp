@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
@@ -36,11 +37,15 @@ CgalPolygon toCgal(const Ring& ring, bool counter_clockwise) {
   return polygon;
 }
 
-CgalPolygonSet toSet(const PolygonWithHoles& polygon) {
+CgalPolygonWithHoles toCgal(const PolygonWithHoles& polygon) {
   CgalPolygonWithHoles cgal(toCgal(polygon.hull, true));
   for (const Ring& hole : polygon.holes) cgal.add_hole(toCgal(hole, false));
+  return cgal;
+}
+
+CgalPolygonSet toSet(const PolygonWithHoles& polygon) {
   CgalPolygonSet set;
-  set.insert(cgal);
+  set.insert(toCgal(polygon));
   return set;
 }
 
@@ -81,8 +86,12 @@ std::vector<PolygonWithHoles> intersectWithRegions(const PolygonWithHoles& area,
 }
 
 std::vector<PolygonWithHoles> unionOfAreas(const std::vector<PolygonWithHoles>& areas) {
+  // One aggregated union (divide and conquer over the areas) instead of one join per area,
+  // each over the growing union: hundreds of parts and corridors of a chart.
+  std::vector<CgalPolygonWithHoles> polygons;
+  for (const PolygonWithHoles& area : areas) polygons.push_back(toCgal(area));
   CgalPolygonSet united;
-  for (const PolygonWithHoles& area : areas) united.join(toSet(area));
+  united.join(polygons.begin(), polygons.end());
   return toPolygons(united, 0.0);
 }
 

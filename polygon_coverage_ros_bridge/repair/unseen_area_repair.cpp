@@ -50,11 +50,21 @@ constexpr int kLegSamplesAlong = 16;
 constexpr int kLegSamplesAcross = 3;
 constexpr double kLegSampleReach = 0.95;
 
-/// True when `patch` is an excursion out and back (ExactOffsetExcursions) whose far end `path`
-/// already reaches: driving it again sees nothing more.
+/// True when `patch` is an excursion out and back (ExactOffsetExcursions) whose last leg
+/// `path` already drives, into its far end or out of it: driving it again sees nothing
+/// more. A path through the far end on other legs (a bump that bent a leg out to it, for
+/// another region) looks along other headings, and may not see what the excursion would.
 bool isDrivenExcursion(const std::vector<Point2>& patch, const std::vector<Point2>& path) {
-  return patch.size() % 2 == 1 && patch.size() >= 3 && patch.front() == patch.back() &&
-         std::find(path.begin(), path.end(), patch[patch.size() / 2]) != path.end();
+  if (patch.size() % 2 == 0 || patch.size() < 3 || patch.front() != patch.back()) return false;
+  const Point2& apex = patch[patch.size() / 2];
+  const Point2& before = patch[patch.size() / 2 - 1];
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i] != apex) continue;
+    if ((i > 0 && path[i - 1] == before) || (i + 1 < path.size() && path[i + 1] == before)) {
+      return true;
+    }
+  }
+  return false;
 }
 
 double totalArea(const std::vector<UnseenRegion>& regions) {
@@ -106,34 +116,39 @@ UnseenAreaRepair::UnseenAreaRepair(CoverageEvaluator measuring_raster,
       if (signedArea(rings_.back()) > 0.0) std::reverse(rings_.back().begin(), rings_.back().end());
     }
   }
-  for (const Ring& ring : rings_) {
+  std::vector<Point2> starts, ends;
+  for (std::size_t r = 0; r < rings_.size(); ++r) {
+    const Ring& ring = rings_[r];
     std::vector<double> lengths = {0.0};
     for (std::size_t i = 0; i < ring.size(); ++i) {
       lengths.push_back(lengths.back() + (ring[(i + 1) % ring.size()] - ring[i]).norm());
+      starts.push_back(ring[i]);
+      ends.push_back(ring[(i + 1) % ring.size()]);
+      boundary_edges_.push_back({r, i});
     }
     arc_lengths_.push_back(std::move(lengths));
   }
+  if (!starts.empty()) boundary_index_.emplace(std::move(starts), std::move(ends));
+  for (const PolygonWithHoles& part : patch_areas_) part_boxes_.push_back(boundingBox(part.hull));
 }
 
 UnseenAreaRepair::RingPosition UnseenAreaRepair::nearestOnBoundary(const Point2& p,
                                                                    double* distance) const {
-  RingPosition best;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (std::size_t r = 0; r < rings_.size(); ++r) {
-    const Ring& ring = rings_[r];
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Point2& a = ring[i];
-      const Point2& b = ring[(i + 1) % ring.size()];
-      const Point2 q = closestPointOnSegment(p, a, b);
-      const double d = (p - q).norm();
-      if (d < best_distance) {
-        best_distance = d;
-        best = {r, i, arc_lengths_[r][i] + (q - a).norm()};
-      }
-    }
+  *distance = std::numeric_limits<double>::infinity();
+  if (!boundary_index_) return {};
+  const NearestSegmentIndex::Nearest nearest = boundary_index_->nearest(p);
+  const auto [ring, edge] = boundary_edges_[nearest.segment];
+  const Point2& a = rings_[ring][edge];
+  const Point2 q = closestPointOnSegment(p, a, rings_[ring][(edge + 1) % rings_[ring].size()]);
+  *distance = nearest.distance;
+  return {ring, edge, arc_lengths_[ring][edge] + (q - a).norm()};
+}
+
+bool UnseenAreaRepair::inPatchAreas(const Point2& p) const {
+  for (std::size_t i = 0; i < patch_areas_.size(); ++i) {
+    if (part_boxes_[i].contains(p) && contains(patch_areas_[i], p)) return true;
   }
-  *distance = best_distance;
-  return best;
+  return false;
 }
 
 Point2 UnseenAreaRepair::pointAt(std::size_t ring, double arc_length) const {
@@ -178,8 +193,7 @@ std::vector<std::vector<Point2>> UnseenAreaRepair::patchesFor(
   for (const Point2& sample : samples) {
     double distance = 0.0;
     const RingPosition position = nearestOnBoundary(sample, &distance);
-    bool inside = false;
-    for (const PolygonWithHoles& part : patch_areas_) inside = inside || contains(part, sample);
+    const bool inside = inPatchAreas(sample);
     if (inside && distance > boundary_reach) {
       deep.push_back(sample);
     } else if (inside) {

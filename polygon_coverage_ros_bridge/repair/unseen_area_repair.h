@@ -1,10 +1,13 @@
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/geometry/nearest_segment_index.h"
 #include "polygon_coverage_ros_bridge/geometry/polygon_with_holes.h"
 #include "polygon_coverage_ros_bridge/repair/exact_offset_excursions.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
@@ -107,6 +110,9 @@ class UnseenAreaRepair {
   /// The nearest point of the planned parts' boundary to p, with its ring position.
   RingPosition nearestOnBoundary(const Point2& p, double* distance) const;
 
+  /// True when p lies in one of the patch areas.
+  bool inPatchAreas(const Point2& p) const;
+
   /// The point of ring `ring` at `arc_length` from its first vertex.
   Point2 pointAt(std::size_t ring, double arc_length) const;
 
@@ -196,6 +202,10 @@ class UnseenAreaRepair {
   ExactOffsetExcursions excursions_;
   std::vector<Ring> rings_;  ///< every hull and hole of the parts, the parts to their left
   std::vector<std::vector<double>> arc_lengths_;  ///< per ring, to each vertex and round
+  /// The rings' edges (none without patch areas), and the ring and edge of each.
+  std::optional<NearestSegmentIndex> boundary_index_;
+  std::vector<std::pair<std::size_t, std::size_t>> boundary_edges_;
+  std::vector<Eigen::AlignedBox2d> part_boxes_;  ///< the patch areas' bounding boxes
 };
 
 }  // namespace kinematic_coverage::core

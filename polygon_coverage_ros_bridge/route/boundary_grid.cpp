@@ -90,17 +90,20 @@ void BoundaryGrid::buildClusters() {
   std::vector<Point2> vertices;
   std::vector<int> next;
   std::vector<int> previous;
-  auto addRing = [&](const Ring& ring) {
+  auto addRing = [&](const Ring& ring, int ring_index) {
     const int first = static_cast<int>(vertices.size());
     const int n = static_cast<int>(ring.size());
     for (int i = 0; i < n; ++i) {
       vertices.push_back(ring[i]);
       next.push_back(first + (i + 1) % n);
       previous.push_back(first + (i + n - 1) % n);
+      edge_ring_.push_back(ring_index);
     }
   };
-  addRing(polygon_.hull);
-  for (const Ring& hole : polygon_.holes) addRing(hole);
+  addRing(polygon_.hull, 0);
+  for (std::size_t h = 0; h < polygon_.holes.size(); ++h) {
+    addRing(polygon_.holes[h], static_cast<int>(h) + 1);
+  }
 
   // Cluster coinciding vertices (pinch points): sweep in x, join within tolerance.
   const int count = static_cast<int>(vertices.size());
@@ -185,7 +188,43 @@ void BoundaryGrid::addTouchingEdges() {
 }
 
 bool BoundaryGrid::contains(const Point2& p) const {
-  return p.allFinite() && kinematic_coverage::core::contains(polygon_, p, tolerance_);
+  // Beyond the grid, a point is farther than its margin from every edge and outside.
+  if (!p.allFinite() || !grid_.covers(p)) return false;
+  const int column = grid_.column(p.x());
+  const int row = grid_.row(p.y());
+  // Every edge within the tolerance of p is registered in p's cell (boxes grown by it).
+  for (const int* edge = grid_.cellBegin(column, row); edge != grid_.cellEnd(column, row); ++edge) {
+    if (distanceToSegment(p, edge_start_[*edge], edge_end_[*edge]) <= tolerance_) return true;
+  }
+  // Even-odd crossings of the ray from p to the right, per ring (the test of insideRing).
+  // An edge crossing the ray at x is registered in the cell of x in p's row, so it is
+  // counted there, and only there, however many cells it spans.
+  bool inside_hull = false;
+  std::vector<int> crossed_holes;
+  for (int c = column; c < grid_.columns(); ++c) {
+    for (const int* edge = grid_.cellBegin(c, row); edge != grid_.cellEnd(c, row); ++edge) {
+      const Point2& a = edge_end_[*edge];
+      const Point2& b = edge_start_[*edge];
+      if ((a.y() > p.y()) == (b.y() > p.y())) continue;
+      const double x_cross = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+      if (p.x() >= x_cross || grid_.column(x_cross) != c) continue;
+      if (edge_ring_[*edge] == 0) {
+        inside_hull = !inside_hull;
+      } else {
+        crossed_holes.push_back(edge_ring_[*edge]);
+      }
+    }
+  }
+  if (!inside_hull) return false;
+  // Inside a hole: crossed an odd number of times.
+  std::sort(crossed_holes.begin(), crossed_holes.end());
+  for (std::size_t i = 0; i < crossed_holes.size();) {
+    std::size_t j = i;
+    while (j < crossed_holes.size() && crossed_holes[j] == crossed_holes[i]) ++j;
+    if ((j - i) % 2 == 1) return false;
+    i = j;
+  }
+  return true;
 }
 
 BoundaryGrid::Contact BoundaryGrid::contactOf(const Point2& p) const {
@@ -237,7 +276,9 @@ bool BoundaryGrid::directionFree(int cluster, const Point2& direction,
   double nearest = 2.0 * M_PI;
   bool free = true;
   for (std::size_t i = 0; i < c.ray_angles.size(); ++i) {
-    double delta = std::fmod(angle - c.ray_angles[i], 2.0 * M_PI);
+    // Both angles lie in [-pi, pi] (atan2), so one turn brings the difference into
+    // [0, 2 pi], as fmod would, without its cost in the visibility test's inner loop.
+    double delta = angle - c.ray_angles[i];
     if (delta < 0.0) delta += 2.0 * M_PI;
     if (delta <= angle_tolerance || delta >= 2.0 * M_PI - angle_tolerance) return true;
     if (delta < nearest) {

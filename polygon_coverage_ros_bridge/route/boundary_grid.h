@@ -99,6 +99,7 @@ class BoundaryGrid {
   std::vector<Point2> edge_end_;
   std::vector<int> start_cluster_;
   std::vector<int> end_cluster_;
+  std::vector<int> edge_ring_;  ///< 0 for the hull's edges, h + 1 for hole h's
   std::vector<Cluster> clusters_;
   EdgeGrid grid_;
 };

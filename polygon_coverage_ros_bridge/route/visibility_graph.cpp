@@ -664,19 +664,26 @@ std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sourc
 
 VisibilityGraph::LocatedPoints VisibilityGraph::locateAll(const std::vector<Point2>& points) const {
   LocatedPoints located;
-  located.points_.resize(points.size());
-  parallelForInOrder(points.size(), [&](std::size_t i) {
-    located.points_[i] = locate(points[i]);
-    attachNodes(&located.points_[i], false);
+  std::map<std::pair<double, double>, std::size_t> slot_of;
+  std::vector<Point2> distinct;
+  for (const Point2& p : points) {
+    const auto [it, inserted] = slot_of.emplace(std::make_pair(p.x(), p.y()), distinct.size());
+    if (inserted) distinct.push_back(p);
+    located.slot_.push_back(it->second);
+  }
+  located.distinct_.resize(distinct.size());
+  parallelForInOrder(distinct.size(), [&](std::size_t i) {
+    located.distinct_[i] = locate(distinct[i]);
+    attachNodes(&located.distinct_[i], false);
   });
   return located;
 }
 
 std::vector<double> VisibilityGraph::costsFrom(const LocatedPoints& points, std::size_t source,
                                                const std::vector<std::size_t>& targets) const {
-  const QueryPoint& a = points.points_.at(source);
+  const QueryPoint& a = points.at(source);
   std::vector<const QueryPoint*> target_list;
-  for (std::size_t t : targets) target_list.push_back(&points.points_.at(t));
+  for (std::size_t t : targets) target_list.push_back(&points.at(t));
   if (on_demand_) return search(a, target_list).costs;
   // The source's cost to every node once, then bestRoute for each target.
   QueryPoint from = a;

@@ -237,11 +237,15 @@ class VisibilityGraph {
 
 class VisibilityGraph::LocatedPoints {
  public:
-  std::size_t size() const { return points_.size(); }
+  std::size_t size() const { return slot_.size(); }
 
  private:
   friend class VisibilityGraph;
-  std::vector<QueryPoint> points_;
+  const QueryPoint& at(std::size_t i) const { return distinct_[slot_.at(i)]; }
+
+  /// Each distinct position located once (a sweep pattern's end is another's start).
+  std::vector<QueryPoint> distinct_;
+  std::vector<std::size_t> slot_;  ///< the distinct point of each point asked for
 };
 
 class VisibilityGraph::PointCache {

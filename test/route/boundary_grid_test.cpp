@@ -362,5 +362,46 @@ TEST(BoundaryGrid, AgreesWithPlanarGeometryOnRandomSegments) {
   EXPECT_GT(blocked, total / 10);
 }
 
+TEST(BoundaryGrid, ContainsAgreesWithPlanarGeometryOnAndOffTheBoundary) {
+  // Random maps with holes, points anywhere, on vertices and edges, and a little off them
+  // (within the tolerance and beyond it), against the brute-force test with the tolerance.
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> coordinate(-60.0, 60.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int inside = 0;
+  int total = 0;
+  for (int map_index = 0; map_index < 30; ++map_index) {
+    const PolygonWithHoles map = testing::randomMap(rng, 100.0, 15, 1.0);
+    const BoundaryGrid grid(map);
+    const PolygonWithHoles& rings = grid.polygon();
+    std::vector<Point2> points;
+    for (int k = 0; k < 400; ++k) points.emplace_back(coordinate(rng), coordinate(rng));
+    std::vector<const Ring*> all = {&rings.hull};
+    for (const Ring& hole : rings.holes) all.push_back(&hole);
+    for (const Ring* ring : all) {
+      for (std::size_t i = 0; i < ring->size(); ++i) {
+        const Point2& a = (*ring)[i];
+        const Point2& b = (*ring)[(i + 1) % ring->size()];
+        const Point2 normal = Point2(b.y() - a.y(), a.x() - b.x()).normalized();
+        const Point2 on = a + unit(rng) * (b - a);
+        points.push_back(a);
+        points.push_back(on);
+        for (const double off : {0.5, 2.0, 1e3}) {
+          points.push_back(on + off * grid.tolerance() * normal);
+          points.push_back(on - off * grid.tolerance() * normal);
+        }
+      }
+    }
+    for (const Point2& p : points) {
+      const bool reference = contains(rings, p, grid.tolerance());
+      EXPECT_EQ(grid.contains(p), reference) << p.transpose();
+      inside += reference;
+      ++total;
+    }
+  }
+  EXPECT_GT(inside, total / 4);
+  EXPECT_LT(inside, 3 * total / 4);
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core

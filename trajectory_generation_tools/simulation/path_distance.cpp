@@ -1,8 +1,6 @@
 #include "trajectory_generation_tools/simulation/path_distance.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <utility>
 
@@ -10,119 +8,45 @@
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
 
 namespace kinematic_coverage::core {
+namespace {
 
-PathDistance::PathDistance(const std::vector<Point2>& points) {
+/// The polyline's segments between distinct consecutive points (one point: a segment of
+/// that point), checked finite.
+std::pair<std::vector<Point2>, std::vector<Point2>> segmentsOf(const std::vector<Point2>& points) {
   if (points.empty()) throw InvalidInputError("path distance: the path has no points");
-  Point2 min = points.front();
-  Point2 max = points.front();
-  double length = 0.0;
+  std::pair<std::vector<Point2>, std::vector<Point2>> segments;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(points[i].x()) || !std::isfinite(points[i].y())) {
       throw InvalidInputError("path distance: point " + std::to_string(i) + " is not finite");
     }
-    min = min.cwiseMin(points[i]);
-    max = max.cwiseMax(points[i]);
     if (i > 0 && points[i] != points[i - 1]) {
-      starts_.push_back(points[i - 1]);
-      ends_.push_back(points[i]);
-      length += (points[i] - points[i - 1]).norm();
+      segments.first.push_back(points[i - 1]);
+      segments.second.push_back(points[i]);
     }
   }
-  if (starts_.empty()) {
-    starts_.push_back(points.front());
-    ends_.push_back(points.front());
+  if (segments.first.empty()) {
+    segments.first.push_back(points.front());
+    segments.second.push_back(points.front());
   }
-
-  // Cells about as long as the average segment, but no more than kMaxCellsPerSide along the
-  // longer side: a query then looks at a few segments and the grid stays small.
-  const Point2 extent = max - min;
-  const double longer_side = extent.maxCoeff();
-  cell_size_ = std::max(
-      {length / static_cast<double>(starts_.size()), longer_side / kMaxCellsPerSide, 1e-9});
-  origin_ = min;
-  columns_ = std::min(kMaxCellsPerSide, static_cast<int>(extent.x() / cell_size_) + 1);
-  rows_ = std::min(kMaxCellsPerSide, static_cast<int>(extent.y() / cell_size_) + 1);
-
-  // Each segment, cut into pieces no longer than a cell, goes into the cells of each
-  // piece's bounding box (at most 2 x 2), so that every cell a segment crosses lists it.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> cell_segment;
-  for (std::size_t s = 0; s < starts_.size(); ++s) {
-    const Point2 delta = ends_[s] - starts_[s];
-    const std::size_t pieces =
-        std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(delta.norm() / cell_size_)));
-    for (std::size_t piece = 0; piece < pieces; ++piece) {
-      const Point2 a = starts_[s] + delta * (static_cast<double>(piece) / pieces);
-      const Point2 b = starts_[s] + delta * (static_cast<double>(piece + 1) / pieces);
-      const auto [column_a, row_a] = cellOf(a);
-      const auto [column_b, row_b] = cellOf(b);
-      for (int row = std::min(row_a, row_b); row <= std::max(row_a, row_b); ++row) {
-        for (int column = std::min(column_a, column_b); column <= std::max(column_a, column_b);
-             ++column) {
-          cell_segment.emplace_back(static_cast<std::uint32_t>(row * columns_ + column),
-                                    static_cast<std::uint32_t>(s));
-        }
-      }
-    }
-  }
-  std::sort(cell_segment.begin(), cell_segment.end());
-  cell_segment.erase(std::unique(cell_segment.begin(), cell_segment.end()), cell_segment.end());
-  cell_begin_.assign(static_cast<std::size_t>(columns_) * rows_ + 1, 0);
-  for (const auto& entry : cell_segment) ++cell_begin_[entry.first + 1];
-  for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
-  cell_entries_.reserve(cell_segment.size());
-  for (const auto& entry : cell_segment) cell_entries_.push_back(entry.second);
+  return segments;
 }
 
-std::pair<int, int> PathDistance::cellOf(const Point2& point) const {
-  const auto index = [&](double offset, int count) {
-    const double cell = std::floor(offset / cell_size_);
-    return static_cast<int>(std::clamp(cell, 0.0, static_cast<double>(count - 1)));
-  };
-  return {index(point.x() - origin_.x(), columns_), index(point.y() - origin_.y(), rows_)};
+NearestSegmentIndex indexOf(const std::vector<Point2>& points) {
+  auto [starts, ends] = segmentsOf(points);
+  return NearestSegmentIndex(std::move(starts), std::move(ends));
 }
 
-PathDistance::Nearest PathDistance::nearestInCell(int column, int row, const Point2& point,
-                                                  Nearest best) const {
-  const std::size_t cell = static_cast<std::size_t>(row) * columns_ + column;
-  for (std::uint32_t e = cell_begin_[cell]; e < cell_begin_[cell + 1]; ++e) {
-    const std::uint32_t s = cell_entries_[e];
-    const double distance = distanceToSegment(point, starts_[s], ends_[s]);
-    if (distance < best.distance) best = {distance, s};
-  }
-  return best;
-}
+}  // namespace
 
-PathDistance::Nearest PathDistance::nearestSegment(const Point2& point) const {
-  // Rings of cells around the point's (clamped) cell. Every cell beyond ring k lies at
-  // least k cells away from the clamped point, and clamping into the grid brings a point
-  // no farther from any cell, so once the best distance is within k cells it is final.
-  const auto [centre_column, centre_row] = cellOf(point);
-  Nearest best{std::numeric_limits<double>::infinity(), 0};
-  for (int k = 0;; ++k) {
-    const int left = centre_column - k;
-    const int right = centre_column + k;
-    const int bottom = centre_row - k;
-    const int top = centre_row + k;
-    for (int row = std::max(bottom, 0); row <= std::min(top, rows_ - 1); ++row) {
-      if (row == bottom || row == top) {
-        for (int column = std::max(left, 0); column <= std::min(right, columns_ - 1); ++column) {
-          best = nearestInCell(column, row, point, best);
-        }
-      } else {
-        if (left >= 0) best = nearestInCell(left, row, point, best);
-        if (right < columns_) best = nearestInCell(right, row, point, best);
-      }
-    }
-    if (best.distance <= k * cell_size_) return best;
-    if (left <= 0 && bottom <= 0 && right >= columns_ - 1 && top >= rows_ - 1) return best;
-  }
-}
+PathDistance::PathDistance(const std::vector<Point2>& points) : segments_(indexOf(points)) {}
 
-double PathDistance::distance(const Point2& point) const { return nearestSegment(point).distance; }
+double PathDistance::distance(const Point2& point) const {
+  return segments_.nearest(point).distance;
+}
 
 Point2 PathDistance::nearestPoint(const Point2& point) const {
-  const std::uint32_t s = nearestSegment(point).segment;
-  return closestPointOnSegment(point, starts_[s], ends_[s]);
+  const std::uint32_t s = segments_.nearest(point).segment;
+  return closestPointOnSegment(point, segments_.start(s), segments_.end(s));
 }
 
 }  // namespace kinematic_coverage::core
