@@ -17,6 +17,25 @@ namespace {
 
 constexpr double kUnreachable = std::numeric_limits<double>::infinity();
 
+/// Each distinct position of a list of points once, in the order they first appear, and
+/// for every point of the list the index of its position.
+struct DistinctPositions {
+  std::vector<Point2> positions;
+  std::vector<std::size_t> slot;
+};
+
+DistinctPositions distinctPositions(const std::vector<Point2>& points) {
+  DistinctPositions distinct;
+  std::map<std::pair<double, double>, std::size_t> slot_of;
+  for (const Point2& p : points) {
+    const auto [it, inserted] =
+        slot_of.emplace(std::make_pair(p.x(), p.y()), distinct.positions.size());
+    if (inserted) distinct.positions.push_back(p);
+    distinct.slot.push_back(it->second);
+  }
+  return distinct;
+}
+
 std::string describe(const Point2& p) {
   std::ostringstream text;
   text.precision(10);
@@ -584,23 +603,17 @@ double VisibilityGraph::cost(const Point2& a, const Point2& b, PointCache* cache
 std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sources,
                                                 const std::vector<Point2>& targets) const {
   // Each distinct point is located once; sources also get their cost to every node.
-  std::map<std::pair<double, double>, std::size_t> index_of;
+  std::vector<Point2> ends = sources;
+  ends.insert(ends.end(), targets.begin(), targets.end());
+  const DistinctPositions distinct = distinctPositions(ends);
   std::vector<QueryPoint> points;
-  std::vector<bool> is_source;
-  auto indexOf = [&](const Point2& p, bool source) {
-    const auto [it, inserted] = index_of.emplace(std::make_pair(p.x(), p.y()), points.size());
-    if (inserted) {
-      points.push_back(locate(p));
-      is_source.push_back(source);
-    } else if (source) {
-      is_source[it->second] = true;
-    }
-    return it->second;
-  };
-  std::vector<std::size_t> source_points;
-  std::vector<std::size_t> target_points;
-  for (const Point2& p : sources) source_points.push_back(indexOf(p, true));
-  for (const Point2& p : targets) target_points.push_back(indexOf(p, false));
+  for (const Point2& p : distinct.positions) points.push_back(locate(p));
+  const auto slots_begin = distinct.slot.begin();
+  const auto sources_end = slots_begin + static_cast<std::ptrdiff_t>(sources.size());
+  const std::vector<std::size_t> source_points(slots_begin, sources_end);
+  const std::vector<std::size_t> target_points(sources_end, distinct.slot.end());
+  std::vector<bool> is_source(points.size(), false);
+  for (std::size_t p : source_points) is_source[p] = true;
   parallelFor(points.size(), [&](std::size_t i) { attachNodes(&points[i], is_source[i]); });
 
   // Costs between distinct points only, then spread over the requested rows and columns.
@@ -663,17 +676,12 @@ std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sourc
 }
 
 VisibilityGraph::LocatedPoints VisibilityGraph::locateAll(const std::vector<Point2>& points) const {
+  DistinctPositions distinct = distinctPositions(points);
   LocatedPoints located;
-  std::map<std::pair<double, double>, std::size_t> slot_of;
-  std::vector<Point2> distinct;
-  for (const Point2& p : points) {
-    const auto [it, inserted] = slot_of.emplace(std::make_pair(p.x(), p.y()), distinct.size());
-    if (inserted) distinct.push_back(p);
-    located.slot_.push_back(it->second);
-  }
-  located.distinct_.resize(distinct.size());
-  parallelForInOrder(distinct.size(), [&](std::size_t i) {
-    located.distinct_[i] = locate(distinct[i]);
+  located.slot_ = std::move(distinct.slot);
+  located.distinct_.resize(distinct.positions.size());
+  parallelForInOrder(distinct.positions.size(), [&](std::size_t i) {
+    located.distinct_[i] = locate(distinct.positions[i]);
     attachNodes(&located.distinct_[i], false);
   });
   return located;
