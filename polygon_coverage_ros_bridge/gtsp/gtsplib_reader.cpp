@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 
 namespace kinematic_coverage::core {
@@ -83,10 +84,12 @@ class Parser {
     } else if (key == "DIMENSION") {
       dimension_ = positiveInteger(value, line_number, "DIMENSION");
       if (dimension_ > kMaxDimension) {
-        fail(line_number, "DIMENSION " + value + " exceeds the limit of " +
-                              std::to_string(kMaxDimension) +
-                              " nodes (the cost matrix would take " +
-                              std::to_string(8 * dimension_ * dimension_ >> 20) + " MiB)");
+        fail(line_number,
+             "DIMENSION " + value + " exceeds the limit of " + std::to_string(kMaxDimension) +
+                 " nodes (the cost matrix would take " +
+                 formatNumber(std::floor(8.0 * static_cast<double>(dimension_) *
+                                         static_cast<double>(dimension_) / 1048576.0)) +
+                 " MiB)");
       }
     } else if (key == "GTSP_SETS") {
       set_count_ = positiveInteger(value, line_number, "GTSP_SETS");

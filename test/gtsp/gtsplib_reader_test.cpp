@@ -102,6 +102,9 @@ TEST(GtsplibReader, RejectsMalformedFiles) {
   expectRejected("DIMENSION : 6001\n",
                  "test:1: DIMENSION 6001 exceeds the limit of 6000 nodes (the cost matrix would "
                  "take 274 MiB)");
+  // The size in the message is not computed in integers, which the largest one overflows.
+  expectRejected("DIMENSION : 9223372036854775807\n",
+                 "test:1: DIMENSION 9223372036854775807 exceeds the limit of 6000 nodes");
   expectRejected("TYPE : TSP\n", "test:1: TYPE 'TSP' is not GTSP or AGTSP");
   expectRejected("EDGE_WEIGHT_TYPE : GEO\n", "EDGE_WEIGHT_TYPE 'GEO' is not supported");
   expectRejected("DIMENSION : 3\nGTSP_SETS : 2\nEDGE_WEIGHT_TYPE : EUC_2D\n" + std::string(kSets),
