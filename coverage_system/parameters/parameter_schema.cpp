@@ -11,6 +11,7 @@
 #include "coverage_system/parameters/parameter_choices.h"
 #include "polygon_coverage_ros_bridge/base/number_format.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "trajectory_generation_tools/simulation/robot_simulator.h"
 
 namespace kinematic_coverage::core {
@@ -136,6 +137,13 @@ std::vector<ParameterDeclaration> planningDeclarations() {
                 "wall_distance (the default): a part joined to the start's part only through "
                 "narrower gaps is not entered (named in a warning, counted as unreachable). "
                 "Every narrower transit allowed is warned of."),
+      number("offset_miter_limit", &P::offset_miter_limit, "", kDefaultMiterLimit,
+             interval(kDefaultMiterLimit, false, kMaxMiterLimit, false), S::kWallOffset,
+             "Wall distances by which a corner of the offset free area may reach beyond "
+             "the wall's corner before it is squared off (cut at the wall distance from "
+             "it): at 2, every corner sharper than 60 degrees; 1000, nearly the thesis's "
+             "straight-skeleton offset, whose mitres at a rough shore's needles reach "
+             "across the water and cut the area into parts its lanes do not reach."),
       number("boundary_simplification", &P::boundary_simplification, "", 0.1,
              interval(0.0, false, 0.5, false), S::kDecomposition,
              "Share of the sweep distance by which the offset free area's boundary may move "

@@ -25,6 +25,7 @@ struct PlannerParameters {
   double wall_distance{};
   std::string offset_parts{};
   double gap_clearance{};
+  double offset_miter_limit{};
   double boundary_simplification{};
   double max_memory_mb{};
   double gtsp_effort{};

@@ -4,6 +4,7 @@
 
 #include "polygon_coverage_ros_bridge/base/vehicle_limits.h"
 #include "polygon_coverage_ros_bridge/decomposition/sweep_line_decomposition.h"
+#include "polygon_coverage_ros_bridge/geometry/wall_offset.h"
 #include "polygon_coverage_ros_bridge/route/offset_part_joiner.h"
 #include "polygon_coverage_ros_bridge/route/segment_cost.h"
 #include "polygon_coverage_ros_bridge/sweeps/frustum_sensor.h"
@@ -26,6 +27,8 @@ struct PlanningOptions {
   OffsetParts offset_parts = OffsetParts::kAll;
   /// m: the least clearance of a gap that transits pass (the wall distance resolved).
   double gap_clearance = 1.0;
+  /// Wall distances beyond which the wall offset's mitres are squared off.
+  double offset_miter_limit = kDefaultMiterLimit;
   bool coverage_repair = true;
   /// MB a plan may take by its estimate (planMemoryEstimateBytes); 0: half the machine's
   /// physical memory.

@@ -74,6 +74,7 @@ PlanningOptions planningOptionsOf(const PlannerParameters& parameters) {
   options.wall_distance = p.wall_distance;
   options.offset_parts = choiceOf(p.offset_parts, kOffsetParts);
   options.gap_clearance = gapClearance(p);
+  options.offset_miter_limit = p.offset_miter_limit;
   options.coverage_repair = p.coverage_repair;
   options.max_memory_mb = p.max_memory_mb;
   options.gtsp_effort = p.gtsp_effort;

@@ -368,7 +368,9 @@ struct OffsetStage {
 OffsetStage offsetStage(const PlanningRun& run) {
   const Clock::time_point t = Clock::now();
   CoveragePlan& plan = run.plan;
-  plan.offset_parts = computeOffsetFreeArea(run.free_area, run.options.wall_distance).parts;
+  plan.offset_parts = computeOffsetFreeArea(run.free_area, run.options.wall_distance,
+                                            run.options.offset_miter_limit)
+                          .parts;
   const std::size_t part_count = plan.offset_parts.size();
   OffsetStage offset;
   std::vector<std::string> passages;  // one per plan.unreachable_parts

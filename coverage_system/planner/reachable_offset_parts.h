@@ -15,9 +15,11 @@ std::size_t nearestPart(const std::vector<PolygonWithHoles>& parts, const Point2
 
 /// The offset free area's `parts` (several, of a cleaned `free_area`) joined for a robot
 /// starting at `start`: OffsetPartJoiner with the options' wall distance and gap
-/// clearance, anchored at the part nearest the start. The planner and
-/// reachableOffsetParts join alike. Throws SizeLimitError over the joiner's limits, and
-/// InternalError when joining valid parts fails (not the user's error).
+/// clearance, anchored at the part nearest the start; from a start nearer the walls than
+/// the wall distance, the group holding the most area among those whose parts the start
+/// reaches without coming nearer the walls than it starts (a pocket behind a narrow gap may
+/// lie nearest). The planner and reachableOffsetParts join alike. Throws SizeLimitError over the
+/// joiner's limits, and InternalError when joining valid parts fails (not the user's error).
 JoinedOffsetArea joinOffsetParts(const PolygonWithHoles& free_area, const PlanningOptions& options,
                                  const std::vector<PolygonWithHoles>& parts, const Point2& start);
 

@@ -72,11 +72,12 @@ ClipperLib::Paths outlines(const ClipperLib::PolyTree& tree) {
 constexpr double kLastStepSag = 2.25;
 
 /// The offset of one counter-clockwise ring by `delta` integer units, its corners mitred or
-/// round (chords sagging at most `sag` units inside their arcs, vertices on them): a
-/// negative delta shrinks it (the hull), a positive one grows it (a hole).
-ClipperLib::Paths clipperOffset(const ClipperLib::Path& ring, double delta, bool round,
-                                double sag) {
-  ClipperLib::ClipperOffset offset(kMiterLimit, sag / kLastStepSag);
+/// round (chords sagging at most `sag` units inside their arcs, vertices on them; mitres
+/// squared off beyond `miter_limit` times |delta|): a negative delta shrinks it (the hull),
+/// a positive one grows it (a hole).
+ClipperLib::Paths clipperOffset(const ClipperLib::Path& ring, double delta, bool round, double sag,
+                                double miter_limit) {
+  ClipperLib::ClipperOffset offset(miter_limit, sag / kLastStepSag);
   offset.AddPath(ring, round ? ClipperLib::jtRound : ClipperLib::jtMiter,
                  ClipperLib::etClosedPolygon);
   ClipperLib::PolyTree tree;
@@ -91,7 +92,7 @@ constexpr double kTangentCapMargin = 0.05;
 /// of the counter-clockwise `ring` sharper than kTangentStep, the region between its mitre
 /// and the polygon of tangents to the arc of radius |delta| around the corner, kTangentStep
 /// or less apart: every point of it at least |delta| from the corner and its two edges.
-ClipperLib::Paths tangentCaps(const ClipperLib::Path& ring, double delta) {
+ClipperLib::Paths tangentCaps(const ClipperLib::Path& ring, double delta, double miter_limit) {
   const double side = delta < 0.0 ? -1.0 : 1.0;
   const double distance = std::abs(delta);
   const auto at = [&](std::size_t i) {
@@ -126,13 +127,13 @@ ClipperLib::Paths tangentCaps(const ClipperLib::Path& ring, double delta) {
       corners.push_back(vertex + radius * Point2(std::cos(angle), std::sin(angle)));
     }
     // Out to the mitre along lines a margin beyond the edges' offset lines (at most
-    // kMiterLimit distances out): the cap reaches past the mitred offset's edges instead of
+    // `miter_limit` distances out): the cap reaches past the mitred offset's edges instead of
     // sharing them, which Clipper's operations resolve less reliably.
     const double margin = kTangentCapMargin * distance;
     const Point2 second = side * Point2(out.y(), -out.x()).normalized();
     const double mitre_reach =
         std::min((distance + margin) * std::tan(0.5 * turn) - distance * std::tan(half_step),
-                 kMiterLimit * distance);
+                 miter_limit * distance);
     const Point2 first_out = corners.front() + margin * first;
     const Point2 last_out = corners.back() + margin * second;
     ClipperLib::Path cap = {toIntPoint(corners.front()), toIntPoint(first_out),
@@ -160,28 +161,29 @@ ClipperLib::Paths combine(const ClipperLib::Paths& subject, const ClipperLib::Pa
 }
 
 /// The offset of one counter-clockwise ring by `delta` integer units with `corners`
-/// (`unit` integer units to the metre): the region kept (a shrunk hull, delta < 0) or
-/// taken away (a grown hole, delta > 0).
+/// (`unit` integer units to the metre, mitres up to `miter_limit` times |delta|): the
+/// region kept (a shrunk hull, delta < 0) or taken away (a grown hole, delta > 0).
 ClipperLib::Paths offsetRing(const ClipperLib::Path& ring, double delta, OffsetCorners corners,
-                             double unit) {
+                             double unit, double miter_limit) {
   const double tolerance = kClearanceTolerance * unit;
   if (corners == OffsetCorners::kRound) {
-    return clipperOffset(ring, delta, true, kExactOffsetArcTolerance * unit);
+    return clipperOffset(ring, delta, true, kExactOffsetArcTolerance * unit, miter_limit);
   }
   if (corners == OffsetCorners::kRoundClear) {
     // Arcs of the distance plus the sag, so that their chords keep the distance.
     const double sag = kRoundClearArcTolerance * unit;
-    return clipperOffset(ring, delta < 0.0 ? delta - sag : delta + sag, true, sag);
+    return clipperOffset(ring, delta < 0.0 ? delta - sag : delta + sag, true, sag, miter_limit);
   }
-  const ClipperLib::Paths mitred = clipperOffset(ring, delta, false, tolerance);
+  const ClipperLib::Paths mitred = clipperOffset(ring, delta, false, tolerance, miter_limit);
   if (corners == OffsetCorners::kMitred || std::abs(delta) <= tolerance) return mitred;
-  const ClipperLib::Paths caps = tangentCaps(ring, delta);
+  const ClipperLib::Paths caps = tangentCaps(ring, delta, miter_limit);
   if (caps.empty()) return mitred;
   // The caps are clear of their corner and its edges, not always of the ring's other edges:
   // a round offset half a tolerance short of the distance (its chords sagging at most the
   // other half) takes back what the caps would give that lies nearer the ring than that.
   const double short_delta = delta < 0.0 ? delta + 0.5 * tolerance : delta - 0.5 * tolerance;
-  const ClipperLib::Paths round = clipperOffset(ring, short_delta, true, 0.5 * tolerance);
+  const ClipperLib::Paths round =
+      clipperOffset(ring, short_delta, true, 0.5 * tolerance, miter_limit);
   if (delta < 0.0) {
     return combine(mitred, combine(caps, round, ClipperLib::ctIntersection), ClipperLib::ctUnion);
   }
@@ -265,8 +267,12 @@ struct WallOffset::Rings {
   ClipperLib::Paths holes;  ///< each counter-clockwise: offset outward by a positive delta
 };
 
-WallOffset::WallOffset(const PolygonWithHoles& free_area)
-    : rings_(std::make_unique<Rings>(Rings{IntegerFrame(free_area), {}, {}})) {
+WallOffset::WallOffset(const PolygonWithHoles& free_area, double miter_limit)
+    : rings_(std::make_unique<Rings>(Rings{IntegerFrame(free_area), {}, {}})),
+      miter_limit_(miter_limit) {
+  if (!(miter_limit >= kDefaultMiterLimit && miter_limit <= kMaxMiterLimit)) {
+    throw InternalError("offset", "a mitre limit outside [2, 1000] wall distances was asked for");
+  }
   rings_->hull = rings_->frame.toPath(free_area.hull);
   for (const Ring& hole : free_area.holes) rings_->holes.push_back(rings_->frame.toPath(hole));
 }
@@ -286,10 +292,11 @@ OffsetFreeArea WallOffset::at(double distance, OffsetCorners corners) const {
       ClipperLib::Clipper clipper;
       clipper.StrictlySimple(true);
       if (distance > 0.0) {
-        clipper.AddPaths(offsetRing(rings_->hull, -delta, corners, unit), ClipperLib::ptSubject,
-                         true);
+        clipper.AddPaths(offsetRing(rings_->hull, -delta, corners, unit, miter_limit_),
+                         ClipperLib::ptSubject, true);
         for (const ClipperLib::Path& hole : rings_->holes) {
-          clipper.AddPaths(offsetRing(hole, delta, corners, unit), ClipperLib::ptClip, true);
+          clipper.AddPaths(offsetRing(hole, delta, corners, unit, miter_limit_), ClipperLib::ptClip,
+                           true);
         }
       } else {
         clipper.AddPath(rings_->hull, ClipperLib::ptSubject, true);
@@ -341,8 +348,9 @@ std::vector<PolygonWithHoles> clipToBox(const PolygonWithHoles& area, const Poin
   return polygonsOf(tree, frame);
 }
 
-OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance) {
-  return WallOffset(free_area).at(wall_distance);
+OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance,
+                                     double miter_limit) {
+  return WallOffset(free_area, miter_limit).at(wall_distance);
 }
 
 std::vector<PolygonWithHoles> exactOffsetParts(const PolygonWithHoles& free_area,

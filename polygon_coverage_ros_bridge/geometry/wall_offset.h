@@ -15,10 +15,18 @@ struct OffsetFreeArea {
   std::vector<PolygonWithHoles> parts;  ///< CCW hulls, CW holes; largest first
 };
 
-/// A mitre longer than this many wall distances (a corner sharper than 0.11 degrees) is
-/// squared off at that length: still at least the wall distance from the wall, and a
-/// needle cannot throw an offset corner across the map.
-constexpr double kMiterLimit = 1000.0;
+/// The default mitre limit (`offset_miter_limit`, in wall distances), Clipper's least: a
+/// mitre longer than twice the distance (at a wall corner sharper than 60 degrees) is
+/// squared off, its cut tangent to the arc of the distance around the corner. Still at
+/// least the wall distance from the wall, and far closer to the exact offset: a rough
+/// shore's needles throw unlimited mitres across the water, which cut the offset free area
+/// into hundreds of parts that its lanes cannot reach.
+constexpr double kDefaultMiterLimit = 2.0;
+
+/// The largest mitre limit, the thesis preset's (its straight-skeleton offset has none; a
+/// mitre is squared off only at a corner sharper than 0.11 degrees, so that a needle cannot
+/// throw an offset corner across the map).
+constexpr double kMaxMiterLimit = 1000.0;
 
 /// How the offset edges meet around a wall's corner that bulges into the free area.
 enum class OffsetCorners {
@@ -63,21 +71,23 @@ constexpr double kRoundOffsetReach = kClearanceTolerance + kRoundClearArcToleran
 
 /// Computes the points of a cleaned free area at least `wall_distance` from the hull and
 /// from every hole, with mitred offsets (the straight-skeleton offsets of the reference
-/// planner: every offset edge parallel to its wall, corners extended to a point): the hull
+/// planner: every offset edge parallel to its wall, corners extended to a point, up to
+/// `miter_limit` wall distances, in [kDefaultMiterLimit, kMaxMiterLimit]): the hull
 /// shrinks, each hole grows (the pockets its growth encloses filled: out of reach), and the
 /// grown holes are subtracted from the shrunk hull, so that holes growing into each other
 /// or into the hull merge. Offsets and Boolean operations are Clipper's, exact on integer
-/// coordinates that resolve the map to about 1e-11 of its size; a mitre longer than
-/// kMiterLimit wall distances is squared off at that length. Every part of the result is
+/// coordinates that resolve the map to about 1e-11 of its size. Every part of the result is
 /// returned, the largest first, strictly simple (parts that touch at a point are apart).
 /// Throws InvalidInputError when nothing is left.
-OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance);
+OffsetFreeArea computeOffsetFreeArea(const PolygonWithHoles& free_area, double wall_distance,
+                                     double miter_limit = kDefaultMiterLimit);
 
 /// computeOffsetFreeArea of one free area at many distances (OffsetPartJoiner offsets the
 /// same area at a dozen), with the rings converted once.
 class WallOffset {
  public:
-  explicit WallOffset(const PolygonWithHoles& free_area);
+  /// `miter_limit` as computeOffsetFreeArea's, for the kMitred and kTangent corners.
+  explicit WallOffset(const PolygonWithHoles& free_area, double miter_limit = kDefaultMiterLimit);
   ~WallOffset();
   WallOffset(const WallOffset&) = delete;
   WallOffset& operator=(const WallOffset&) = delete;
@@ -89,6 +99,7 @@ class WallOffset {
  private:
   struct Rings;
   std::unique_ptr<Rings> rings_;
+  double miter_limit_;
 };
 
 /// The parts of `area` (hull and holes in either orientation) inside the axis-aligned box

@@ -99,19 +99,58 @@ bool parallelToAWallAt(const PolygonWithHoles& free_area, const Point2& a, const
   return std::any_of(free_area.holes.begin(), free_area.holes.end(), onRing);
 }
 
+/// True when the line through a-b lies at `distance` from a wall vertex where the wall turns
+/// toward the free area's side, on the far side from it: the cut of a squared-off mitre.
+bool tangentToAWallCornerAt(const PolygonWithHoles& free_area, const Point2& a, const Point2& b,
+                            double distance, double tolerance) {
+  const Point2 u = (b - a).normalized();
+  const Point2 normal(-u.y(), u.x());
+  for (const Ring* ring : ringsOf(free_area)) {
+    for (const Point2& corner : *ring) {
+      if (std::abs(std::abs(normal.dot(corner - a)) - distance) <= tolerance) return true;
+    }
+  }
+  return false;
+}
+
 /// On 40 random maps of 100 m with up to 8 holes, at three distances: the offset lies in the
 /// free area at least the wall distance from every wall (no leg enters the wall band), each
-/// of its edges runs parallel to a wall edge at exactly the wall distance (the mitred
-/// offset: nothing of the free area is given up but the mitres' corners), and its area
-/// shrinks as the distance grows.
+/// of its edges runs parallel to a wall edge at exactly the wall distance (with the largest
+/// mitre limit, the straight-skeleton offset: nothing of the free area is given up but the
+/// mitres' corners) or, with the default limit, is a squared-off mitre's cut tangent to the
+/// circle of the distance around a wall corner; its area shrinks as the distance grows, and
+/// the squared-off corners keep more of it than the long mitres, but never more than the
+/// exact (round) offset.
 TEST(WallOffset, OffsetsKeepTheWallDistanceAndRunParallelToTheWalls) {
   std::mt19937 rng(29);
   constexpr double kTolerance = 1e-7;
   std::size_t edges_checked = 0;
+  std::size_t cuts_checked = 0;
   for (int m = 0; m < 40; ++m) {
     SCOPED_TRACE("map " + std::to_string(m));
     const PolygonWithHoles map = testing::randomMap(rng, 100.0, 8, 1.0);
-    const WallOffset offset(map);
+    const WallOffset offset(map, kMaxMiterLimit);
+    const WallOffset squared(map);
+    for (double distance : {0.3, 1.0, 2.5}) {
+      const OffsetFreeArea result = squared.at(distance);
+      EXPECT_GE(area(result.parts), area(offset.at(distance).parts) - 1e-9);
+      EXPECT_LE(area(result.parts), area(squared.at(distance, OffsetCorners::kRound).parts) + 1e-9);
+      for (const PolygonWithHoles& part : result.parts) {
+        for (const Ring* ring : ringsOf(part)) {
+          for (std::size_t i = 0, n = ring->size(); i < n; ++i) {
+            const Point2& a = (*ring)[i];
+            const Point2& b = (*ring)[(i + 1) % n];
+            ASSERT_GE(wallDistance(map, a), distance - kTolerance);
+            ASSERT_GE(wallDistance(map, 0.5 * (a + b)), distance - kTolerance);
+            if ((b - a).norm() > 1e-6 && !parallelToAWallAt(map, a, b, distance, kTolerance)) {
+              ASSERT_TRUE(tangentToAWallCornerAt(map, a, b, distance, 1e-6))
+                  << "edge " << a.transpose() << " - " << b.transpose();
+              ++cuts_checked;
+            }
+          }
+        }
+      }
+    }
     double previous_area = area(map);
     for (double distance : {0.3, 1.0, 2.5}) {
       const OffsetFreeArea result = offset.at(distance);
@@ -138,6 +177,36 @@ TEST(WallOffset, OffsetsKeepTheWallDistanceAndRunParallelToTheWalls) {
     }
   }
   EXPECT_GT(edges_checked, 2500u);
+  EXPECT_GT(cuts_checked, 100u);
+}
+
+/// A needle of a hole 10 degrees sharp, 8 m long, pointing across a 40 m square: unlimited,
+/// its grown outline's mitre reaches 1 / sin(5 degrees) = 11.5 wall distances beyond the
+/// tip, out into the water; squared off, its cut lies one wall distance beyond the tip.
+/// Mitre limits outside [2, 1000] are the caller's error.
+TEST(WallOffset, ANeedlesMitreIsSquaredOffAtTheWallDistance) {
+  const double half = 8.0 * std::tan(5.0 * M_PI / 180.0);
+  const PolygonWithHoles lake = {{{0, 0}, {40, 0}, {40, 40}, {0, 40}},
+                                 {{{8, 20 + half}, {16, 20}, {8, 20 - half}}}};
+  const OffsetFreeArea long_mitre = computeOffsetFreeArea(lake, 1.5, kMaxMiterLimit);
+  const OffsetFreeArea squared = computeOffsetFreeArea(lake, 1.5);
+  ASSERT_EQ(long_mitre.parts.size(), 1u);
+  ASSERT_EQ(squared.parts.size(), 1u);
+  // The long mitre reaches x = 16 + 1.5 / sin(5 degrees) = 33.2; the cut, x = 17.5.
+  double long_reach = 0.0;
+  double squared_reach = 0.0;
+  for (const Ring& hole : long_mitre.parts.front().holes) {
+    for (const Point2& p : hole) long_reach = std::max(long_reach, p.x());
+  }
+  for (const Ring& hole : squared.parts.front().holes) {
+    for (const Point2& p : hole) squared_reach = std::max(squared_reach, p.x());
+  }
+  EXPECT_NEAR(long_reach, 16.0 + 1.5 / std::sin(5.0 * M_PI / 180.0), 1e-6);
+  EXPECT_NEAR(squared_reach, 17.5, 1e-6);
+  EXPECT_GT(area(squared.parts), area(long_mitre.parts));
+  EXPECT_THROW(WallOffset(lake, 1.9), InternalError);
+  EXPECT_THROW(WallOffset(lake, 1001.0), InternalError);
+  EXPECT_THROW(WallOffset(lake, std::nan("")), InternalError);
 }
 
 /// A noisy 6 000-vertex shore with 3 000 reflex vertices (whose straight skeleton would have

@@ -429,13 +429,11 @@ TEST(DefaultYaml, EqualsTheBuiltInDefaults) {
 
 TEST(ThesisYaml, DiffersFromTheDefaultsOnlyWhereTheDefaultsGoBeyondTheThesis) {
   // The README's "Defaults that differ from the thesis" lists these, with the reasons.
-  const std::map<std::string, std::string> thesis_values = {{"cell_joining", "critical_points"},
-                                                            {"smoothing_strategy", "local"},
-                                                            {"coverage_repair", "false"},
-                                                            {"boundary_simplification", "0"},
-                                                            {"smoothing_clearance", "0"},
-                                                            {"controller", "setpoint"},
-                                                            {"braking", "false"}};
+  const std::map<std::string, std::string> thesis_values = {
+      {"cell_joining", "critical_points"}, {"smoothing_strategy", "local"},
+      {"coverage_repair", "false"},        {"boundary_simplification", "0"},
+      {"offset_miter_limit", "1000"},      {"smoothing_clearance", "0"},
+      {"controller", "setpoint"},          {"braking", "false"}};
   const PlannerParameters thesis =
       MissionFileReader().readParameters(std::string(KC_SOURCE_DIR) + "/config/thesis.yaml");
   const PlannerParameters defaults;

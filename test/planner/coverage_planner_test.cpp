@@ -554,7 +554,9 @@ TEST(CoveragePlanner, SimplifiedShorelinesPlanValidlyAndSeeTheReachableArea) {
 /// Shoreline seed 26: the mitred offset closes the neck to a part of 900 m^2 (its mitres
 /// meet where the gap keeps 1.50 m, below the wall distance of 1.52 m), while the points at
 /// least the wall distance from the walls pass it. The gap is found on the exact offset,
-/// and the part is entered and seen.
+/// and the part is entered and seen. With the mitres squared off, a pocket of 0.01 m^2
+/// behind a 1.10 m gap lies nearest the start, 1.02 m from the shore: the start reaches the
+/// main part without coming nearer the shore, and the pocket is the part left out.
 TEST(CoveragePlanner, APartBeyondANeckThatOnlyTheMitredOffsetClosesIsEntered) {
   const testing::HardMap map =
       testing::HardMapGenerator(testing::MapFamily::kShoreline).generate(26);

@@ -39,5 +39,43 @@ TEST(ReachableOffsetParts, ArePartsTheStartsPartReachesThroughGapsKeepingTheGapC
   EXPECT_EQ(reachableOffsetParts(rooms, planningOptionsOf(parameters), {5, 5}).size(), 2u);
 }
 
+/// A 20 m x 10 m room joined by a strait 2 m wide (1 m clearance) to a 4 m x 5 m room.
+/// A start in the strait's mouth, 1 m from its walls, lies nearest the small room's part,
+/// but reaches the large one without coming nearer the walls than it starts: the large
+/// room's group is the start's. A start 1.2 m from the small room's walls, where the strait
+/// is narrower than that, reaches the small room only.
+TEST(ReachableOffsetParts, FromTheWallBandTheStartsGroupIsTheLargestItReachesAtItsClearance) {
+  const PolygonWithHoles rooms = {{{0, 0},
+                                   {20, 0},
+                                   {20, 4},
+                                   {22, 4},
+                                   {22, 2.5},
+                                   {26, 2.5},
+                                   {26, 7.5},
+                                   {22, 7.5},
+                                   {22, 6},
+                                   {20, 6},
+                                   {20, 10},
+                                   {0, 10}},
+                                  {}};
+  PlannerParameters parameters;
+  parameters.wall_distance = 1.1;
+  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(rooms, 1.1).parts;
+  ASSERT_EQ(parts.size(), 2u);
+  const Point2 in_the_mouth(21.8, 5.0);
+  EXPECT_EQ(nearestPart(parts, in_the_mouth), 1u);
+  const std::vector<PolygonWithHoles> reachable =
+      reachableOffsetParts(rooms, planningOptionsOf(parameters), in_the_mouth);
+  ASSERT_EQ(reachable.size(), 1u);
+  EXPECT_NEAR(area(reachable.front()), area(parts[0]), 1e-9);
+
+  parameters.wall_distance = 1.5;
+  const Point2 in_the_small_room(23.2, 6.3);
+  const std::vector<PolygonWithHoles> small =
+      reachableOffsetParts(rooms, planningOptionsOf(parameters), in_the_small_room);
+  ASSERT_EQ(small.size(), 1u);
+  EXPECT_NEAR(area(small.front()), 1.0 * 2.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace kinematic_coverage::core

@@ -21,7 +21,8 @@ PolygonWithHoles roomAroundTriangle() {
   return {{{0, 0}, {40, 0}, {40, 30}, {0, 30}}, {{{17, 13}, {20, 13 + height}, {23, 13}}}};
 }
 
-/// Every excursion from the corners of the offset's rings (insides to their left).
+/// Every excursion from the corners of the offset's rings (insides to their left), the
+/// mitres unlimited (a 120-degree corner's mitre is exactly at the default limit).
 struct Excursion {
   Point2 corner;
   Point2 apex;
@@ -29,7 +30,8 @@ struct Excursion {
 std::vector<Excursion> everyExcursion(const PolygonWithHoles& free_area, double wall_distance,
                                       const ExactOffsetExcursions& excursions) {
   std::vector<Excursion> result;
-  for (const PolygonWithHoles& part : computeOffsetFreeArea(free_area, wall_distance).parts) {
+  for (const PolygonWithHoles& part :
+       computeOffsetFreeArea(free_area, wall_distance, kMaxMiterLimit).parts) {
     std::vector<Ring> rings = {part.hull};
     rings.insert(rings.end(), part.holes.begin(), part.holes.end());
     for (const Ring& ring : rings) {

@@ -188,12 +188,14 @@ TEST(UnseenAreaRepair, OnlyTheCoverageRegionIsPatched) {
   EXPECT_EQ(untouched.unseen_before_m2, 0.0);
 }
 
-/// One lane repaired alone in `room` by the walls' mitred offset (its first part), with a
-/// sensor 1 m wide and 0.5 m long, only the reachable area inside `region` counting.
+/// One lane repaired alone in `room` by the walls' mitred offset (its first part; the
+/// mitres unlimited, as the thesis's), with a sensor 1 m wide and 0.5 m long, only the
+/// reachable area inside `region` counting.
 RepairedPath repairedLane(const PolygonWithHoles& room, double wall_distance,
                           const std::vector<PolygonWithHoles>& region,
                           const std::vector<Point2>& lane) {
-  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(room, wall_distance).parts;
+  const std::vector<PolygonWithHoles> parts =
+      computeOffsetFreeArea(room, wall_distance, kMaxMiterLimit).parts;
   const FrustumSensor sensor{1.0, 0.5, 0.0};
   const SegmentCost cost{segmentCostOf(PlannerParameters{})};
   const VisibilityGraph graph{parts.front(), cost};
@@ -211,7 +213,8 @@ TEST(UnseenAreaRepair, ARoundCornerOfTheExactOffsetIsSeenFromAnExcursion) {
   const PolygonWithHoles room{{{0, 0}, {40, 0}, {40, 30}, {0, 30}},
                               {{{17, 13}, {20, 13 + height}, {23, 13}}}};
   const double wall_distance = 2.0;
-  const std::vector<PolygonWithHoles> parts = computeOffsetFreeArea(room, wall_distance).parts;
+  const std::vector<PolygonWithHoles> parts =
+      computeOffsetFreeArea(room, wall_distance, kMaxMiterLimit).parts;
   // Where the obstacle's lower left corner bulges; a lane below it sees up to y = 11.
   const std::vector<PolygonWithHoles> near_corner{{{{13, 10}, {18, 10}, {18, 14}, {13, 14}}, {}}};
   const RepairedPath repaired =
