@@ -52,10 +52,7 @@ std::vector<std::size_t> partsInReachOfTheStart(const PolygonWithHoles& free_are
                                                 const PlanningOptions& options,
                                                 const std::vector<PolygonWithHoles>& parts,
                                                 const Point2& start) {
-  double clearance = distanceToRing(start, free_area.hull);
-  for (const Ring& hole : free_area.holes) {
-    clearance = std::min(clearance, distanceToRing(start, hole));
-  }
+  const double clearance = distanceToBoundary(start, free_area);
   const double level = std::min(clearance, options.gap_clearance) - kClearanceTolerance;
   if (level <= 0.0 || clearance >= options.wall_distance - kClearanceTolerance) return {};
   for (const PolygonWithHoles& piece :
