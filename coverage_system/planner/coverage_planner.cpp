@@ -645,8 +645,8 @@ TransitionCosts transitionStage(const PlanningRun& run, const SweepStage& sweeps
   // Node 0 (start) is source row 0; node 1 (goal) is target column 0; pattern k is
   // node k + 2, source row k + 1 and target column k + 1.
   auto sourceRow = [](std::size_t node) { return node == 0 ? 0 : node - 1; };
-  for (std::size_t from = 0; from < n; ++from) {
-    if (from == 1) continue;  // nothing leaves the goal
+  parallelFor(n, [&](std::size_t from) {
+    if (from == 1) return;  // nothing leaves the goal
     for (std::size_t to = 1; to < n; ++to) {
       if (from == to) continue;
       const std::size_t column = to == 1 ? 0 : to - 1;
@@ -654,7 +654,7 @@ TransitionCosts transitionStage(const PlanningRun& run, const SweepStage& sweeps
       instance.costs[from * n + to] =
           transition_costs[sourceRow(from) * targets.size() + column] + entering;
     }
-  }
+  });
   summary << sources.size() * targets.size() << " transition costs";
   run.stage("transitions", t, summary.str());
   return transitions;
@@ -820,15 +820,23 @@ WaypointRoute pathStage(const PlanningRun& run, const OffsetStage& offset, const
     }
   };
   append({offset.start_inside}, true);
-  Point2 position = offset.start_inside;
+  // The routes between the patterns (legs[k] leads into the k-th pattern; the last one to
+  // the goal), found on every hardware thread.
+  std::vector<const SweepPattern*> visited;
   for (int node : solution.nodes) {
-    if (node < 2) continue;
-    const SweepPattern& pattern = sweeps.patterns[static_cast<std::size_t>(node - 2)];
-    append(graph.shortestPath(position, pattern.start()), false);
-    append(pattern.path, false);
-    position = pattern.end();
+    if (node >= 2) visited.push_back(&sweeps.patterns[static_cast<std::size_t>(node - 2)]);
   }
-  append(graph.shortestPath(position, offset.goal_inside), false);
+  std::vector<std::vector<Point2>> legs(visited.size() + 1);
+  parallelForInOrder(legs.size(), [&](std::size_t k) {
+    const Point2& from = k == 0 ? offset.start_inside : visited[k - 1]->end();
+    const Point2& to = k < visited.size() ? visited[k]->start() : offset.goal_inside;
+    legs[k] = graph.shortestPath(from, to);
+  });
+  for (std::size_t k = 0; k < visited.size(); ++k) {
+    append(legs[k], false);
+    append(visited[k]->path, false);
+  }
+  append(legs.back(), false);
   route.keep.back() = true;
   append({run.goal}, true);
   std::vector<bool> kept;

@@ -304,6 +304,8 @@ double GtspLocalSearch::improve(std::vector<int>& sequence, Clock::time_point de
     bool improved = reinsertPass(sequence);
     improved = orOptPass(sequence) || improved;
     improved = twoOptPass(sequence) || improved;
+    // No move: the sequence is the last cluster optimization's, which would return it again.
+    if (!improved) break;
     previous_ = sequence;
     const double optimized = optimizeClusters(sequence);
     touchChanged(sequence);

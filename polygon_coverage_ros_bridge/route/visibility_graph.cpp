@@ -656,22 +656,27 @@ std::vector<double> VisibilityGraph::costMatrix(const std::vector<Point2>& sourc
       }
     }
   });
-  for (std::size_t row = 0; row < distinct_sources.size() && !on_demand_; ++row) {
-    const std::size_t s = distinct_sources[row];
-    for (std::size_t column = 0; column < columns; ++column) {
-      const std::size_t t = distinct_targets[column];
-      if (reversedKnown(row, s, t)) {
-        distinct_costs[row * columns + column] =
-            distinct_costs[source_slot[t] * columns + target_slot[s]];
+  if (!on_demand_) {
+    parallelFor(distinct_sources.size(), [&](std::size_t row) {
+      const std::size_t s = distinct_sources[row];
+      for (std::size_t column = 0; column < columns; ++column) {
+        const std::size_t t = distinct_targets[column];
+        if (reversedKnown(row, s, t)) {
+          distinct_costs[row * columns + column] =
+              distinct_costs[source_slot[t] * columns + target_slot[s]];
+        }
       }
-    }
+    });
   }
-  std::vector<double> result;
-  result.reserve(sources.size() * targets.size());
-  for (std::size_t s : source_points) {
-    const double* row = &distinct_costs[source_slot[s] * distinct_targets.size()];
-    for (std::size_t t : target_points) result.push_back(row[target_slot[t]]);
-  }
+  // Spread over the requested rows on every thread too: with thousands of points, these
+  // copies take about as long as the routes.
+  std::vector<double> result(sources.size() * targets.size());
+  parallelFor(source_points.size(), [&](std::size_t i) {
+    const double* row = &distinct_costs[source_slot[source_points[i]] * columns];
+    double* out = &result[i * targets.size()];
+    for (std::size_t j = 0; j < target_points.size(); ++j)
+      out[j] = row[target_slot[target_points[j]]];
+  });
   return result;
 }
 

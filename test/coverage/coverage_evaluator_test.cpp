@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <thread>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/geometry/planar_geometry.h"
@@ -220,6 +221,31 @@ TEST(CoverageEvaluator, SquareWithHoleCountsOnlyTheFreeArea) {
   const CoverageReport strip =
       evaluator.report(evaluator.seeTrajectory({{0.5, 1.0, 0.0}, {19.5, 1.0, 0.0}}));
   EXPECT_NEAR(strip.coverage_percent, 100.0 * 40.0 / 384.0, 0.1);
+}
+
+// The free area's cell shares are computed at the first report: a copy made before it, and
+// reports asked for on two threads at once, give what a fresh evaluator gives.
+TEST(CoverageEvaluator, CopiesAndConcurrentReportsShareTheFreeShares) {
+  const PolygonWithHoles free_area{rectangle(0, 0, 20, 20), {rectangle(8, 8, 12, 12, true)}};
+  const PolygonWithHoles offset_area{rectangle(1, 1, 19, 19), {rectangle(7, 7, 13, 13, true)}};
+  const FrustumSensor sensor(2.0, 1.0, 0.0);
+  const std::vector<Pose2> strip = {{0.5, 1.0, 0.0}, {19.5, 1.0, 0.0}};
+  const CoverageEvaluator fresh(free_area, {offset_area}, sensor, {}, 0.3);
+  const CoverageReport expected = fresh.report(fresh.seeTrajectory(strip));
+  const CoverageEvaluator original(free_area, {offset_area}, sensor, {}, 0.3);
+  const CoverageEvaluator copy = original;
+  const SeenArea seen = original.seeTrajectory(strip);
+  CoverageReport first;
+  CoverageReport second;
+  std::thread other([&] { first = original.report(seen); });
+  second = copy.report(seen);
+  other.join();
+  for (const CoverageReport& report : {first, second}) {
+    EXPECT_EQ(report.coverage_percent, expected.coverage_percent);
+    EXPECT_EQ(report.unreachable_area_m2, expected.unreachable_area_m2);
+  }
+  EXPECT_EQ(copy.lostArea(seen, copy.seeTrajectory({})).area_m2,
+            fresh.lostArea(fresh.seeTrajectory(strip), fresh.seeTrajectory({})).area_m2);
 }
 
 TEST(CoverageEvaluator, DuplicateWaypointsAndZeroLengthLegsChangeNothing) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <vector>
 
@@ -45,6 +46,12 @@ std::vector<PolygonWithHoles> turned(const std::vector<PolygonWithHoles>& parts,
 
 }  // namespace
 
+struct CoverageEvaluator::FreeFractions {
+  std::once_flag computed;
+  PolygonWithHoles turned_free_area;
+  CellFractions fractions;
+};
+
 RasterResolution reportingResolution() {
   RasterResolution resolution;
   resolution.cell_size = 0.0;
@@ -64,7 +71,8 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
       from_raster_(Eigen::Rotation2Dd(grid_angle).toRotationMatrix()),
       raster_(CoverageRaster::covering(turned(free_area, -grid_angle), resolution)),
       free_area_(raster_.rasterize(turned(free_area, -grid_angle))),
-      free_fractions_(raster_.areaFractions(turned(free_area, -grid_angle))) {
+      free_fractions_(std::make_shared<FreeFractions>()) {
+  free_fractions_->turned_free_area = turned(free_area, -grid_angle);
   const std::vector<PolygonWithHoles> raster_parts = turned(offset_parts, -grid_angle);
   offset_free_area_ = raster_.rasterize(raster_parts);
   if (CoverageRaster::countCells(offset_free_area_) == 0) {
@@ -75,6 +83,13 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
   }
   reachable_area_ = kinematic_coverage::core::reachableArea(raster_, free_area_, offset_free_area_,
                                                             raster_parts, sensor_.length());
+}
+
+const CellFractions& CoverageEvaluator::freeFractions() const {
+  FreeFractions& lazy = *free_fractions_;
+  std::call_once(lazy.computed,
+                 [&] { lazy.fractions = raster_.areaFractions(lazy.turned_free_area); });
+  return lazy.fractions;
 }
 
 Point2 CoverageEvaluator::toRaster(const Point2& p) const {
@@ -240,8 +255,9 @@ CoverageReport CoverageEvaluator::report(const SeenArea& seen) const {
   double seen_free_cells = 0.0;
   double unreachable_cells = 0.0;
   std::size_t unseen_reachable = 0;
-  for (std::size_t i = 0; i < free_fractions_.size(); ++i) {
-    const double inside = free_fractions_[i];
+  const CellFractions& free_fractions = freeFractions();
+  for (std::size_t i = 0; i < free_fractions.size(); ++i) {
+    const double inside = free_fractions[i];
     free_cells += inside;
     if (seen.seen(i)) seen_free_cells += inside;
     if (reachable_area_[i] == 0) unreachable_cells += inside;
@@ -264,10 +280,11 @@ LostArea CoverageEvaluator::lostArea(const SeenArea& reference, const SeenArea& 
   double free_cells = 0.0;
   double lost_cells = 0.0;
   std::size_t lost_reachable = 0;
-  for (std::size_t i = 0; i < free_fractions_.size(); ++i) {
-    free_cells += free_fractions_[i];
+  const CellFractions& free_fractions = freeFractions();
+  for (std::size_t i = 0; i < free_fractions.size(); ++i) {
+    free_cells += free_fractions[i];
     if (!reference.seen(i) || seen.seen(i)) continue;
-    lost_cells += free_fractions_[i];
+    lost_cells += free_fractions[i];
     if (reachable_area_[i] != 0) ++lost_reachable;
   }
   if (!(free_cells > 0.0)) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -161,8 +162,11 @@ class CoverageEvaluator {
   Eigen::Matrix2d from_raster_;  ///< and back
   CoverageRaster raster_;
   CellMask free_area_;
-  /// Each cell's share inside the free area: the weight of coverage_percent.
-  CellFractions free_fractions_;
+  /// Each cell's share inside the free area, the weight of coverage_percent: computed when
+  /// first needed (a planner's measuring raster never reports) and shared by copies.
+  struct FreeFractions;
+  std::shared_ptr<FreeFractions> free_fractions_;
+  const CellFractions& freeFractions() const;
   CellMask offset_free_area_;
   CellMask reachable_area_;
 };
