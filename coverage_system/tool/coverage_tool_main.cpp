@@ -14,6 +14,7 @@
 #include "coverage_system/tool/plan_command.h"
 #include "coverage_system/tool/replan_command.h"
 #include "coverage_system/tool/simulate_command.h"
+#include "polygon_coverage_ros_bridge/base/huge_page_heap.h"
 #include "polygon_coverage_ros_bridge/geometry/internal_error.h"
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
 #include "polygon_coverage_ros_bridge/gtsp/gtsp_command.h"
@@ -100,6 +101,7 @@ int runCommand(const std::vector<std::string>& args) {
 
 int main(int argc, char** argv) {
   using namespace kinematic_coverage::core;
+  restartWithHugePageHeap(argv);
   try {
     return runCommand(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const InvalidInputError& error) {

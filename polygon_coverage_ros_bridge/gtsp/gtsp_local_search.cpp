@@ -39,6 +39,7 @@ GtspLocalSearch::GtspLocalSearch(const GtspInstance& instance, int anchor_cluste
       entry = std::min(entry, d);
     }
   }
+  cluster_distance_ = std::make_shared<const std::vector<double>>(std::move(distance));
   neighbours_.resize(m);
   std::vector<int> order;
   for (int c = 0; c < m; ++c) {
@@ -47,8 +48,8 @@ GtspLocalSearch::GtspLocalSearch(const GtspInstance& instance, int anchor_cluste
     order.erase(order.begin() + c);
     const std::size_t keep = std::min<std::size_t>(order.size(), neighbour_count);
     std::partial_sort(order.begin(), order.begin() + keep, order.end(), [&](int a, int b) {
-      const double da = distance[static_cast<std::size_t>(c) * m + a];
-      const double db = distance[static_cast<std::size_t>(c) * m + b];
+      const double da = (*cluster_distance_)[static_cast<std::size_t>(c) * m + a];
+      const double db = (*cluster_distance_)[static_cast<std::size_t>(c) * m + b];
       return da < db || (da == db && a < b);
     });
     neighbours_[c].assign(order.begin(), order.begin() + keep);
@@ -84,10 +85,12 @@ void GtspLocalSearch::index(const std::vector<int>& sequence) {
   for (std::size_t i = 0; i < length; ++i)
     position_[cluster_of_[sequence[i]]] = static_cast<int>(i);
   if (cycle_) position_[anchor_cluster_] = 0;
+  edge_cost_.resize(length);
   forward_prefix_.assign(length, 0.0);
   backward_prefix_.assign(length, 0.0);
   for (std::size_t i = 0; i + 1 < length; ++i) {
-    forward_prefix_[i + 1] = forward_prefix_[i] + cost(sequence[i], sequence[i + 1]);
+    edge_cost_[i] = cost(sequence[i], sequence[i + 1]);
+    forward_prefix_[i + 1] = forward_prefix_[i] + edge_cost_[i];
     backward_prefix_[i + 1] =
         backward_prefix_[i] + cost(reverse(sequence[i + 1]), reverse(sequence[i]));
   }
@@ -114,6 +117,7 @@ void GtspLocalSearch::forEachPosition(int c, std::size_t length, Visit visit) co
 bool GtspLocalSearch::reinsertPass(std::vector<int>& sequence) {
   bool improved = false;
   const std::size_t length = sequence.size();
+  const std::size_t clusters = instance_.clusters.size();
   edge_stamp_.resize(length, 0);
   for (std::size_t i = 1; i + 1 < length; ++i) {
     const int v = sequence[i];
@@ -127,10 +131,13 @@ bool GtspLocalSearch::reinsertPass(std::vector<int>& sequence) {
     std::size_t best_edge = length;  // edge (p, p+1) of the current sequence; i-1 = (a, b)
     int best_node = -1;
     ++stamp_;
-    auto tryEdge = [&](std::size_t p, int x, int y) {
+    const double* to_cluster = &(*cluster_distance_)[static_cast<std::size_t>(c) * clusters];
+    auto tryEdge = [&](std::size_t p, int x, int y, double base) {
       if (edge_stamp_[p] == stamp_) return;  // already tried from another neighbour
       edge_stamp_[p] = stamp_;
-      const double base = cost(x, y);
+      // No member can do better than the cluster distances allow (each sum and difference
+      // of them rounds to at most the members' own, so nothing that could win is skipped).
+      if (to_cluster[cluster_of_[x]] + to_cluster[cluster_of_[y]] - base >= best) return;
       for (int u : members) {
         const double added = cost(x, u) + cost(u, y) - base;
         if (added < best) {
@@ -140,11 +147,15 @@ bool GtspLocalSearch::reinsertPass(std::vector<int>& sequence) {
         }
       }
     };
-    tryEdge(i - 1, a, b);
+    tryEdge(i - 1, a, b, cost(a, b));
     for (int near : neighbours_[c]) {
       forEachPosition(near, length, [&](std::size_t q) {
-        if (q >= 1 && q - 1 != i - 1 && q - 1 != i) tryEdge(q - 1, sequence[q - 1], sequence[q]);
-        if (q + 1 < length && q != i - 1 && q != i) tryEdge(q, sequence[q], sequence[q + 1]);
+        if (q >= 1 && q - 1 != i - 1 && q - 1 != i) {
+          tryEdge(q - 1, sequence[q - 1], sequence[q], edge_cost_[q - 1]);
+        }
+        if (q + 1 < length && q != i - 1 && q != i) {
+          tryEdge(q, sequence[q], sequence[q + 1], edge_cost_[q]);
+        }
       });
     }
     if (best_node < 0) {
@@ -186,7 +197,7 @@ bool GtspLocalSearch::orOptPass(std::vector<int>& sequence) {
         if (p + 1 >= length || (p + 1 >= i && p <= j)) return;
         const int x = sequence[p];
         const int y = sequence[p + 1];
-        const double base = cost(x, y);
+        const double base = edge_cost_[p];
         const double forward = cost(x, first) + cost(last, y) - base;
         const double backward = cost(x, reverse(last)) + cost(reverse(first), y) - base + reversal;
         if (forward < best) {
@@ -242,9 +253,8 @@ bool GtspLocalSearch::twoOptPass(std::vector<int>& sequence) {
   auto tryMove = [&](std::size_t a, std::size_t b) {
     if (b < a + 2 || b + 2 > length) return false;
     const double delta = cost(sequence[a], reverse(sequence[b])) +
-                         cost(reverse(sequence[a + 1]), sequence[b + 1]) -
-                         cost(sequence[a], sequence[a + 1]) - cost(sequence[b], sequence[b + 1]) +
-                         (backward_prefix_[b] - backward_prefix_[a + 1]) -
+                         cost(reverse(sequence[a + 1]), sequence[b + 1]) - edge_cost_[a] -
+                         edge_cost_[b] + (backward_prefix_[b] - backward_prefix_[a + 1]) -
                          (forward_prefix_[b] - forward_prefix_[a + 1]);
     if (delta >= -epsilon_) return false;
     std::reverse(sequence.begin() + static_cast<std::ptrdiff_t>(a + 1),

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <chrono>
+#include <memory>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/gtsp/cluster_optimizer.h"
@@ -70,8 +71,12 @@ class GtspLocalSearch {
   double epsilon_ = 0.0;
   std::vector<int> cluster_of_;
   const std::vector<int>& reverse_nodes_;
+  /// Cluster distance, row-major: the cheapest edge in either direction between two clusters'
+  /// nodes; a lower bound of every edge between them (shared by copies).
+  std::shared_ptr<const std::vector<double>> cluster_distance_;
   std::vector<std::vector<int>> neighbours_;
   std::vector<int> position_;
+  std::vector<double> edge_cost_;  ///< the cost of the edge from each position to the next
   std::vector<double> forward_prefix_;
   std::vector<double> backward_prefix_;  ///< the same stretch run backwards (reverse nodes)
   std::vector<int> clusters_buffer_;
