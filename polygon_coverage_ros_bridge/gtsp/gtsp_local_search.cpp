@@ -39,7 +39,6 @@ GtspLocalSearch::GtspLocalSearch(const GtspInstance& instance, int anchor_cluste
       entry = std::min(entry, d);
     }
   }
-  cluster_distance_ = std::make_shared<const std::vector<double>>(std::move(distance));
   neighbours_.resize(m);
   std::vector<int> order;
   for (int c = 0; c < m; ++c) {
@@ -48,12 +47,13 @@ GtspLocalSearch::GtspLocalSearch(const GtspInstance& instance, int anchor_cluste
     order.erase(order.begin() + c);
     const std::size_t keep = std::min<std::size_t>(order.size(), neighbour_count);
     std::partial_sort(order.begin(), order.begin() + keep, order.end(), [&](int a, int b) {
-      const double da = (*cluster_distance_)[static_cast<std::size_t>(c) * m + a];
-      const double db = (*cluster_distance_)[static_cast<std::size_t>(c) * m + b];
+      const double da = distance[static_cast<std::size_t>(c) * m + a];
+      const double db = distance[static_cast<std::size_t>(c) * m + b];
       return da < db || (da == db && a < b);
     });
     neighbours_[c].assign(order.begin(), order.begin() + keep);
   }
+  cluster_distance_ = std::make_shared<const std::vector<double>>(std::move(distance));
   position_.assign(m, -1);
 }
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <mutex>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "polygon_coverage_ros_bridge/geometry/invalid_input_error.h"
@@ -47,6 +48,7 @@ std::vector<PolygonWithHoles> turned(const std::vector<PolygonWithHoles>& parts,
 }  // namespace
 
 struct CoverageEvaluator::FreeFractions {
+  explicit FreeFractions(PolygonWithHoles area) : turned_free_area(std::move(area)) {}
   std::once_flag computed;
   PolygonWithHoles turned_free_area;
   CellFractions fractions;
@@ -69,10 +71,9 @@ CoverageEvaluator::CoverageEvaluator(const PolygonWithHoles& free_area,
       grid_angle_(grid_angle),
       to_raster_(Eigen::Rotation2Dd(-grid_angle).toRotationMatrix()),
       from_raster_(Eigen::Rotation2Dd(grid_angle).toRotationMatrix()),
-      raster_(CoverageRaster::covering(turned(free_area, -grid_angle), resolution)),
-      free_area_(raster_.rasterize(turned(free_area, -grid_angle))),
-      free_fractions_(std::make_shared<FreeFractions>()) {
-  free_fractions_->turned_free_area = turned(free_area, -grid_angle);
+      free_fractions_(std::make_shared<FreeFractions>(turned(free_area, -grid_angle))),
+      raster_(CoverageRaster::covering(free_fractions_->turned_free_area, resolution)),
+      free_area_(raster_.rasterize(free_fractions_->turned_free_area)) {
   const std::vector<PolygonWithHoles> raster_parts = turned(offset_parts, -grid_angle);
   offset_free_area_ = raster_.rasterize(raster_parts);
   if (CoverageRaster::countCells(offset_free_area_) == 0) {

@@ -155,18 +155,20 @@ class CoverageEvaluator {
   /// Throws InvalidInputError unless `seen` was made on this evaluator's raster.
   void requireOwnRaster(const SeenArea& seen) const;
   std::vector<Pose2> toRaster(const std::vector<Pose2>& poses) const;
+  /// The free-area shares, computed at the first call.
+  const CellFractions& freeFractions() const;
 
   FrustumSensor sensor_;
   double grid_angle_;
   Eigen::Matrix2d to_raster_;    ///< turns the map frame by -grid_angle_
   Eigen::Matrix2d from_raster_;  ///< and back
-  CoverageRaster raster_;
-  CellMask free_area_;
-  /// Each cell's share inside the free area, the weight of coverage_percent: computed when
-  /// first needed (a planner's measuring raster never reports) and shared by copies.
+  /// The free area in the raster's frame, and each cell's share inside it (the weight of
+  /// coverage_percent): computed when first needed (a planner's measuring raster never
+  /// reports) and shared by copies.
   struct FreeFractions;
   std::shared_ptr<FreeFractions> free_fractions_;
-  const CellFractions& freeFractions() const;
+  CoverageRaster raster_;
+  CellMask free_area_;
   CellMask offset_free_area_;
   CellMask reachable_area_;
 };
