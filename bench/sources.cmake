@@ -25,10 +25,10 @@ kc_add_benchmark_smoke(planner_peer_benchmark --runs 1)
 kc_add_benchmark_smoke(scaling_benchmark --sizes 500:10 --plot ${CMAKE_BINARY_DIR}/scaling.png)
 kc_add_benchmark_smoke(lake_survey_benchmark --areas 20)
 # The time cost of the first shorelines, the lakes, the shipped missions and the peer's
-# polygons against the values recorded when the wall offset's mitres came to be squared off
+# polygons against the values recorded when coverage came to be measured on the exact offset
 # (at most 1.005 times each).
 add_test(NAME planner_reference_check COMMAND ${PROJECT_NAME}_planner_reference --runs 1 --shorelines 3
-  --compare ${PROJECT_SOURCE_DIR}/bench/data/planner_reference_squared_mitres.csv)
+  --compare ${PROJECT_SOURCE_DIR}/bench/data/planner_reference_exact_offset.csv)
 set_tests_properties(planner_reference_check PROPERTIES TIMEOUT 600)
 kc_add_benchmark_smoke(large_hull_benchmark 300)
 kc_add_benchmark_smoke(memory_bound_benchmark --holes 3 --vertices 200)

@@ -138,10 +138,11 @@ std::vector<ParameterDeclaration> planningDeclarations() {
                 "narrower gaps is not entered (named in a warning, counted as unreachable). "
                 "Every narrower transit allowed is warned of."),
       number("offset_miter_limit", &P::offset_miter_limit, "", kDefaultMiterLimit,
-             interval(kDefaultMiterLimit, false, kMaxMiterLimit, false), S::kWallOffset,
+             interval(kMinMiterLimit, false, kMaxMiterLimit, false), S::kWallOffset,
              "Wall distances by which a corner of the offset free area may reach beyond "
              "the wall's corner before it is squared off (cut at the wall distance from "
-             "it): at 2, every corner sharper than 60 degrees; 1000, nearly the thesis's "
+             "it): at 6 (the default), every corner sharper than 19 degrees; at 2, sharper "
+             "than 60 degrees; 1000, nearly the thesis's "
              "straight-skeleton offset, whose mitres at a rough shore's needles reach "
              "across the water and cut the area into parts its lanes do not reach."),
       number("boundary_simplification", &P::boundary_simplification, "", 0.1,

@@ -270,7 +270,7 @@ struct WallOffset::Rings {
 WallOffset::WallOffset(const PolygonWithHoles& free_area, double miter_limit)
     : rings_(std::make_unique<Rings>(Rings{IntegerFrame(free_area), {}, {}})),
       miter_limit_(miter_limit) {
-  if (!(miter_limit >= kDefaultMiterLimit && miter_limit <= kMaxMiterLimit)) {
+  if (!(miter_limit >= kMinMiterLimit && miter_limit <= kMaxMiterLimit)) {
     throw InternalError("offset", "a mitre limit outside [2, 1000] wall distances was asked for");
   }
   rings_->hull = rings_->frame.toPath(free_area.hull);

@@ -117,7 +117,7 @@ bool tangentToAWallCornerAt(const PolygonWithHoles& free_area, const Point2& a, 
 /// free area at least the wall distance from every wall (no leg enters the wall band), each
 /// of its edges runs parallel to a wall edge at exactly the wall distance (with the largest
 /// mitre limit, the straight-skeleton offset: nothing of the free area is given up but the
-/// mitres' corners) or, with the default limit, is a squared-off mitre's cut tangent to the
+/// mitres' corners) or, with the least limit, is a squared-off mitre's cut tangent to the
 /// circle of the distance around a wall corner; its area shrinks as the distance grows, and
 /// the squared-off corners keep more of it than the long mitres, but never more than the
 /// exact (round) offset.
@@ -130,7 +130,7 @@ TEST(WallOffset, OffsetsKeepTheWallDistanceAndRunParallelToTheWalls) {
     SCOPED_TRACE("map " + std::to_string(m));
     const PolygonWithHoles map = testing::randomMap(rng, 100.0, 8, 1.0);
     const WallOffset offset(map, kMaxMiterLimit);
-    const WallOffset squared(map);
+    const WallOffset squared(map, kMinMiterLimit);
     for (double distance : {0.3, 1.0, 2.5}) {
       const OffsetFreeArea result = squared.at(distance);
       EXPECT_GE(area(result.parts), area(offset.at(distance).parts) - 1e-9);
